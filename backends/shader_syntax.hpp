@@ -1,0 +1,56 @@
+// What a target language looks like: type names, literals, splats, sampling calls and
+// the fixed frame of each stage. Backends know syntax, not materials or weather.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compiler/material_interface.hpp"
+#include "compiler/pbr_output.hpp"
+#include "nodes/op_definition.hpp"
+
+namespace wg {
+
+enum class ShaderLanguage : std::uint8_t { Glsl, Hlsl };
+std::string_view languageName(ShaderLanguage language);  // "glsl" / "hlsl"
+
+// A colour the fragment stage can show instead of the lit result (frame_debugView).
+struct DebugView {
+  std::uint32_t id;
+  std::string_view name;
+  std::string expression;  // vec3, in the target language
+};
+
+// Everything a stage needs besides its language-specific frame.
+struct StageSource {
+  ShaderStage stage = ShaderStage::Fragment;
+  const MaterialInterface* interface = nullptr;
+  std::string banner;  // first comment line: generator and content hash
+  std::vector<const ShaderLibrary*> libraries;  // dependency order
+  std::string body;  // node statements, indented
+  std::array<std::string, kPbrFieldCount> results;  // expression per PBR field for this stage
+  bool alphaTested = false;
+  float alphaCutoff = 0.5f;
+  std::vector<DebugView> debugViews;
+};
+
+class ShaderSyntax {
+ public:
+  virtual ~ShaderSyntax() = default;
+  virtual ShaderLanguage language() const = 0;
+  virtual std::string_view typeName(ValueType type) const = 0;
+  virtual std::string splat(ValueType to, std::string_view scalar) const = 0;
+  virtual std::string_view sampleFunction(ShaderStage stage) const = 0;
+  virtual std::string_view lodArgument(ShaderStage stage) const = 0;
+  virtual std::string assemble(const StageSource& source) const = 0;
+
+  std::string constant(const Value& value) const;
+  // A parameter's value from its block member (bools are stored as uint).
+  std::string parameterRead(const BlockMember& member, ValueType type) const;
+};
+
+const ShaderSyntax& glslSyntax();
+const ShaderSyntax& hlslSyntax();
+const ShaderSyntax& syntaxFor(ShaderLanguage language);
+
+}  // namespace wg

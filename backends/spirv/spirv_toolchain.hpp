@@ -1,0 +1,42 @@
+// The one place glslang, SPIRV-Tools and SPIRV-Cross are used: compile GLSL or HLSL to
+// SPIR-V in-process, validate for Vulkan 1.1, optimise, disassemble and reflect.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "backends/shader_syntax.hpp"
+
+namespace wg {
+
+using SpirvWords = std::vector<std::uint32_t>;
+
+struct SpirvCompileResult {
+  bool ok = false;
+  SpirvWords words;
+  std::string log;  // glslang's messages when !ok
+};
+
+// Thread-safe: glslang's process state is initialised once, on first use.
+SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage language, ShaderStage stage);
+// Empty when the module is valid in the Vulkan 1.1 environment.
+std::string validateSpirv(const SpirvWords& words);
+// spirv-opt's performance recipe; returns the input unchanged if optimisation fails.
+SpirvWords optimizeSpirv(const SpirvWords& words);
+std::string disassembleSpirv(const SpirvWords& words);
+
+struct ReflectedMember {
+  std::string name;
+  std::uint32_t offset;
+};
+struct ReflectedBlock {
+  std::uint32_t set, binding;
+  std::vector<ReflectedMember> members;
+};
+// Uniform blocks of a module as SPIRV-Cross sees them.
+std::vector<ReflectedBlock> reflectUniformBlocks(const SpirvWords& words);
+// Instruction count (words are grouped into instructions), for cost reports.
+std::size_t countInstructions(const SpirvWords& words);
+
+}  // namespace wg

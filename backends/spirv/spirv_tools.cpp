@@ -1,0 +1,52 @@
+// Validation, optimisation and disassembly with SPIRV-Tools (Vulkan 1.1 environment).
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+
+#include "backends/spirv/spirv_toolchain.hpp"
+
+namespace wg {
+
+namespace {
+constexpr spv_target_env kTargetEnvironment = SPV_ENV_VULKAN_1_1;
+}
+
+std::string validateSpirv(const SpirvWords& words) {
+  spvtools::SpirvTools tools(kTargetEnvironment);
+  std::string messages;
+  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& position, const char* message) {
+    messages += "word " + std::to_string(position.index) + ": " + message + "\n";
+  });
+  if (tools.Validate(words)) return "";
+  return messages.empty() ? "invalid module" : messages;
+}
+
+SpirvWords optimizeSpirv(const SpirvWords& words) {
+  spvtools::Optimizer optimizer(kTargetEnvironment);
+  optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+  optimizer.RegisterPerformancePasses();
+  SpirvWords out;
+  if (!optimizer.Run(words.data(), words.size(), &out)) return words;
+  return out;
+}
+
+std::string disassembleSpirv(const SpirvWords& words) {
+  spvtools::SpirvTools tools(kTargetEnvironment);
+  std::string text;
+  tools.Disassemble(words, &text,
+                    SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES | SPV_BINARY_TO_TEXT_OPTION_INDENT);
+  return text;
+}
+
+std::size_t countInstructions(const SpirvWords& words) {
+  constexpr std::size_t kHeaderWords = 5;
+  std::size_t count = 0;
+  for (std::size_t i = kHeaderWords; i < words.size();) {
+    std::uint32_t wordCount = words[i] >> 16;  // high half of each instruction's first word
+    if (wordCount == 0) break;
+    i += wordCount;
+    ++count;
+  }
+  return count;
+}
+
+}  // namespace wg

@@ -1,0 +1,11 @@
+// CLI subcommands. Each returns the process exit code.
+#pragma once
+
+namespace wg {
+
+enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitInternal = 3 };
+
+int runCompileCommand(int argc, char** argv);
+int runListCommand(int argc, char** argv);
+
+}  // namespace wg

@@ -1,0 +1,218 @@
+// weathergen compile: graphs -> GLSL, HLSL, SPIR-V (+ .spvasm) and reflection JSON.
+// Every graph is compiled before anything is written; on any error nothing is written.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli/atomic_file.hpp"
+#include "cli/command_line.hpp"
+#include "cli/commands.hpp"
+#include "compiler/literal.hpp"
+#include "compiler/material_compiler.hpp"
+
+namespace wg {
+
+namespace {
+
+constexpr const char* kCompileUsage = R"(Usage: weathergen compile GRAPH... -o DIR [options]
+
+Writes, for each material NAME:
+  NAME.vert.glsl NAME.frag.glsl NAME.vert.hlsl NAME.frag.hlsl      (--target glsl, hlsl)
+  NAME.{glsl,hlsl}.{vert,frag}.spv and .spvasm                     (--target spirv)
+  NAME.reflect.json                                                (always)
+
+Options:
+  -o DIR, --output DIR       output directory (created if missing)
+  --target LIST              comma-separated glsl, hlsl, spirv, or all (default: all)
+  -O                         optimise SPIR-V with spirv-opt's performance passes
+  -O0                        no SPIR-V optimisation (default)
+  --diagnostics text|json    diagnostic format on stderr (default: text)
+  -q, --quiet                print nothing but diagnostics
+  -h, --help                 this help
+
+Outputs are written atomically and only when every graph compiles.
+)";
+
+struct Targets {
+  bool glsl = false, hlsl = false, spirv = false;
+};
+
+bool parseTargets(const std::string& list, Targets& t, std::string& error) {
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    std::size_t comma = list.find(',', start);
+    std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (item == "glsl") t.glsl = true;
+    else if (item == "hlsl") t.hlsl = true;
+    else if (item == "spirv") t.spirv = true;
+    else if (item == "all") t.glsl = t.hlsl = t.spirv = true;
+    else {
+      error = "unknown target '" + quoteUserText(item) + "' (use glsl, hlsl, spirv or all)";
+      return false;
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return true;
+}
+
+struct Options {
+  std::vector<std::string> graphs;
+  std::string outputDir;
+  Targets targets;
+  bool optimize = false;
+  bool json = false;
+  bool quiet = false;
+};
+
+void printDiagnostics(const std::vector<Diagnostic>& list, bool json) {
+  if (json) {
+    std::fputs(formatDiagnosticsJson(list).c_str(), stderr);
+    return;
+  }
+  for (const auto& d : list) std::fputs(formatDiagnosticText(d).c_str(), stderr);
+}
+
+int usageError(const std::string& message, bool json) {
+  DiagnosticList list;
+  list.report(DiagCode::UsageError, {}, {message});
+  printDiagnostics(list.items(), json);
+  return kExitUsage;
+}
+
+// Returns the files a material writes, path -> bytes.
+std::map<std::string, std::string> outputsOf(const CompiledMaterial& m, const Options& o) {
+  std::map<std::string, std::string> files;
+  std::filesystem::path dir(o.outputDir);
+  for (const auto& s : m.stages) {
+    bool wantSource = s.language == ShaderLanguage::Glsl ? o.targets.glsl : o.targets.hlsl;
+    if (wantSource) files[(dir / (m.fileStem + "." + stageFileSuffix(s.language, s.stage))).string()] = s.source;
+    if (o.targets.spirv) {
+      std::string base = m.fileStem + "." + std::string(languageName(s.language)) +
+                         (s.stage == ShaderStage::Vertex ? ".vert" : ".frag");
+      files[(dir / (base + ".spv")).string()] =
+          std::string(reinterpret_cast<const char*>(s.spirv.data()), s.spirv.size() * sizeof(std::uint32_t));
+      files[(dir / (base + ".spvasm")).string()] = s.disassembly;
+    }
+  }
+  files[(dir / (m.fileStem + ".reflect.json")).string()] = m.reflectionJson;
+  return files;
+}
+
+}  // namespace
+
+int runCompileCommand(int argc, char** argv) {
+  CommandLine cl(argc, argv, 2);
+  Options o;
+  std::string targetList = "all";
+  bool anyTarget = false;
+  // Scan once for the diagnostics format so usage errors use it too.
+  for (int i = 2; i < argc; ++i)
+    if (std::string(argv[i]) == "--diagnostics=json" || (std::string(argv[i]) == "--diagnostics" && i + 1 < argc &&
+                                                         std::string(argv[i + 1]) == "json"))
+      o.json = true;
+  while (!cl.done()) {
+    std::string error;
+    const std::string& arg = cl.peek();
+    if (cl.endOfOptions() || arg.empty() || arg[0] != '-' || arg == "-") {
+      o.graphs.push_back(cl.next());
+      continue;
+    }
+    if (cl.flag("--")) {
+      cl.markEndOfOptions();
+      continue;
+    }
+    if (cl.flag("-h") || cl.flag("--help")) {
+      std::fputs(kCompileUsage, stdout);
+      return kExitOk;
+    }
+    if (cl.flag("-O")) {
+      o.optimize = true;
+      continue;
+    }
+    if (cl.flag("-O0")) {
+      o.optimize = false;
+      continue;
+    }
+    if (cl.flag("-q") || cl.flag("--quiet")) {
+      o.quiet = true;
+      continue;
+    }
+    if (auto v = cl.valueFor("--output", error)) {
+      o.outputDir = *v;
+      continue;
+    }
+    if (auto v = cl.valueFor("-o", error)) {
+      o.outputDir = *v;
+      continue;
+    }
+    if (auto v = cl.valueFor("--target", error)) {
+      targetList = anyTarget ? targetList + "," + *v : *v;
+      anyTarget = true;
+      continue;
+    }
+    if (auto v = cl.valueFor("--diagnostics", error)) {
+      if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
+      o.json = *v == "json";
+      continue;
+    }
+    if (!error.empty()) return usageError(error, o.json);
+    return usageError("unknown option '" + quoteUserText(arg) + "'", o.json);
+  }
+  std::string error;
+  if (!parseTargets(targetList, o.targets, error)) return usageError(error, o.json);
+  if (o.graphs.empty()) return usageError("no input graphs", o.json);
+  if (o.outputDir.empty()) return usageError("no output directory; pass -o DIR", o.json);
+
+  CompileOptions options;
+  options.emitSpirv = o.targets.spirv;
+  options.optimize = o.optimize;
+  std::vector<Diagnostic> diagnostics;
+  std::vector<CompiledMaterial> materials;
+  std::map<std::string, std::string> stemOwner;
+  bool internal = false;
+  for (const auto& graph : o.graphs) {
+    CompileResult r = compileMaterialFile(graph, options);
+    for (auto& d : r.diagnostics.items()) {
+      internal = internal || d.info().category == DiagCategory::Internal;
+      diagnostics.push_back(std::move(d));
+    }
+    if (!r.material) continue;
+    auto [it, inserted] = stemOwner.emplace(r.material->fileStem, graph);
+    if (!inserted) {
+      DiagnosticList list;
+      list.report(DiagCode::InvalidSetting, {graph, "/name", 0, 0},
+                  {"material '" + quoteUserText(r.material->name) + "' writes the same files as " + quoteUserText(it->second),
+                   "give each material in one batch a distinct name"});
+      diagnostics.push_back(list.items().front());
+      continue;
+    }
+    materials.push_back(std::move(*r.material));
+  }
+  bool failed = false;
+  for (const auto& d : diagnostics) failed = failed || d.info().severity == Severity::Error;
+  if (!diagnostics.empty()) printDiagnostics(diagnostics, o.json);
+  if (failed) return internal ? kExitInternal : kExitBadInput;
+
+  std::error_code ec;
+  std::filesystem::create_directories(o.outputDir, ec);
+  if (ec) return usageError("cannot create output directory '" + quoteUserText(o.outputDir) + "'", o.json);
+  std::size_t written = 0;
+  for (const auto& m : materials) {
+    for (const auto& [path, bytes] : outputsOf(m, o)) {
+      if (std::string werror = writeFileAtomically(path, bytes); !werror.empty())
+        return usageError(werror, o.json);
+      ++written;
+    }
+  }
+  if (!o.quiet && !o.json && ::isatty(STDOUT_FILENO))
+    std::printf("compiled %zu material%s, wrote %zu files to %s\n", materials.size(), materials.size() == 1 ? "" : "s",
+                written, o.outputDir.c_str());
+  return kExitOk;
+}
+
+}  // namespace wg

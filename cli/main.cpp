@@ -1,0 +1,45 @@
+// weathergen: compile JSON material graphs into weather-aware GLSL, HLSL and SPIR-V.
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "cli/commands.hpp"
+
+namespace {
+
+constexpr const char* kUsage = R"(weathergen - weather-aware material graph compiler
+
+Usage:
+  weathergen compile GRAPH... -o DIR [options]   compile material graphs
+  weathergen list-ops [--json]                   every node op with its ports
+  weathergen list-passes                         the IR pass pipeline, in order
+  weathergen list-diagnostics                    every diagnostic code
+  weathergen list-generators                     built-in procedural textures
+  weathergen --help | --version
+
+Run 'weathergen COMMAND --help' for a command's options.
+Exit codes: 0 success, 1 bad input, 2 bad usage, 3 internal error.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fputs(kUsage, stderr);
+    return wg::kExitUsage;
+  }
+  std::string command = argv[1];
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::fputs(kUsage, stdout);
+    return wg::kExitOk;
+  }
+  if (command == "--version") {
+    std::printf("weathergen %s\n", WEATHERGEN_VERSION);
+    return wg::kExitOk;
+  }
+  if (command == "compile") return wg::runCompileCommand(argc, argv);
+  if (command.starts_with("list-")) return wg::runListCommand(argc, argv);
+  std::fprintf(stderr, "weathergen: error WG9001: unknown command '%s'\n  hint: run 'weathergen --help' for usage\n",
+               command.size() > 60 ? (command.substr(0, 60) + "...").c_str() : command.c_str());
+  return wg::kExitUsage;
+}

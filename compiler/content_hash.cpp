@@ -1,0 +1,80 @@
+#include "compiler/content_hash.hpp"
+
+#include <bit>
+
+namespace wg {
+
+void StableHasher::add(std::string_view bytes) {
+  for (unsigned char c : bytes) {
+    state_ ^= c;
+    state_ *= kPrime;
+  }
+  add(static_cast<std::uint64_t>(bytes.size()));  // length-prefix free: separates fields
+}
+
+void StableHasher::add(std::uint64_t value) {
+  for (int i = 0; i < 8; ++i) {
+    state_ ^= (value >> (8 * i)) & 0xFF;
+    state_ *= kPrime;
+  }
+}
+
+std::string StableHasher::hex() const {
+  static const char* digits = "0123456789abcdef";
+  std::string out(16, '0');
+  for (int i = 0; i < 16; ++i) out[15 - i] = digits[(state_ >> (4 * i)) & 15];
+  return out;
+}
+
+namespace {
+void addValue(StableHasher& h, const Value& v) {
+  h.add(static_cast<std::uint64_t>(v.type));
+  for (int i = 0; i < v.width(); ++i) h.add(std::bit_cast<std::uint32_t>(v.v[i]));
+}
+void addOperand(StableHasher& h, const Operand& o) {
+  h.add(static_cast<std::uint64_t>(o.kind));
+  if (o.kind == Operand::Kind::Node) {
+    h.add(o.node);
+    h.add(o.output);
+  } else if (o.kind == Operand::Kind::Texture) {
+    h.add(static_cast<std::uint64_t>(o.texture));
+  } else {
+    addValue(h, o.constant);
+  }
+}
+}  // namespace
+
+std::string contentHash(const IrGraph& graph) {
+  StableHasher h;
+  h.add(graph.name);
+  for (const auto& node : graph.nodes) {
+    h.add(node.op->name);
+    h.add(node.text);
+    h.add(static_cast<std::uint64_t>(node.parameter + 1));
+    h.add(static_cast<std::uint64_t>(node.valueType));
+    for (const auto& o : node.inputs) addOperand(h, o);
+  }
+  for (const auto& o : graph.outputs) addOperand(h, o);
+  for (const auto& p : graph.parameters) {
+    h.add(p.name);
+    h.add(p.label);
+    addValue(h, p.defaultValue);
+    h.add(p.min ? std::bit_cast<std::uint32_t>(*p.min) : 0xFFFFFFFFull << 32);
+    h.add(p.max ? std::bit_cast<std::uint32_t>(*p.max) : 0xFFFFFFFFull << 32);
+  }
+  for (const auto& t : graph.textures) {
+    h.add(t.name);
+    h.add(t.file);
+    h.add(t.generator);
+    h.add(t.seed);
+    h.add(static_cast<std::uint64_t>(t.size));
+    h.add(t.options.dump());
+    h.add(static_cast<std::uint64_t>(t.wrap) * 16 + static_cast<std::uint64_t>(t.filter));
+  }
+  h.add(static_cast<std::uint64_t>(graph.alphaTested));
+  h.add(std::bit_cast<std::uint32_t>(graph.alphaCutoff));
+  h.add(graph.weatherPreset);
+  return h.hex();
+}
+
+}  // namespace wg

@@ -1,0 +1,113 @@
+#include "compiler/diagnostic.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+namespace wg {
+
+std::string fillTemplate(std::string_view pattern, std::initializer_list<std::string_view> args) {
+  std::string out;
+  out.reserve(pattern.size() + 32);
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] == '{' && i + 2 < pattern.size() && pattern[i + 2] == '}' &&
+        pattern[i + 1] >= '0' && pattern[i + 1] <= '9') {
+      std::size_t index = static_cast<std::size_t>(pattern[i + 1] - '0');
+      if (index < args.size()) out += *(args.begin() + index);
+      i += 2;
+    } else {
+      out += pattern[i];
+    }
+  }
+  return out;
+}
+
+Diagnostic& DiagnosticList::report(DiagCode code, SourceLocation location,
+                                   std::initializer_list<std::string_view> args) {
+  const auto& info = diagnosticInfo(code);
+  items_.push_back({code, std::move(location), fillTemplate(info.messageTemplate, args),
+                    fillTemplate(info.hintTemplate, args)});
+  return items_.back();
+}
+
+void DiagnosticList::append(const DiagnosticList& other) {
+  items_.insert(items_.end(), other.items_.begin(), other.items_.end());
+}
+
+bool DiagnosticList::hasErrors() const {
+  return std::any_of(items_.begin(), items_.end(),
+                     [](const Diagnostic& d) { return d.info().severity == Severity::Error; });
+}
+
+bool DiagnosticList::contains(DiagCode code) const {
+  return std::any_of(items_.begin(), items_.end(),
+                     [code](const Diagnostic& d) { return d.code == code; });
+}
+
+namespace {
+std::string_view severityName(Severity s) { return s == Severity::Error ? "error" : "warning"; }
+}  // namespace
+
+std::string formatDiagnosticText(const Diagnostic& d) {
+  std::string out = d.location.file.empty() ? std::string("weathergen") : d.location.file;
+  if (d.location.line > 0)
+    out += ":" + std::to_string(d.location.line) + ":" + std::to_string(d.location.column);
+  out += ": ";
+  out += severityName(d.info().severity);
+  out += " ";
+  out += d.info().id;
+  out += ": " + d.message;
+  if (!d.location.file.empty()) out += " [" + (d.location.pointer.empty() ? "/" : d.location.pointer) + "]";
+  out += "\n";
+  if (!d.hint.empty()) out += "  hint: " + d.hint + "\n";
+  return out;
+}
+
+std::string formatDiagnosticsJson(const std::vector<Diagnostic>& list) {
+  nlohmann::ordered_json array = nlohmann::ordered_json::array();
+  for (const auto& d : list) {
+    array.push_back({{"code", d.info().id},
+                     {"severity", severityName(d.info().severity)},
+                     {"name", d.info().name},
+                     {"file", d.location.file},
+                     {"line", d.location.line},
+                     {"column", d.location.column},
+                     {"pointer", d.location.pointer},
+                     {"message", d.message},
+                     {"hint", d.hint}});
+  }
+  // Replace invalid UTF-8 from hostile input rather than throwing.
+  return array.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+namespace {
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+}  // namespace
+
+std::string suggestClosest(std::string_view word, const std::vector<std::string_view>& candidates) {
+  if (word.size() > 64) return "";
+  std::string_view best;
+  std::size_t bestDistance = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (auto c : candidates) {
+    std::size_t d = editDistance(word, c);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = c;
+    }
+  }
+  return best.empty() ? std::string() : "did you mean '" + std::string(best) + "'?";
+}
+
+}  // namespace wg

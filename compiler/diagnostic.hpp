@@ -1,0 +1,56 @@
+// Diagnostics as values: a code from the table, a rendered message and hint, and a
+// source span (file, line, column, JSON pointer).
+#pragma once
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compiler/diagnostic_codes.hpp"
+
+namespace wg {
+
+struct SourceLocation {
+  std::string file;     // as the user named it
+  std::string pointer;  // RFC 6901 JSON pointer, "" for the whole document
+  int line = 0;         // 1-based; 0 when unknown
+  int column = 0;
+};
+
+struct Diagnostic {
+  DiagCode code;
+  SourceLocation location;
+  std::string message;
+  std::string hint;
+
+  const DiagnosticInfo& info() const { return diagnosticInfo(code); }
+};
+
+// Fills "{0}".."{9}" in a template from args.
+std::string fillTemplate(std::string_view pattern, std::initializer_list<std::string_view> args);
+
+class DiagnosticList {
+ public:
+  // Renders message and hint from the table; args fill both templates.
+  Diagnostic& report(DiagCode code, SourceLocation location,
+                     std::initializer_list<std::string_view> args = {});
+  void append(const DiagnosticList& other);
+  bool hasErrors() const;
+  bool contains(DiagCode code) const;
+  const std::vector<Diagnostic>& items() const { return items_; }
+  std::vector<Diagnostic>& items() { return items_; }
+  bool empty() const { return items_.empty(); }
+
+ private:
+  std::vector<Diagnostic> items_;
+};
+
+// "file:line:col: error WG2001: message [/json/pointer]\n  hint: ...\n"
+std::string formatDiagnosticText(const Diagnostic& d);
+// A JSON array of {code, severity, name, file, line, column, pointer, message, hint}.
+std::string formatDiagnosticsJson(const std::vector<Diagnostic>& list);
+
+// "did you mean 'x'?" from candidates by edit distance, or "" when none is close.
+std::string suggestClosest(std::string_view word, const std::vector<std::string_view>& candidates);
+
+}  // namespace wg

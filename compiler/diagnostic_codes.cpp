@@ -1,0 +1,85 @@
+#include "compiler/diagnostic_codes.hpp"
+
+#include <array>
+
+namespace wg {
+
+namespace {
+using enum DiagCode;
+constexpr auto E = Severity::Error;
+constexpr auto In = DiagCategory::Input;
+constexpr auto Use = DiagCategory::Usage;
+constexpr auto Bug = DiagCategory::Internal;
+
+constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = {{
+    {JsonSyntax, "WG1001", E, In, "json-syntax", "malformed JSON: {0}",
+     "fix the JSON syntax at this position"},
+    {FileUnreadable, "WG1002", E, In, "file-unreadable", "cannot read '{0}': {1}",
+     "check that the path exists and is readable"},
+    {WrongJsonKind, "WG1003", E, In, "wrong-json-kind", "'{0}' must be {1}, not {2}",
+     "change the value to {1}"},
+    {MissingField, "WG1004", E, In, "missing-field", "missing required field '{0}'",
+     "add '{0}' to this object"},
+    {UnknownField, "WG1005", E, In, "unknown-field", "unknown field '{0}'", "{1}"},
+    {DuplicateKey, "WG1006", E, In, "duplicate-key", "key '{0}' appears twice in one object",
+     "remove or rename one of the two entries"},
+    {ResourceLimit, "WG1007", E, In, "resource-limit", "{0} is {1}; the limit is {2}",
+     "split the material or simplify it"},
+    {UnknownOp, "WG2001", E, In, "unknown-op", "unknown op '{0}'", "{1}"},
+    {DuplicateId, "WG2002", E, In, "duplicate-id", "node id '{0}' is already used by {1}",
+     "give every node a unique id"},
+    {UnknownNode, "WG2003", E, In, "unknown-node", "link '{0}' names node '{1}', which does not exist",
+     "{2}"},
+    {DanglingLink, "WG2004", E, In, "dangling-link",
+     "link '{0}' names output '{1}', which op '{2}' does not have", "{3}"},
+    {MalformedLink, "WG2005", E, In, "malformed-link", "link '{0}' is not of the form 'nodeId.output'",
+     "write links as \"nodeId.output\", e.g. \"noise1.out\""},
+    {UnknownInput, "WG2006", E, In, "unknown-input", "op '{0}' has no input '{1}'", "{2}"},
+    {MissingInput, "WG2007", E, In, "missing-input", "op '{0}' needs input '{1}' ({2})",
+     "connect '{1}' to a node output or give it a literal"},
+    {TypeMismatch, "WG2008", E, In, "type-mismatch", "{0} expects {1} but gets {2}",
+     "{3}"},
+    {Cycle, "WG2009", E, In, "cycle", "the graph has a cycle: {0}",
+     "break the cycle; a node cannot depend on its own output"},
+    {LiteralOutOfRange, "WG2010", E, In, "literal-out-of-range", "{0} is {1}, outside [{2}, {3}]",
+     "use a value between {2} and {3}"},
+    {LiteralNotFinite, "WG2011", E, In, "literal-not-finite", "{0} is not a finite number",
+     "use a finite number"},
+    {UnknownParameter, "WG2012", E, In, "unknown-parameter", "parameter '{0}' is not declared",
+     "{1}"},
+    {InvalidParameter, "WG2013", E, In, "invalid-parameter", "parameter '{0}': {1}", "{2}"},
+    {InvalidSetting, "WG2014", E, In, "invalid-setting", "{0}", "{1}"},
+    {UnknownTexture, "WG3001", E, In, "unknown-texture", "texture '{0}' is not declared",
+     "{1}"},
+    {TextureFileMissing, "WG3002", E, In, "texture-file-missing",
+     "texture '{0}': file '{1}' not found", "paths are relative to the graph file"},
+    {TextureUnsupported, "WG3003", E, In, "texture-unsupported", "texture '{0}': {1}", "{2}"},
+    {UnknownWeatherPreset, "WG4001", E, In, "unknown-weather-preset",
+     "unknown weather preset '{0}'", "{1}"},
+    {InvalidWeatherSetting, "WG4002", E, In, "invalid-weather-setting", "{0}", "{1}"},
+    {UsageError, "WG9001", E, Use, "usage", "{0}", "run 'weathergen --help' for usage"},
+    {InternalShaderError, "WG9901", E, Bug, "internal-shader-error",
+     "emitted {0} failed to compile: {1}", "this is a weathergen bug; please report it"},
+    {InternalSpirvInvalid, "WG9902", E, Bug, "internal-spirv-invalid",
+     "SPIR-V for {0} failed validation: {1}", "this is a weathergen bug; please report it"},
+}};
+
+constexpr bool tableMatchesEnum() {
+  for (std::size_t i = 0; i < kTable.size(); ++i)
+    if (static_cast<std::size_t>(kTable[i].code) != i) return false;
+  return true;
+}
+static_assert(tableMatchesEnum(), "kTable rows must follow DiagCode order");
+}  // namespace
+
+const DiagnosticInfo& diagnosticInfo(DiagCode code) { return kTable[static_cast<std::size_t>(code)]; }
+
+std::span<const DiagnosticInfo> allDiagnostics() { return kTable; }
+
+std::optional<DiagCode> diagnosticFromId(std::string_view id) {
+  for (const auto& row : kTable)
+    if (row.id == id) return row.code;
+  return std::nullopt;
+}
+
+}  // namespace wg

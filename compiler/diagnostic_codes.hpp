@@ -1,0 +1,64 @@
+// The one table of diagnostics: stable code, severity, category, message and hint
+// templates. Tests check codes, never wording. docs/diagnostics.md lists the same table.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace wg {
+
+enum class Severity : std::uint8_t { Error, Warning };
+
+// Input: caused by a graph file (each has a case in tests/bad/).
+// Usage: caused by the command line. Internal: a weathergen bug.
+enum class DiagCategory : std::uint8_t { Input, Usage, Internal };
+
+enum class DiagCode : std::uint16_t {
+  JsonSyntax,
+  FileUnreadable,
+  WrongJsonKind,
+  MissingField,
+  UnknownField,
+  DuplicateKey,
+  ResourceLimit,
+  UnknownOp,
+  DuplicateId,
+  UnknownNode,
+  DanglingLink,
+  MalformedLink,
+  UnknownInput,
+  MissingInput,
+  TypeMismatch,
+  Cycle,
+  LiteralOutOfRange,
+  LiteralNotFinite,
+  UnknownParameter,
+  InvalidParameter,
+  InvalidSetting,
+  UnknownTexture,
+  TextureFileMissing,
+  TextureUnsupported,
+  UnknownWeatherPreset,
+  InvalidWeatherSetting,
+  UsageError,
+  InternalShaderError,
+  InternalSpirvInvalid,
+  kCount
+};
+
+struct DiagnosticInfo {
+  DiagCode code;
+  std::string_view id;  // stable, e.g. "WG2001"
+  Severity severity;
+  DiagCategory category;
+  std::string_view name;             // kebab-case summary
+  std::string_view messageTemplate;  // {0}, {1}... are filled by the reporter
+  std::string_view hintTemplate;
+};
+
+const DiagnosticInfo& diagnosticInfo(DiagCode code);
+std::span<const DiagnosticInfo> allDiagnostics();
+std::optional<DiagCode> diagnosticFromId(std::string_view id);
+
+}  // namespace wg

@@ -1,0 +1,54 @@
+// The frame and weather uniform block shared by every material. Its members are fixed
+// internal names; the runtime fills it from reflection.
+#include <array>
+
+#include "compiler/material_interface.hpp"
+
+namespace wg {
+
+namespace {
+struct FrameField {
+  std::string_view name;
+  InterfaceType type;
+};
+// Ordered so std140 packs without holes: each vec3 is followed by a float.
+constexpr std::array<FrameField, 23> kFrameFields = {{
+    {"model", InterfaceType::Mat4},
+    {"viewProjection", InterfaceType::Mat4},
+    {"normalMatrix", InterfaceType::Mat4},  // inverse transpose of model
+    {"cameraPosition", InterfaceType::Vec3},
+    {"time", InterfaceType::Float},           // seconds
+    {"sunDirection", InterfaceType::Vec3},    // unit vector towards the sun
+    {"sunIntensity", InterfaceType::Float},
+    {"sunColor", InterfaceType::Vec3},
+    {"ambientIntensity", InterfaceType::Float},
+    {"skyColor", InterfaceType::Vec3},
+    {"temperature", InterfaceType::Float},    // degrees Celsius
+    {"windDirection", InterfaceType::Vec2},   // unit vector in world xz
+    {"windIntensity", InterfaceType::Float},
+    {"precipitation", InterfaceType::Float},  // [0, 1]
+    {"snowLevel", InterfaceType::Float},      // accumulated levels, each [0, 1]
+    {"wetnessLevel", InterfaceType::Float},
+    {"mossLevel", InterfaceType::Float},
+    {"frostLevel", InterfaceType::Float},
+    {"puddleLevel", InterfaceType::Float},
+    {"exposure", InterfaceType::Float},       // tone-mapping exposure
+    {"debugView", InterfaceType::Uint},       // 0 = lit; others select an AOV
+    {"reserved0", InterfaceType::Float},
+    {"reserved1", InterfaceType::Float},
+}};
+}  // namespace
+
+UniformBlock frameBlock() {
+  UniformBlock block;
+  block.name = "Frame";
+  block.identifier = "FrameBlock";
+  block.set = 0;
+  block.binding = 0;
+  for (const auto& field : kFrameFields)
+    block.members.push_back({std::string(field.name), "frame_" + std::string(field.name), field.type});
+  layoutStd140(block);
+  return block;
+}
+
+}  // namespace wg

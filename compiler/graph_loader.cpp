@@ -1,0 +1,348 @@
+#include "compiler/graph_loader.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "compiler/literal.hpp"
+#include "nodes/image_file.hpp"
+#include "nodes/texture_generators.hpp"
+
+namespace wg {
+
+std::optional<std::string> readGraphFile(const std::string& path, DiagnosticList& diagnostics) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), "it is a directory"});
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), "no such file"});
+    return std::nullopt;
+  }
+  // Refuse oversized files before reading them into memory.
+  if (auto size = std::filesystem::file_size(path, ec); !ec && size > JsonLimits{}.maxBytes) {
+    diagnostics.report(DiagCode::ResourceLimit, {path, "", 1, 1},
+                       {"the file size", std::to_string(size) + " bytes", std::to_string(JsonLimits{}.maxBytes) + " bytes"});
+    return std::nullopt;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+namespace {
+
+// Texture sizes: powers of two keep procedural tiles seamless and mips complete.
+constexpr int kMinTextureSize = 16;
+constexpr int kMaxTextureSize = 2048;
+
+class Loader {
+ public:
+  Loader(const JsonDocument& doc, DiagnosticList& diags) : doc_(doc), diags_(diags) {}
+
+  std::optional<MaterialGraph> run() {
+    const auto& root = doc_.root();
+    if (!expectKind(root, "", nlohmann::json::value_t::object, "the document", "an object")) return std::nullopt;
+    checkFields(root, "", {"$schema", "name", "description", "parameters", "textures", "nodes", "output", "weather",
+                           "alphaCutoff"});
+    graph_.sourceFile = doc_.file();
+    if (auto* name = required(root, "", "name", nlohmann::json::value_t::string, "a string")) {
+      graph_.name = name->get<std::string>();
+      if (graph_.name.empty()) report(DiagCode::InvalidSetting, "/name", {"the material name is empty", "give the material a name"});
+    }
+    if (root.contains("parameters") && expectKind(root["parameters"], "/parameters", nlohmann::json::value_t::object, "'parameters'", "an object"))
+      for (const auto& [key, value] : root["parameters"].items()) loadParameter(key, value);
+    if (root.contains("textures") && expectKind(root["textures"], "/textures", nlohmann::json::value_t::object, "'textures'", "an object"))
+      for (const auto& [key, value] : root["textures"].items()) loadTexture(key, value);
+    if (auto* nodes = required(root, "", "nodes", nlohmann::json::value_t::array, "an array"))
+      for (std::size_t i = 0; i < nodes->size(); ++i) loadNode((*nodes)[i], appendPointer("/nodes", i));
+    if (auto* output = required(root, "", "output", nlohmann::json::value_t::object, "an object"))
+      loadOutput(*output);
+    if (root.contains("weather")) {
+      const auto& w = root["weather"];
+      if (!w.is_string() && !w.is_object())
+        report(DiagCode::WrongJsonKind, "/weather", {"weather", "a preset name or an object", describeJsonKind(w)});
+      else {
+        graph_.weather = w;
+        graph_.weatherPointer = "/weather";
+      }
+    }
+    if (root.contains("alphaCutoff")) {
+      const auto& a = root["alphaCutoff"];
+      if (!a.is_number())
+        report(DiagCode::WrongJsonKind, "/alphaCutoff", {"alphaCutoff", "a number", describeJsonKind(a)});
+      else if (double v = a.get<double>(); !(v >= 0.0 && v <= 1.0))
+        report(DiagCode::LiteralOutOfRange, "/alphaCutoff", {"alphaCutoff", formatFloat(static_cast<float>(v)), "0", "1"});
+      else
+        graph_.alphaCutoff = static_cast<float>(v);
+    }
+    if (failed_) return std::nullopt;
+    return std::move(graph_);
+  }
+
+ private:
+  Diagnostic& report(DiagCode code, const std::string& pointer, std::initializer_list<std::string_view> args) {
+    failed_ = true;
+    return diags_.report(code, doc_.locate(pointer), args);
+  }
+
+  bool expectKind(const nlohmann::json& j, const std::string& pointer, nlohmann::json::value_t kind,
+                  std::string_view what, std::string_view expected) {
+    bool ok = j.type() == kind ||
+              (kind == nlohmann::json::value_t::number_float && j.is_number());
+    if (!ok) report(DiagCode::WrongJsonKind, pointer, {what, expected, describeJsonKind(j)});
+    return ok;
+  }
+
+  const nlohmann::json* required(const nlohmann::json& object, const std::string& pointer, const char* key,
+                                 nlohmann::json::value_t kind, std::string_view expected) {
+    auto it = object.find(key);
+    if (it == object.end()) {
+      report(DiagCode::MissingField, pointer, {key});
+      return nullptr;
+    }
+    return expectKind(*it, appendPointer(pointer, key), kind, key, expected) ? &*it : nullptr;
+  }
+
+  const nlohmann::json* optionalString(const nlohmann::json& object, const std::string& pointer, const char* key) {
+    auto it = object.find(key);
+    if (it == object.end()) return nullptr;
+    return expectKind(*it, appendPointer(pointer, key), nlohmann::json::value_t::string, key, "a string") ? &*it : nullptr;
+  }
+
+  void checkFields(const nlohmann::json& object, const std::string& pointer, std::vector<std::string_view> known) {
+    for (const auto& [key, value] : object.items()) {
+      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+      std::string hint = suggestClosest(key, known);
+      if (hint.empty()) {
+        hint = "known fields:";
+        for (auto k : known) hint += " " + std::string(k);
+      }
+      report(DiagCode::UnknownField, appendPointer(pointer, key), {quoteUserText(key), hint});
+    }
+  }
+
+  void loadParameter(const std::string& name, const nlohmann::json& j) {
+    std::string pointer = appendPointer("/parameters", name);
+    if (!expectKind(j, pointer, nlohmann::json::value_t::object, "a parameter", "an object")) return;
+    checkFields(j, pointer, {"type", "default", "min", "max", "label", "description"});
+    ParameterDecl p;
+    p.name = name;
+    p.pointer = pointer;
+    std::string shown = quoteUserText(name);
+    if (name.empty()) report(DiagCode::InvalidParameter, pointer, {shown, "the name is empty", "give the parameter a name"});
+    if (auto* type = required(j, pointer, "type", nlohmann::json::value_t::string, "a string")) {
+      auto t = parseTypeName(type->get<std::string>());
+      if (!t || *t == ValueType::Texture) {
+        report(DiagCode::InvalidParameter, appendPointer(pointer, "type"),
+               {shown, "type '" + quoteUserText(type->get<std::string>()) + "' is not a parameter type",
+                "use float, vec2, vec3, vec4 or bool"});
+        return;
+      }
+      p.type = *t;
+    } else {
+      return;
+    }
+    for (const char* bound : {"min", "max"}) {
+      if (!j.contains(bound)) continue;
+      const auto& b = j[bound];
+      if (!expectKind(b, appendPointer(pointer, bound), nlohmann::json::value_t::number_float, bound, "a number")) continue;
+      LiteralResult r = parseLiteral(b);
+      if (r.notFinite) {
+        report(DiagCode::LiteralNotFinite, appendPointer(pointer, bound), {std::string(bound)});
+        continue;
+      }
+      (std::string_view(bound) == "min" ? p.min : p.max) = r.value->x();
+    }
+    if (p.min && p.max && *p.min > *p.max)
+      report(DiagCode::InvalidParameter, appendPointer(pointer, "min"),
+             {shown, "min " + formatFloat(*p.min) + " is above max " + formatFloat(*p.max), "swap min and max"});
+    if (auto* label = optionalString(j, pointer, "label")) p.label = label->get<std::string>();
+    auto it = j.find("default");
+    if (it == j.end()) {
+      report(DiagCode::MissingField, pointer, {"default"});
+      return;
+    }
+    std::string dp = appendPointer(pointer, "default");
+    LiteralResult r = parseLiteral(*it);
+    if (!r.value) {
+      report(DiagCode::TypeMismatch, dp, {"parameter '" + shown + "'", std::string(typeName(p.type)), r.shapeError,
+                                          "write the default as a " + std::string(typeName(p.type)) + " literal"});
+      return;
+    }
+    if (r.notFinite) {
+      report(DiagCode::LiteralNotFinite, dp, {"the default of '" + shown + "'"});
+      return;
+    }
+    if (r.value->type != p.type) {
+      report(DiagCode::TypeMismatch, dp, {"parameter '" + shown + "'", std::string(typeName(p.type)),
+                                          std::string(typeName(r.value->type)),
+                                          "write the default as a " + std::string(typeName(p.type)) + " literal"});
+      return;
+    }
+    p.defaultValue = *r.value;
+    for (int i = 0; i < p.defaultValue.width() && p.type != ValueType::Bool; ++i) {
+      float x = p.defaultValue.v[i];
+      if ((p.min && x < *p.min) || (p.max && x > *p.max)) {
+        report(DiagCode::LiteralOutOfRange, dp, {"the default of '" + shown + "'", formatFloat(x),
+                                                 p.min ? formatFloat(*p.min) : "-inf", p.max ? formatFloat(*p.max) : "inf"});
+        break;
+      }
+    }
+    graph_.parameters.push_back(std::move(p));
+  }
+
+  void loadTexture(const std::string& name, const nlohmann::json& j) {
+    std::string pointer = appendPointer("/textures", name);
+    std::string shown = quoteUserText(name);
+    if (!expectKind(j, pointer, nlohmann::json::value_t::object, "a texture", "an object")) return;
+    TextureDecl t;
+    t.name = name;
+    t.pointer = pointer;
+    if (auto* wrap = optionalString(j, pointer, "wrap")) {
+      auto w = parseTextureWrap(wrap->get<std::string>());
+      if (!w) report(DiagCode::TextureUnsupported, appendPointer(pointer, "wrap"),
+                     {shown, "unknown wrap mode '" + quoteUserText(wrap->get<std::string>()) + "'", "use repeat, clamp or mirror"});
+      else t.wrap = *w;
+    }
+    if (auto* filter = optionalString(j, pointer, "filter")) {
+      auto f = parseTextureFilter(filter->get<std::string>());
+      if (!f) report(DiagCode::TextureUnsupported, appendPointer(pointer, "filter"),
+                     {shown, "unknown filter '" + quoteUserText(filter->get<std::string>()) + "'", "use linear or nearest"});
+      else t.filter = *f;
+    }
+    bool hasFile = j.contains("file"), hasGenerator = j.contains("generator");
+    if (hasFile == hasGenerator) {
+      report(DiagCode::TextureUnsupported, pointer,
+             {shown, hasFile ? "both 'file' and 'generator' are set" : "neither 'file' nor 'generator' is set",
+              "give exactly one source: an image 'file' or a procedural 'generator'"});
+      return;
+    }
+    if (hasFile) {
+      checkFields(j, pointer, {"file", "wrap", "filter", "description"});
+      auto* file = optionalString(j, pointer, "file");
+      if (!file) return;
+      t.file = file->get<std::string>();
+      std::filesystem::path base = std::filesystem::path(doc_.file()).parent_path();
+      t.resolvedPath = (base / t.file).lexically_normal().string();
+      int width = 0, height = 0;
+      std::string error;
+      switch (probeImageFile(t.resolvedPath, width, height, error)) {
+        case ImageFileStatus::Ok: break;
+        case ImageFileStatus::NotFound:
+          report(DiagCode::TextureFileMissing, appendPointer(pointer, "file"), {shown, quoteUserText(t.file)});
+          return;
+        case ImageFileStatus::Unsupported:
+          report(DiagCode::TextureUnsupported, appendPointer(pointer, "file"),
+                 {shown, quoteUserText(error), "convert the image to PNG or JPEG"});
+          return;
+        case ImageFileStatus::TooLarge:
+          report(DiagCode::ResourceLimit, appendPointer(pointer, "file"),
+                 {"the texture size", std::to_string(width) + "x" + std::to_string(height), "8192x8192"});
+          return;
+      }
+    } else {
+      auto* generatorName = optionalString(j, pointer, "generator");
+      if (!generatorName) return;
+      t.generator = generatorName->get<std::string>();
+      const GeneratorSpec* spec = findTextureGenerator(t.generator);
+      if (!spec) {
+        std::vector<std::string_view> names;
+        for (const auto& g : textureGenerators()) names.push_back(g.name);
+        std::string hint = suggestClosest(t.generator, names);
+        if (hint.empty()) {
+          hint = "built-in generators:";
+          for (auto n : names) hint += " " + std::string(n);
+        }
+        report(DiagCode::TextureUnsupported, appendPointer(pointer, "generator"),
+               {shown, "unknown generator '" + quoteUserText(t.generator) + "'", hint});
+        return;
+      }
+      if (j.contains("seed")) {
+        const auto& s = j["seed"];
+        if (!s.is_number_integer() || s.get<std::int64_t>() < 0 || s.get<std::int64_t>() > 0xFFFFFFFFll)
+          report(DiagCode::TextureUnsupported, appendPointer(pointer, "seed"),
+                 {shown, "the seed must be an integer in [0, 4294967295]", "use a whole number"});
+        else
+          t.seed = static_cast<std::uint32_t>(s.get<std::int64_t>());
+      }
+      if (j.contains("size")) {
+        const auto& s = j["size"];
+        std::int64_t n = s.is_number_integer() ? s.get<std::int64_t>() : 0;
+        if (n < kMinTextureSize || n > kMaxTextureSize || (n & (n - 1)) != 0)
+          report(DiagCode::TextureUnsupported, appendPointer(pointer, "size"),
+                 {shown, "size must be a power of two from 16 to 2048", "use 64, 128, 256, 512, 1024 or 2048"});
+        else
+          t.size = static_cast<int>(n);
+      }
+      nlohmann::json options = nlohmann::json::object();
+      for (const auto& [key, value] : j.items())
+        if (key != "generator" && key != "seed" && key != "size" && key != "wrap" && key != "filter" && key != "description")
+          options[key] = value;
+      std::string error = validateGeneratorOptions(*spec, options);
+      if (!error.empty())
+        report(DiagCode::TextureUnsupported, pointer, {shown, quoteUserText(error), "see 'weathergen list-generators'"});
+      t.options = std::move(options);
+    }
+    graph_.textures.push_back(std::move(t));
+  }
+
+  InputSource loadInput(const nlohmann::json& j, const std::string& pointer) {
+    InputSource s;
+    s.pointer = pointer;
+    if (j.is_string()) {
+      s.kind = InputSource::Kind::Link;
+      s.text = j.get<std::string>();
+    } else {
+      s.kind = InputSource::Kind::Literal;
+      s.literal = j;
+    }
+    return s;
+  }
+
+  void loadNode(const nlohmann::json& j, const std::string& pointer) {
+    if (!expectKind(j, pointer, nlohmann::json::value_t::object, "a node", "an object")) return;
+    checkFields(j, pointer, {"id", "op", "inputs", "param", "description"});
+    NodeDecl n;
+    n.pointer = pointer;
+    auto* id = required(j, pointer, "id", nlohmann::json::value_t::string, "a string");
+    auto* op = required(j, pointer, "op", nlohmann::json::value_t::string, "a string");
+    if (!id || !op) return;
+    n.id = id->get<std::string>();
+    n.op = op->get<std::string>();
+    if (n.id.empty()) report(DiagCode::InvalidSetting, appendPointer(pointer, "id"), {"the node id is empty", "give the node an id"});
+    if (auto* param = optionalString(j, pointer, "param")) n.param = param->get<std::string>();
+    if (j.contains("inputs")) {
+      const auto& inputs = j["inputs"];
+      std::string ip = appendPointer(pointer, "inputs");
+      if (expectKind(inputs, ip, nlohmann::json::value_t::object, "inputs", "an object"))
+        for (const auto& [port, value] : inputs.items())
+          n.inputs.emplace_back(port, loadInput(value, appendPointer(ip, port)));
+    }
+    graph_.nodes.push_back(std::move(n));
+  }
+
+  void loadOutput(const nlohmann::json& j) {
+    std::vector<std::string_view> known;
+    for (const auto& f : pbrFields()) known.push_back(f.name);
+    checkFields(j, "/output", known);
+    for (const auto& [key, value] : j.items())
+      if (auto field = findPbrField(key)) graph_.outputs[*field] = loadInput(value, appendPointer("/output", key));
+  }
+
+  const JsonDocument& doc_;
+  DiagnosticList& diags_;
+  MaterialGraph graph_;
+  bool failed_ = false;
+};
+
+}  // namespace
+
+std::optional<MaterialGraph> loadMaterialGraph(const JsonDocument& document, DiagnosticList& diagnostics) {
+  return Loader(document, diagnostics).run();
+}
+
+}  // namespace wg

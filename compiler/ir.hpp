@@ -1,0 +1,56 @@
+// The typed, resolved graph the passes rewrite and the backends emit. It holds no
+// user-spelled identifiers: node ids survive only as debug names for diagnostics.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "compiler/material_graph.hpp"
+#include "compiler/pbr_output.hpp"
+#include "nodes/op_definition.hpp"
+
+namespace wg {
+
+struct Operand {
+  enum class Kind : std::uint8_t { Node, Constant, Texture } kind = Kind::Constant;
+  std::uint32_t node = 0;    // Kind::Node
+  std::uint8_t output = 0;   // index into the op's outputs
+  Value constant;            // Kind::Constant
+  int texture = -1;          // Kind::Texture: index into IrGraph::textures
+  ValueType type = ValueType::Float;  // type delivered, before conversion to the port
+
+  static Operand ofConstant(const Value& v) { return {Kind::Constant, 0, 0, v, -1, v.type}; }
+  static Operand ofNode(std::uint32_t node, std::uint8_t output, ValueType type) {
+    return {Kind::Node, node, output, {}, -1, type};
+  }
+  static Operand ofTexture(int index) { return {Kind::Texture, 0, 0, Value::texture(index), index, ValueType::Texture}; }
+  friend bool operator==(const Operand&, const Operand&) = default;
+};
+
+struct IrNode {
+  const OpDef* op = nullptr;
+  std::vector<Operand> inputs;         // one per port of op->inputs, defaults filled in
+  std::vector<ValueType> inputTypes;   // each port's resolved type (T resolved)
+  ValueType valueType = ValueType::Float;
+  std::string text;                    // swizzle channels
+  int parameter = -1;                  // op "parameter": index into IrGraph::parameters
+  std::string debugName;               // the source node id, for diagnostics only
+
+  ValueType outputType(std::size_t output) const;
+};
+
+struct IrGraph {
+  std::string name;
+  std::vector<IrNode> nodes;  // always in a valid topological order
+  std::array<Operand, kPbrFieldCount> outputs;
+  std::vector<ParameterDecl> parameters;
+  std::vector<TextureDecl> textures;
+  float alphaCutoff = 0.5f;
+  bool alphaTested = false;  // opacity was given
+  std::string weatherPreset = "none";  // the weather issue's injection pass reads this
+
+  Operand& output(PbrField field) { return outputs[static_cast<std::size_t>(field)]; }
+  const Operand& output(PbrField field) const { return outputs[static_cast<std::size_t>(field)]; }
+};
+
+}  // namespace wg

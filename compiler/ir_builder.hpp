@@ -1,0 +1,21 @@
+// Stage 2: MaterialGraph -> IrGraph. Resolves ops, links, textures and parameters,
+// infers types (the scalar splat is the only implicit conversion), detects cycles and
+// checks literals. Reports every error it finds, not only the first.
+#pragma once
+#include <optional>
+
+#include "compiler/diagnostic.hpp"
+#include "compiler/ir.hpp"
+#include "compiler/json_document.hpp"
+#include "compiler/material_graph.hpp"
+
+namespace wg {
+
+struct IrLimits {
+  std::size_t maxNodes = 100000;  // ten times the largest synthetic benchmark graph
+};
+
+std::optional<IrGraph> buildIr(const MaterialGraph& graph, const JsonDocument& document,
+                               DiagnosticList& diagnostics, const IrLimits& limits = {});
+
+}  // namespace wg

@@ -1,0 +1,288 @@
+#include "compiler/json_document.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace wg {
+
+std::string appendPointer(const std::string& pointer, std::string_view token) {
+  std::string out = pointer;
+  out += '/';
+  for (char c : token) {
+    if (c == '~') out += "~0";
+    else if (c == '/') out += "~1";
+    else out += c;
+  }
+  return out;
+}
+
+std::string appendPointer(const std::string& pointer, std::size_t index) {
+  return pointer + "/" + std::to_string(index);
+}
+
+namespace {
+
+// Walks already-validated JSON text with an explicit stack (no recursion, so hostile
+// nesting cannot overflow), calling onValue(pointer, line, col) for every value and
+// onDuplicate(pointer, line, col, key) for repeated keys.
+struct TextScanner {
+  const std::string& text;
+  std::size_t pos = 0;
+  int line = 1;
+  int column = 1;
+
+  char peek() const { return pos < text.size() ? text[pos] : '\0'; }
+  void advance() {
+    if (text[pos] == '\n') {
+      ++line;
+      column = 1;
+    } else if ((static_cast<unsigned char>(text[pos]) & 0xC0) != 0x80) {
+      ++column;  // count UTF-8 code points, not bytes
+    }
+    ++pos;
+  }
+  void skipSpace() {
+    while (pos < text.size() && (text[pos] == ' ' || text[pos] == '\t' || text[pos] == '\n' ||
+                                 text[pos] == '\r'))
+      advance();
+  }
+  static void appendUtf8(std::string& out, unsigned cp) {
+    if (cp < 0x80) {
+      out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+      out += static_cast<char>(0xC0 | (cp >> 6));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+      out += static_cast<char>(0xE0 | (cp >> 12));
+      out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+      out += static_cast<char>(0xF0 | (cp >> 18));
+      out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+      out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+  }
+  unsigned hex4() {
+    unsigned v = 0;
+    for (int i = 0; i < 4; ++i) {
+      char c = peek();
+      advance();
+      v <<= 4;
+      if (c >= '0' && c <= '9') v |= static_cast<unsigned>(c - '0');
+      else if (c >= 'a' && c <= 'f') v |= static_cast<unsigned>(c - 'a' + 10);
+      else if (c >= 'A' && c <= 'F') v |= static_cast<unsigned>(c - 'A' + 10);
+    }
+    return v;
+  }
+  std::string readString() {  // at the opening quote
+    std::string out;
+    advance();
+    while (pos < text.size() && text[pos] != '"') {
+      if (text[pos] == '\\') {
+        advance();
+        char e = peek();
+        advance();
+        switch (e) {
+          case 'n': out += '\n'; break;
+          case 't': out += '\t'; break;
+          case 'r': out += '\r'; break;
+          case 'b': out += '\b'; break;
+          case 'f': out += '\f'; break;
+          case 'u': {
+            unsigned cp = hex4();
+            if (cp >= 0xD800 && cp < 0xDC00 && peek() == '\\') {
+              advance();
+              advance();
+              unsigned low = hex4();
+              cp = 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
+            }
+            appendUtf8(out, cp);
+            break;
+          }
+          default: out += e;
+        }
+      } else {
+        out += text[pos];
+        advance();
+      }
+    }
+    if (pos < text.size()) advance();
+    return out;
+  }
+  void skipScalar() {
+    while (pos < text.size()) {
+      char c = text[pos];
+      if (c == ',' || c == ']' || c == '}' || c == ' ' || c == '\n' || c == '\r' || c == '\t') break;
+      advance();
+    }
+  }
+
+  template <typename OnValue, typename OnDuplicate>
+  void scan(OnValue&& onValue, OnDuplicate&& onDuplicate) {
+    struct Frame {
+      bool isObject;
+      std::string pointer;
+      std::size_t index = 0;
+      std::vector<std::string> keys;
+    };
+    std::vector<Frame> stack;
+    std::string currentPointer;
+    skipSpace();
+    while (true) {
+      // At the start of a value whose pointer is currentPointer.
+      skipSpace();
+      onValue(currentPointer, line, column);
+      char c = peek();
+      if (c == '{' || c == '[') {
+        advance();
+        stack.push_back({c == '{', currentPointer, 0, {}});
+      } else if (c == '"') {
+        readString();
+      } else {
+        skipScalar();
+      }
+      // Find the next value, closing containers as we go.
+      bool haveNext = false;
+      while (!stack.empty() && !haveNext) {
+        skipSpace();
+        Frame& top = stack.back();
+        char d = peek();
+        if (d == ',') {
+          advance();
+          skipSpace();
+          d = peek();
+        } else if (d == '}' || d == ']') {
+          advance();
+          stack.pop_back();
+          continue;
+        } else if (d == '\0') {
+          return;
+        }
+        if (top.isObject) {
+          if (d == '}') {
+            advance();
+            stack.pop_back();
+            continue;
+          }
+          int keyLine = line, keyColumn = column;
+          std::string key = readString();
+          skipSpace();
+          if (peek() == ':') advance();
+          std::string pointer = appendPointer(top.pointer, key);
+          if (std::find(top.keys.begin(), top.keys.end(), key) != top.keys.end())
+            onDuplicate(pointer, keyLine, keyColumn, key);
+          else
+            top.keys.push_back(std::move(key));
+          currentPointer = std::move(pointer);
+        } else {
+          if (d == ']') {
+            advance();
+            stack.pop_back();
+            continue;
+          }
+          currentPointer = appendPointer(top.pointer, top.index++);
+        }
+        haveNext = true;
+      }
+      if (!haveNext) return;
+    }
+  }
+};
+
+int nestingDepth(const std::string& text) {
+  int depth = 0, maxDepth = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '{' || c == '[') {
+      maxDepth = std::max(maxDepth, ++depth);
+    } else if (c == '}' || c == ']') {
+      --depth;
+    }
+  }
+  return maxDepth;
+}
+
+// nlohmann reports a byte offset; convert it to line:col for the diagnostic.
+std::pair<int, int> lineColumnOfByte(const std::string& text, std::size_t byte) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+}  // namespace
+
+JsonDocument::JsonDocument(std::string file, std::string text, nlohmann::json root)
+    : file_(std::move(file)), text_(std::move(text)), root_(std::move(root)) {}
+
+SourceLocation JsonDocument::locate(const std::string& pointer) const {
+  if (!index_) {
+    index_ = std::make_unique<std::unordered_map<std::string, std::pair<int, int>>>();
+    TextScanner scanner{text_};
+    scanner.scan([&](const std::string& p, int l, int c) { index_->emplace(p, std::make_pair(l, c)); },
+                 [](const std::string&, int, int, const std::string&) {});
+  }
+  std::string p = pointer;
+  while (true) {
+    auto it = index_->find(p);
+    if (it != index_->end()) return {file_, pointer, it->second.first, it->second.second};
+    auto slash = p.rfind('/');
+    if (slash == std::string::npos) return {file_, pointer, 1, 1};
+    p.resize(slash);
+  }
+}
+
+std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text,
+                                              DiagnosticList& diagnostics, const JsonLimits& limits) {
+  if (text.size() > limits.maxBytes) {
+    diagnostics.report(DiagCode::ResourceLimit, {file, "", 1, 1},
+                       {"the file size", std::to_string(text.size()) + " bytes",
+                        std::to_string(limits.maxBytes) + " bytes"});
+    return std::nullopt;
+  }
+  if (int depth = nestingDepth(text); depth > limits.maxDepth) {
+    diagnostics.report(DiagCode::ResourceLimit, {file, "", 1, 1},
+                       {"the JSON nesting depth", std::to_string(depth), std::to_string(limits.maxDepth)});
+    return std::nullopt;
+  }
+  nlohmann::json root = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (root.is_discarded()) {
+    // Parse again with exceptions only on the error path, for nlohmann's message and offset.
+    try {
+      (void)nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+      auto [line, column] = lineColumnOfByte(text, e.byte > 0 ? e.byte - 1 : 0);
+      std::string what = e.what();
+      auto cut = what.find("] ");
+      diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column},
+                         {cut == std::string::npos ? what : what.substr(cut + 2)});
+    } catch (const std::exception& e) {
+      diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {e.what()});
+    }
+    return std::nullopt;
+  }
+  bool duplicate = false;
+  TextScanner scanner{text};
+  scanner.scan([](const std::string&, int, int) {},
+               [&](const std::string& pointer, int l, int c, const std::string& key) {
+                 diagnostics.report(DiagCode::DuplicateKey, {file, pointer, l, c}, {key});
+                 duplicate = true;
+               });
+  if (duplicate) return std::nullopt;
+  return JsonDocument(std::move(file), std::move(text), std::move(root));
+}
+
+}  // namespace wg

@@ -1,0 +1,47 @@
+// A parsed JSON file that remembers where every value came from, so that diagnostics
+// can name file:line:col for any JSON pointer.
+#pragma once
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <unordered_map>
+
+#include "compiler/diagnostic.hpp"
+
+namespace wg {
+
+class JsonDocument {
+ public:
+  JsonDocument(std::string file, std::string text, nlohmann::json root);
+
+  const std::string& file() const { return file_; }
+  const std::string& text() const { return text_; }
+  const nlohmann::json& root() const { return root_; }
+
+  // Location of the value at `pointer`; falls back to the nearest located ancestor.
+  SourceLocation locate(const std::string& pointer) const;
+
+ private:
+  std::string file_;
+  std::string text_;
+  nlohmann::json root_;
+  mutable std::unique_ptr<std::unordered_map<std::string, std::pair<int, int>>> index_;  // lazy
+};
+
+struct JsonLimits {
+  std::size_t maxBytes = 16u << 20;  // 16 MiB: far above any hand-written material
+  int maxDepth = 64;                 // graphs nest 4 deep; guards the recursive consumers
+};
+
+// Parses `text`; on malformed JSON, duplicate keys or exceeded limits reports
+// WG1001/WG1006/WG1007 and returns nullopt.
+std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text,
+                                              DiagnosticList& diagnostics,
+                                              const JsonLimits& limits = {});
+
+// Appends one RFC 6901 reference token to a pointer ("~" -> "~0", "/" -> "~1").
+std::string appendPointer(const std::string& pointer, std::string_view token);
+std::string appendPointer(const std::string& pointer, std::size_t index);
+
+}  // namespace wg

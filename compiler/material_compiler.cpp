@@ -1,0 +1,129 @@
+#include "compiler/material_compiler.hpp"
+
+#include "backends/stage_writer.hpp"
+#include "compiler/content_hash.hpp"
+#include "compiler/graph_loader.hpp"
+#include "compiler/ir_builder.hpp"
+#include "compiler/pass_pipeline.hpp"
+#include "compiler/reflection.hpp"
+
+namespace wg {
+
+const CompiledStage& CompiledMaterial::stage(ShaderLanguage language, ShaderStage stage) const {
+  for (const auto& s : stages)
+    if (s.language == language && s.stage == stage) return s;
+  return stages.front();
+}
+
+std::string fileStemFor(std::string_view name) {
+  constexpr std::size_t kMaxStem = 64;
+  std::string out;
+  for (char c : name) {
+    if (out.size() >= kMaxStem) break;
+    bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+    out += safe ? c : '_';
+  }
+  return out.empty() ? "material" : out;
+}
+
+std::string stageFileSuffix(ShaderLanguage language, ShaderStage stage) {
+  return std::string(stage == ShaderStage::Vertex ? "vert." : "frag.") + std::string(languageName(language));
+}
+
+std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string text, DiagnosticList& diagnostics) {
+  auto document = parseJsonDocument(file, std::move(text), diagnostics);
+  if (!document) return std::nullopt;
+  auto graph = loadMaterialGraph(*document, diagnostics);
+  if (!graph) return std::nullopt;
+  auto ir = buildIr(*graph, *document, diagnostics);
+  if (!ir) return std::nullopt;
+  runPassPipeline(*ir);
+  return ir;
+}
+
+namespace {
+
+std::string stageLabel(const CompiledStage& s) {
+  return std::string(languageName(s.language)) + (s.stage == ShaderStage::Vertex ? " vertex" : " fragment") + " shader";
+}
+
+// The SPIR-V must carry exactly the offsets the reflection publishes.
+std::string checkBlockOffsets(const SpirvWords& words, const MaterialInterface& mi) {
+  for (const auto& reflected : reflectUniformBlocks(words)) {
+    const UniformBlock* block = reflected.set == mi.frame.set && reflected.binding == mi.frame.binding ? &mi.frame
+                                : reflected.set == mi.material.set && reflected.binding == mi.material.binding
+                                    ? &mi.material
+                                    : nullptr;
+    if (!block) return "unexpected uniform block at set " + std::to_string(reflected.set);
+    for (const auto& member : reflected.members) {
+      bool found = false;
+      for (const auto& expected : block->members)
+        if (expected.identifier == member.name) {
+          found = true;
+          if (expected.offset != member.offset)
+            return "member " + member.name + " is at offset " + std::to_string(member.offset) + ", reflection says " +
+                   std::to_string(expected.offset);
+        }
+      if (!found) return "member " + member.name + " is not in the reflection";
+    }
+  }
+  return "";
+}
+
+bool compileStageToSpirv(CompiledStage& stage, const MaterialInterface& mi, const CompileOptions& options,
+                         const std::string& file, DiagnosticList& diagnostics) {
+  SpirvCompileResult compiled = compileToSpirv(stage.source, stage.language, stage.stage);
+  if (!compiled.ok) {
+    diagnostics.report(DiagCode::InternalShaderError, {file, "", 0, 0}, {stageLabel(stage), compiled.log});
+    return false;
+  }
+  if (std::string error = validateSpirv(compiled.words); !error.empty()) {
+    diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage), error});
+    return false;
+  }
+  if (std::string error = checkBlockOffsets(compiled.words, mi); !error.empty()) {
+    diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage), error});
+    return false;
+  }
+  stage.spirv = options.optimize ? optimizeSpirv(compiled.words) : std::move(compiled.words);
+  if (options.optimize) {
+    if (std::string error = validateSpirv(stage.spirv); !error.empty()) {
+      diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage) + " after spirv-opt", error});
+      return false;
+    }
+  }
+  stage.disassembly = disassembleSpirv(stage.spirv);
+  return true;
+}
+
+}  // namespace
+
+CompileResult compileMaterialText(const std::string& file, std::string text, const CompileOptions& options) {
+  CompileResult result;
+  auto ir = buildOptimizedIr(file, std::move(text), result.diagnostics);
+  if (!ir) return result;
+  CompiledMaterial material;
+  material.name = ir->name;
+  material.fileStem = fileStemFor(ir->name);
+  material.contentHash = contentHash(*ir);
+  MaterialInterface mi = buildMaterialInterface(*ir);
+  for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
+      material.stages.push_back({language, stage, writeStage(*ir, mi, syntaxFor(language), stage, material.contentHash), {}, {}});
+  if (options.emitSpirv)
+    for (auto& stage : material.stages)
+      if (!compileStageToSpirv(stage, mi, options, file, result.diagnostics)) return result;
+  material.reflectionJson = buildReflectionJson(*ir, mi, material.contentHash, material.fileStem);
+  material.ir = std::move(*ir);
+  result.material = std::move(material);
+  return result;
+}
+
+CompileResult compileMaterialFile(const std::string& path, const CompileOptions& options) {
+  CompileResult result;
+  auto text = readGraphFile(path, result.diagnostics);
+  if (!text) return result;
+  return compileMaterialText(path, std::move(*text), options);
+}
+
+}  // namespace wg

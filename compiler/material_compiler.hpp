@@ -1,0 +1,57 @@
+// The compiler's public entry: load -> validate -> IR -> passes -> backends -> SPIR-V.
+// Diagnostics come back as values; nothing here writes files or prints.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backends/shader_syntax.hpp"
+#include "backends/spirv/spirv_toolchain.hpp"
+#include "compiler/diagnostic.hpp"
+#include "compiler/ir.hpp"
+#include "compiler/material_interface.hpp"
+
+namespace wg {
+
+struct CompileOptions {
+  bool emitSpirv = true;
+  bool optimize = false;  // spirv-opt performance passes (-O)
+};
+
+struct CompiledStage {
+  ShaderLanguage language;
+  ShaderStage stage;
+  std::string source;
+  SpirvWords spirv;         // empty unless emitSpirv
+  std::string disassembly;  // of spirv
+};
+
+struct CompiledMaterial {
+  std::string name;         // as declared
+  std::string fileStem;     // safe for file names
+  std::string contentHash;
+  IrGraph ir;               // after the pass pipeline
+  std::vector<CompiledStage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag
+  std::string reflectionJson;
+
+  const CompiledStage& stage(ShaderLanguage language, ShaderStage stage) const;
+};
+
+struct CompileResult {
+  std::optional<CompiledMaterial> material;
+  DiagnosticList diagnostics;
+};
+
+CompileResult compileMaterialFile(const std::string& path, const CompileOptions& options);
+CompileResult compileMaterialText(const std::string& file, std::string text, const CompileOptions& options);
+
+// The front half alone (load, validate, IR, passes): for tools and tests.
+std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string text, DiagnosticList& diagnostics);
+
+// A material name made safe as a file name stem: [A-Za-z0-9_-], at most 64 bytes.
+std::string fileStemFor(std::string_view name);
+
+// Extension of a stage's source file: "vert.glsl", "frag.hlsl"...
+std::string stageFileSuffix(ShaderLanguage language, ShaderStage stage);
+
+}  // namespace wg

@@ -1,0 +1,67 @@
+// A material graph as declared in its JSON file, after structural checks and before
+// typing. Every element keeps its JSON pointer for diagnostics.
+#pragma once
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/json_document.hpp"
+#include "compiler/pbr_output.hpp"
+#include "compiler/value.hpp"
+#include "nodes/texture_sampling.hpp"
+
+namespace wg {
+
+// An input as written: a link "nodeId.output", or a literal.
+struct InputSource {
+  enum class Kind : std::uint8_t { Link, Literal, Text } kind = Kind::Literal;
+  std::string text;        // link, texture name or swizzle channels
+  nlohmann::json literal;  // number, bool or array
+  std::string pointer;
+};
+
+struct ParameterDecl {
+  std::string name;
+  ValueType type = ValueType::Float;
+  Value defaultValue;
+  std::optional<float> min, max;
+  std::string label;
+  std::string pointer;
+};
+
+struct TextureDecl {
+  std::string name;
+  std::string file;          // as written; empty for procedural textures
+  std::string resolvedPath;  // relative to the graph file
+  std::string generator;     // procedural generator name
+  std::uint32_t seed = 0;
+  int size = 256;
+  nlohmann::json options = nlohmann::json::object();
+  TextureWrap wrap = TextureWrap::Repeat;
+  TextureFilter filter = TextureFilter::Linear;
+  std::string pointer;
+};
+
+struct NodeDecl {
+  std::string id;
+  std::string op;
+  std::string param;  // for op "parameter"
+  std::vector<std::pair<std::string, InputSource>> inputs;
+  std::string pointer;
+};
+
+struct MaterialGraph {
+  std::string name;
+  std::string sourceFile;
+  std::vector<ParameterDecl> parameters;  // sorted by name
+  std::vector<TextureDecl> textures;      // sorted by name
+  std::vector<NodeDecl> nodes;            // file order
+  std::map<PbrField, InputSource> outputs;
+  std::optional<nlohmann::json> weather;
+  std::string weatherPointer;
+  float alphaCutoff = 0.5f;
+};
+
+}  // namespace wg

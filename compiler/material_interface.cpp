@@ -1,0 +1,109 @@
+#include "compiler/material_interface.hpp"
+
+#include <array>
+
+namespace wg {
+
+std::string_view interfaceTypeName(InterfaceType type) {
+  constexpr std::array<std::string_view, 6> kNames = {"float", "vec2", "vec3", "vec4", "uint", "mat4"};
+  return kNames[static_cast<int>(type)];
+}
+
+InterfaceType interfaceTypeOf(ValueType type) {
+  switch (type) {
+    case ValueType::Vec2: return InterfaceType::Vec2;
+    case ValueType::Vec3: return InterfaceType::Vec3;
+    case ValueType::Vec4: return InterfaceType::Vec4;
+    case ValueType::Bool: return InterfaceType::Uint;  // SPIR-V has no bool in uniform blocks
+    default: return InterfaceType::Float;
+  }
+}
+
+namespace {
+// std140 base alignment and size in bytes (GLSL 4.50 spec, section 7.6.2.2).
+std::pair<std::uint32_t, std::uint32_t> std140AlignAndSize(InterfaceType type) {
+  switch (type) {
+    case InterfaceType::Float:
+    case InterfaceType::Uint: return {4, 4};
+    case InterfaceType::Vec2: return {8, 8};
+    case InterfaceType::Vec3: return {16, 12};
+    case InterfaceType::Vec4: return {16, 16};
+    case InterfaceType::Mat4: return {16, 64};
+  }
+  return {4, 4};
+}
+constexpr std::uint32_t kStd140BlockAlignment = 16;
+}  // namespace
+
+void layoutStd140(UniformBlock& block) {
+  std::uint32_t offset = 0;
+  for (auto& member : block.members) {
+    auto [align, size] = std140AlignAndSize(member.type);
+    offset = (offset + align - 1) / align * align;
+    member.offset = offset;
+    member.size = size;
+    offset += size;
+  }
+  block.size = (offset + kStd140BlockAlignment - 1) / kStd140BlockAlignment * kStd140BlockAlignment;
+}
+
+MaterialInterface buildMaterialInterface(const IrGraph& graph) {
+  MaterialInterface mi;
+  mi.frame = frameBlock();
+  for (const auto& m : mi.frame.members) mi.globals.reserve(m.identifier);
+  mi.globals.reserve(mi.frame.identifier);
+
+  mi.material.name = "Material";
+  mi.material.identifier = "MaterialBlock";
+  mi.globals.reserve(mi.material.identifier);
+  mi.material.set = 1;
+  mi.material.binding = 0;
+  // Parameters are sorted by name, so identifiers and offsets are deterministic.
+  for (std::size_t i = 0; i < graph.parameters.size(); ++i) {
+    const auto& p = graph.parameters[i];
+    mi.material.members.push_back(
+        {p.name, mi.globals.make("mat_" + p.name), interfaceTypeOf(p.type), 0, 0, static_cast<int>(i)});
+  }
+  layoutStd140(mi.material);
+
+  std::uint32_t binding = 1;  // binding 0 of set 1 is the material block
+  for (std::size_t i = 0; i < graph.textures.size(); ++i) {
+    const auto& t = graph.textures[i];
+    TextureBinding b;
+    b.texture = static_cast<int>(i);
+    b.name = t.name;
+    b.textureIdentifier = mi.globals.make("tex_" + t.name);
+    b.samplerIdentifier = mi.globals.make("smp_" + t.name);
+    b.textureBinding = binding++;
+    b.samplerBinding = binding++;
+    mi.textures.push_back(std::move(b));
+  }
+
+  const std::array<std::pair<std::string_view, InterfaceType>, 5> kAttributes = {{
+      {"position", InterfaceType::Vec3},
+      {"normal", InterfaceType::Vec3},
+      {"tangent", InterfaceType::Vec4},
+      {"texcoord", InterfaceType::Vec2},
+      {"color", InterfaceType::Vec4},
+  }};
+  for (std::uint32_t i = 0; i < kAttributes.size(); ++i) {
+    auto [name, type] = kAttributes[i];
+    mi.vertexInputs.push_back({std::string(name), "in_" + std::string(name), type, i});
+    mi.globals.reserve(mi.vertexInputs.back().identifier);
+  }
+  const std::array<std::pair<std::string_view, InterfaceType>, 5> kVaryings = {{
+      {"worldPosition", InterfaceType::Vec3},
+      {"worldNormal", InterfaceType::Vec3},
+      {"worldTangent", InterfaceType::Vec4},
+      {"texcoord", InterfaceType::Vec2},
+      {"color", InterfaceType::Vec4},
+  }};
+  for (std::uint32_t i = 0; i < kVaryings.size(); ++i) {
+    auto [name, type] = kVaryings[i];
+    mi.varyings.push_back({std::string(name), "v_" + std::string(name), type, i});
+    mi.globals.reserve(mi.varyings.back().identifier);
+  }
+  return mi;
+}
+
+}  // namespace wg

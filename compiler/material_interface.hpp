@@ -1,0 +1,67 @@
+// The resource interface both languages share, computed once per material: the
+// frame/weather block, the material parameter block (std140), texture and sampler
+// bindings, vertex inputs and varyings. Backends print it; reflection publishes it.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "compiler/identifier.hpp"
+#include "compiler/ir.hpp"
+
+namespace wg {
+
+enum class InterfaceType : std::uint8_t { Float, Vec2, Vec3, Vec4, Uint, Mat4 };
+
+std::string_view interfaceTypeName(InterfaceType type);  // GLSL spelling, used in reflection
+InterfaceType interfaceTypeOf(ValueType type);          // bool is stored as uint
+
+struct BlockMember {
+  std::string name;        // logical name (parameter name as the user wrote it)
+  std::string identifier;  // emitted name
+  InterfaceType type;
+  std::uint32_t offset = 0;
+  std::uint32_t size = 0;
+  int parameter = -1;  // index into IrGraph::parameters for material members
+};
+
+struct UniformBlock {
+  std::string name;        // logical block name
+  std::string identifier;  // emitted block type name
+  std::uint32_t set = 0, binding = 0;
+  std::uint32_t size = 0;  // std140 size, a multiple of 16
+  std::vector<BlockMember> members;
+};
+
+struct TextureBinding {
+  int texture = -1;  // index into IrGraph::textures
+  std::string name;
+  std::string textureIdentifier, samplerIdentifier;
+  std::uint32_t set = 1, textureBinding = 0, samplerBinding = 0;
+};
+
+struct StageVariable {
+  std::string name;        // logical name
+  std::string identifier;  // emitted name
+  InterfaceType type;
+  std::uint32_t location = 0;
+};
+
+struct MaterialInterface {
+  UniformBlock frame;
+  UniformBlock material;  // empty members: the block is not emitted
+  std::vector<TextureBinding> textures;
+  std::vector<StageVariable> vertexInputs;
+  std::vector<StageVariable> varyings;
+  IdentifierScope globals;  // every global name above; stages copy it for locals
+};
+
+// Lays out members with std140 rules (which glslang also applies to HLSL cbuffers).
+void layoutStd140(UniformBlock& block);
+
+MaterialInterface buildMaterialInterface(const IrGraph& graph);
+
+// The frame and weather block every material shares (set 0, binding 0).
+UniformBlock frameBlock();
+
+}  // namespace wg

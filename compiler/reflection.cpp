@@ -1,0 +1,93 @@
+#include "compiler/reflection.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "backends/shader_syntax.hpp"
+#include "nodes/texture_sampling.hpp"
+
+namespace wg {
+
+namespace {
+using Json = nlohmann::ordered_json;
+
+Json valueJson(const Value& v) {
+  if (v.type == ValueType::Bool) return v.asBool();
+  if (v.width() == 1) return v.v[0];
+  Json a = Json::array();
+  for (int i = 0; i < v.width(); ++i) a.push_back(v.v[i]);
+  return a;
+}
+
+Json blockJson(const UniformBlock& block, const IrGraph* graph) {
+  Json members = Json::array();
+  for (const auto& m : block.members) {
+    Json j = {{"name", m.name}, {"identifier", m.identifier}, {"type", interfaceTypeName(m.type)},
+              {"offset", m.offset}, {"size", m.size}};
+    if (graph && m.parameter >= 0) {
+      const auto& p = graph->parameters[static_cast<std::size_t>(m.parameter)];
+      j["valueType"] = typeName(p.type);
+      j["default"] = valueJson(p.defaultValue);
+      if (p.min) j["min"] = *p.min;
+      if (p.max) j["max"] = *p.max;
+      if (!p.label.empty()) j["label"] = p.label;
+    }
+    members.push_back(std::move(j));
+  }
+  return {{"name", block.name}, {"identifier", block.identifier}, {"set", block.set},
+          {"binding", block.binding}, {"size", block.size}, {"members", std::move(members)}};
+}
+
+Json stageVariablesJson(const std::vector<StageVariable>& vars) {
+  Json out = Json::array();
+  for (const auto& v : vars)
+    out.push_back({{"name", v.name}, {"identifier", v.identifier}, {"location", v.location},
+                   {"type", interfaceTypeName(v.type)}});
+  return out;
+}
+}  // namespace
+
+std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& mi, const std::string& hash,
+                                const std::string& fileStem) {
+  Json textures = Json::array();
+  for (const auto& b : mi.textures) {
+    const TextureDecl& t = graph.textures[static_cast<std::size_t>(b.texture)];
+    Json source;
+    if (!t.file.empty()) {
+      source = {{"kind", "file"}, {"file", t.file}};
+    } else {
+      source = {{"kind", "procedural"}, {"generator", t.generator}, {"seed", t.seed}, {"size", t.size},
+                {"options", Json::parse(t.options.dump())}};
+    }
+    textures.push_back({{"name", b.name}, {"set", b.set}, {"binding", b.textureBinding},
+                        {"samplerBinding", b.samplerBinding}, {"textureIdentifier", b.textureIdentifier},
+                        {"samplerIdentifier", b.samplerIdentifier}, {"wrap", textureWrapName(t.wrap)},
+                        {"filter", textureFilterName(t.filter)}, {"source", std::move(source)}});
+  }
+  Json files = Json::object();
+  for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+      std::string lang(languageName(language));
+      std::string st = stage == ShaderStage::Vertex ? "vert" : "frag";
+      files[lang + "." + st] = {{"source", fileStem + "." + st + "." + lang},
+                                {"spirv", fileStem + "." + lang + "." + st + ".spv"}};
+    }
+  Json root = {
+      {"weathergenVersion", WEATHERGEN_VERSION},
+      {"material", graph.name},
+      {"contentHash", hash},
+      {"weatherPreset", graph.weatherPreset},
+      {"alphaTested", graph.alphaTested},
+      {"alphaCutoff", graph.alphaCutoff},
+      {"blocks", Json::array({blockJson(mi.frame, nullptr), blockJson(mi.material, &graph)})},
+      {"textures", std::move(textures)},
+      {"vertexInputs", stageVariablesJson(mi.vertexInputs)},
+      {"varyings", stageVariablesJson(mi.varyings)},
+      {"fragmentOutputs", Json::array({{{"name", "color"}, {"location", 0}, {"type", "vec4"}}})},
+      {"debugViews", Json::array({{{"id", 0}, {"name", "lit"}}, {{"id", 1}, {"name", "albedo"}},
+                                  {{"id", 2}, {"name", "roughness"}}, {{"id", 3}, {"name", "normal"}}})},
+      {"files", std::move(files)},
+  };
+  return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace wg

@@ -1,0 +1,30 @@
+#include "compiler/value.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace wg {
+
+Value Value::convertedTo(ValueType target) const {
+  if (type == target) return *this;
+  Value out{target, {}};
+  for (int i = 0; i < componentCount(target); ++i) out.v[i] = at(i);
+  return out;
+}
+
+bool Value::allFinite() const {
+  for (int i = 0; i < width(); ++i)
+    if (!std::isfinite(v[i])) return false;
+  return true;
+}
+
+std::string formatFloat(float x) {
+  if (x == 0.f) x = 0.f;  // folds -0 into 0 so equal constants print alike
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, x);
+  std::string s(buf, res.ptr);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+}  // namespace wg

@@ -1,0 +1,14 @@
+#include "nodes/core_library.hpp"
+
+namespace wg {
+
+// A zero vector stays zero instead of becoming NaN (degenerate normals, V + L = 0).
+const ShaderLibrary kCoreLibrary = {
+    "core",
+    R"(vec3 wg_safe_normalize(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-12)); }
+)",
+    R"(float3 wg_safe_normalize(float3 v) { return v * rsqrt(max(dot(v, v), 1e-12)); }
+)",
+    {}};
+
+}  // namespace wg

@@ -1,0 +1,132 @@
+#include "nodes/image_file.hpp"
+
+#include <stb_image.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string_view>
+#include <system_error>
+
+namespace wg {
+
+namespace {
+
+constexpr std::string_view kUnsupportedFormat =
+    "unsupported image format (supported: PNG, JPEG, TGA, BMP)";
+
+enum class Format { Png, Jpeg, Tga, Bmp, Other };
+
+// stb_image also decodes GIF, PSD, HDR, PIC and PNM; the format is decided here from the
+// file's signature so that only the four formats the project documents are accepted.
+constexpr std::array<unsigned char, 8> kPngSignature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+constexpr std::array<unsigned char, 3> kJpegSignature = {0xFF, 0xD8, 0xFF};  // SOI + marker
+constexpr std::array<unsigned char, 2> kBmpSignature = {'B', 'M'};
+
+template <std::size_t N>
+bool startsWith(const std::vector<unsigned char>& head, const std::array<unsigned char, N>& sig) {
+  return head.size() >= N && std::equal(sig.begin(), sig.end(), head.begin());
+}
+
+bool hasTgaExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".tga";
+}
+
+std::vector<unsigned char> readHead(const std::string& path) {
+  std::vector<unsigned char> head(kPngSignature.size());  // the longest signature
+  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) return {};
+  head.resize(std::fread(head.data(), 1, head.size(), file.get()));
+  return head;
+}
+
+Format detectFormat(const std::string& path) {
+  const std::vector<unsigned char> head = readHead(path);
+  if (startsWith(head, kPngSignature)) return Format::Png;
+  if (startsWith(head, kJpegSignature)) return Format::Jpeg;
+  if (startsWith(head, kBmpSignature)) return Format::Bmp;
+  // TGA has no signature; trust the extension and let stb_image check the header.
+  if (hasTgaExtension(path)) return Format::Tga;
+  return Format::Other;
+}
+
+std::string_view formatName(Format format) {
+  switch (format) {
+    case Format::Png: return "PNG";
+    case Format::Jpeg: return "JPEG";
+    case Format::Tga: return "TGA";
+    case Format::Bmp: return "BMP";
+    case Format::Other: break;
+  }
+  return "image";
+}
+
+std::string stbReason() {
+  const char* reason = stbi_failure_reason();
+  return reason ? reason : "unknown error";
+}
+
+}  // namespace
+
+ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
+                               std::string& error) {
+  width = height = 0;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    error = std::filesystem::exists(path, ec) ? "not a regular file" : "file not found";
+    return ImageFileStatus::NotFound;
+  }
+  const Format format = detectFormat(path);
+  if (format == Format::Other) {
+    error = kUnsupportedFormat;
+    return ImageFileStatus::Unsupported;
+  }
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info(path.c_str(), &w, &h, &channels)) {
+    if (format == Format::Tga) {
+      error = kUnsupportedFormat;  // a .tga name on something that is not a TGA
+    } else {
+      error = "cannot read " + std::string(formatName(format)) + " header: " + stbReason();
+    }
+    return ImageFileStatus::Unsupported;
+  }
+  if (w > kMaxImageFileDimension || h > kMaxImageFileDimension) {
+    width = w;  // reported so the caller can show the actual size
+    height = h;
+    error = "image is " + std::to_string(w) + "x" + std::to_string(h) + ", larger than the " +
+            std::to_string(kMaxImageFileDimension) + "x" + std::to_string(kMaxImageFileDimension) +
+            " limit; resize it";
+    return ImageFileStatus::TooLarge;
+  }
+  width = w;
+  height = h;
+  return ImageFileStatus::Ok;
+}
+
+std::optional<Image> loadImageFile(const std::string& path, std::string& error) {
+  int width = 0, height = 0;
+  if (probeImageFile(path, width, height, error) != ImageFileStatus::Ok) return std::nullopt;
+  int w = 0, h = 0, fileChannels = 0;
+  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+      stbi_load(path.c_str(), &w, &h, &fileChannels, kImageChannels), &stbi_image_free);
+  if (!pixels) {
+    error = "cannot decode image: " + stbReason();
+    return std::nullopt;
+  }
+  if (w != width || h != height) {  // the file changed between probe and load
+    error = "image size changed while loading";
+    return std::nullopt;
+  }
+  Image image = Image::blank(w, h);
+  std::memcpy(image.rgba.data(), pixels.get(), image.rgba.size());
+  return image;
+}
+
+}  // namespace wg

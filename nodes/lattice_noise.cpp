@@ -1,0 +1,136 @@
+#include "nodes/lattice_noise.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wg {
+
+namespace {
+// Odd 32-bit multipliers from Hoskins' integer "hash without sine"; they decorrelate
+// neighbouring cells well with two multiplies and one xor.
+constexpr std::uint32_t kHashX = 1597334673u;
+constexpr std::uint32_t kHashY = 3812015801u;
+// PCG's LCG step, used to draw a second independent number from one hash.
+constexpr std::uint32_t kLcgMultiplier = 747796405u;
+constexpr std::uint32_t kLcgIncrement = 2891336453u;
+// The top 24 bits convert to float exactly.
+constexpr float kInv24Bit = 1.0f / 16777216.0f;
+
+float toUnit(std::uint32_t n) { return static_cast<float>(n >> 8) * kInv24Bit; }
+float quintic(float f) { return f * f * f * (f * (f * 6.f - 15.f) + 10.f); }
+float mixf(float a, float b, float t) { return a + (b - a) * t; }
+std::int32_t cellOf(float x) { return static_cast<std::int32_t>(std::floor(x)); }
+}  // namespace
+
+std::uint32_t latticeHash(std::int32_t x, std::int32_t y) {
+  std::uint32_t qx = static_cast<std::uint32_t>(x) * kHashX;
+  std::uint32_t qy = static_cast<std::uint32_t>(y) * kHashY;
+  return (qx ^ qy) * kHashX;
+}
+
+float valueNoise(float x, float y) {
+  float cx = std::floor(x), cy = std::floor(y);
+  float fx = x - cx, fy = y - cy;
+  float ux = quintic(fx), uy = quintic(fy);
+  std::int32_t ix = cellOf(x), iy = cellOf(y);
+  float a = toUnit(latticeHash(ix, iy));
+  float b = toUnit(latticeHash(ix + 1, iy));
+  float c = toUnit(latticeHash(ix, iy + 1));
+  float d = toUnit(latticeHash(ix + 1, iy + 1));
+  return mixf(mixf(a, b, ux), mixf(c, d, ux), uy);
+}
+
+namespace {
+float gradientDot(std::int32_t ix, std::int32_t iy, float dx, float dy) {
+  std::uint32_t n = latticeHash(ix, iy);
+  float gx = toUnit(n) * 2.f - 1.f;
+  float gy = toUnit(n * kLcgMultiplier + kLcgIncrement) * 2.f - 1.f;
+  return gx * dx + gy * dy;
+}
+}  // namespace
+
+float gradientNoise(float x, float y) {
+  float cx = std::floor(x), cy = std::floor(y);
+  float fx = x - cx, fy = y - cy;
+  float ux = quintic(fx), uy = quintic(fy);
+  std::int32_t ix = cellOf(x), iy = cellOf(y);
+  float a = gradientDot(ix, iy, fx, fy);
+  float b = gradientDot(ix + 1, iy, fx - 1.f, fy);
+  float c = gradientDot(ix, iy + 1, fx, fy - 1.f);
+  float d = gradientDot(ix + 1, iy + 1, fx - 1.f, fy - 1.f);
+  return std::clamp(0.5f + 0.5f * mixf(mixf(a, b, ux), mixf(c, d, ux), uy), 0.f, 1.f);
+}
+
+const ShaderLibrary kLatticeNoiseLibrary = {
+    "lattice_noise",
+    R"(uint wg_lattice_hash(ivec2 cell) {
+  uvec2 q = uvec2(cell) * uvec2(1597334673u, 3812015801u);
+  return (q.x ^ q.y) * 1597334673u;
+}
+float wg_hash_to_unit(uint n) { return float(n >> 8u) * (1.0 / 16777216.0); }
+vec2 wg_quintic(vec2 f) { return f * f * f * (f * (f * 6.0 - 15.0) + 10.0); }
+float wg_value_noise(vec2 p) {
+  vec2 cell = floor(p);
+  vec2 f = p - cell;
+  vec2 u = wg_quintic(f);
+  ivec2 i = ivec2(cell);
+  float a = wg_hash_to_unit(wg_lattice_hash(i));
+  float b = wg_hash_to_unit(wg_lattice_hash(i + ivec2(1, 0)));
+  float c = wg_hash_to_unit(wg_lattice_hash(i + ivec2(0, 1)));
+  float d = wg_hash_to_unit(wg_lattice_hash(i + ivec2(1, 1)));
+  return mix(mix(a, b, u.x), mix(c, d, u.x), u.y);
+}
+float wg_gradient_dot(ivec2 i, vec2 d) {
+  uint n = wg_lattice_hash(i);
+  vec2 g = vec2(wg_hash_to_unit(n), wg_hash_to_unit(n * 747796405u + 2891336453u)) * 2.0 - 1.0;
+  return g.x * d.x + g.y * d.y;
+}
+float wg_gradient_noise(vec2 p) {
+  vec2 cell = floor(p);
+  vec2 f = p - cell;
+  vec2 u = wg_quintic(f);
+  ivec2 i = ivec2(cell);
+  float a = wg_gradient_dot(i, f);
+  float b = wg_gradient_dot(i + ivec2(1, 0), f - vec2(1.0, 0.0));
+  float c = wg_gradient_dot(i + ivec2(0, 1), f - vec2(0.0, 1.0));
+  float d = wg_gradient_dot(i + ivec2(1, 1), f - vec2(1.0, 1.0));
+  return clamp(0.5 + 0.5 * mix(mix(a, b, u.x), mix(c, d, u.x), u.y), 0.0, 1.0);
+}
+)",
+    R"(uint wg_lattice_hash(int2 cell) {
+  uint2 q = uint2(cell) * uint2(1597334673u, 3812015801u);
+  return (q.x ^ q.y) * 1597334673u;
+}
+float wg_hash_to_unit(uint n) { return float(n >> 8u) * (1.0 / 16777216.0); }
+float2 wg_quintic(float2 f) { return f * f * f * (f * (f * 6.0 - 15.0) + 10.0); }
+float wg_value_noise(float2 p) {
+  float2 cell = floor(p);
+  float2 f = p - cell;
+  float2 u = wg_quintic(f);
+  int2 i = int2(cell);
+  float a = wg_hash_to_unit(wg_lattice_hash(i));
+  float b = wg_hash_to_unit(wg_lattice_hash(i + int2(1, 0)));
+  float c = wg_hash_to_unit(wg_lattice_hash(i + int2(0, 1)));
+  float d = wg_hash_to_unit(wg_lattice_hash(i + int2(1, 1)));
+  return lerp(lerp(a, b, u.x), lerp(c, d, u.x), u.y);
+}
+float wg_gradient_dot(int2 i, float2 d) {
+  uint n = wg_lattice_hash(i);
+  float2 g = float2(wg_hash_to_unit(n), wg_hash_to_unit(n * 747796405u + 2891336453u)) * 2.0 - 1.0;
+  return g.x * d.x + g.y * d.y;
+}
+float wg_gradient_noise(float2 p) {
+  float2 cell = floor(p);
+  float2 f = p - cell;
+  float2 u = wg_quintic(f);
+  int2 i = int2(cell);
+  float a = wg_gradient_dot(i, f);
+  float b = wg_gradient_dot(i + int2(1, 0), f - float2(1.0, 0.0));
+  float c = wg_gradient_dot(i + int2(0, 1), f - float2(0.0, 1.0));
+  float d = wg_gradient_dot(i + int2(1, 1), f - float2(1.0, 1.0));
+  return clamp(0.5 + 0.5 * lerp(lerp(a, b, u.x), lerp(c, d, u.x), u.y), 0.0, 1.0);
+}
+)",
+    {}};
+
+}  // namespace wg

@@ -1,0 +1,110 @@
+// One node op, defined once: typed signature with defaults, CPU semantics (constant
+// folding and the CPU evaluator) and code templates for each backend.
+#pragma once
+#include <array>
+#include <limits>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "compiler/value.hpp"
+
+namespace wg {
+
+// A port's declared type. Generic is "T": float, vec2, vec3 or vec4, the same T for
+// every generic port of the node (a float may feed any of them by splat). Text is a
+// static string setting (e.g. swizzle channels); TextureName names a declared texture.
+enum class PortType : std::uint8_t { Float, Vec2, Vec3, Vec4, Bool, Generic, TextureName, Text };
+
+struct PortSpec {
+  std::string_view name;
+  PortType type;
+  std::optional<Value> defaultValue;  // nullopt: the input is required
+  float min = -std::numeric_limits<float>::infinity();  // literal range, checked at load
+  float max = std::numeric_limits<float>::infinity();
+};
+
+// An output reads the op's value through an accessor: "" for the whole value or a
+// swizzle such as ".rgb" or ".x". Accessors are spelled alike in GLSL and HLSL and the
+// CPU evaluator applies the same swizzle, so multi-output ops share one temporary.
+struct OutputSpec {
+  std::string_view name;
+  std::string_view accessor;
+};
+
+// Geometry and time the CPU evaluator feeds to ops that read the surface.
+struct SurfacePoint {
+  std::array<float, 3> worldPosition{0.f, 0.f, 0.f};
+  std::array<float, 3> worldNormal{0.f, 1.f, 0.f};
+  std::array<float, 4> tangent{1.f, 0.f, 0.f, 1.f};
+  std::array<float, 2> texcoord{0.f, 0.f};
+  std::array<float, 4> vertexColor{1.f, 1.f, 1.f, 1.f};
+  float time = 0.f;
+};
+
+struct TextureSampler;  // nodes/texture_sampling.hpp
+
+struct EvalContext {
+  const SurfacePoint* surface = nullptr;
+  const TextureSampler* textures = nullptr;  // null while constant folding
+  const std::vector<Value>* parameters = nullptr;
+  // Node-level settings (resolved by the compiler).
+  std::string_view text;  // swizzle channels
+  int parameterIndex = -1;
+};
+
+using CpuEval = Value (*)(const Value* inputs, const EvalContext& context);
+
+// Shader library code shared by ops (noise, normal blending...). Emitted once, in
+// dependency order, only when an op that needs it is used.
+struct ShaderLibrary {
+  std::string_view name;
+  std::string_view glsl;
+  std::string_view hlsl;
+  std::vector<const ShaderLibrary*> dependencies;
+};
+
+enum class OpPurity : std::uint8_t {
+  Pure,     // depends only on its inputs: folded when they are all constant
+  Varying,  // reads geometry, time, textures or parameters: never folded
+};
+
+// How the op's value type is found.
+enum class ValueRule : std::uint8_t {
+  Fixed,        // OpDef::valueType
+  Generic,      // T, the widest generic input
+  SwizzleText,  // as many components as the "channels" text
+  Parameter,    // the referenced parameter's type
+};
+
+struct OpDef {
+  std::string_view name;
+  std::string_view category;
+  std::string_view summary;
+  std::vector<PortSpec> inputs;
+  ValueRule valueRule = ValueRule::Generic;
+  ValueType valueType = ValueType::Float;  // for ValueRule::Fixed
+  // The value's expression: "{port}" is an input expression, "{T}" the value type,
+  // "{@symbol}" a symbol the shader writer provides (geometry, time, bindings).
+  std::string_view glsl;
+  std::string_view hlsl;  // empty: same text as glsl
+  std::vector<OutputSpec> outputs;
+  CpuEval eval = nullptr;
+  OpPurity purity = OpPurity::Pure;
+  std::vector<const ShaderLibrary*> libraries;
+
+  const PortSpec* findInput(std::string_view port) const;
+  int findOutput(std::string_view output) const;
+  std::string_view code(bool hlslTarget) const { return hlslTarget && !hlsl.empty() ? hlsl : glsl; }
+};
+
+// The single "out" output most ops have.
+inline std::vector<OutputSpec> singleOutput() { return {{"out", ""}}; }
+
+// Applies an accessor (".xyz", ".r", "") to a CPU value.
+Value applyAccessor(const Value& value, std::string_view accessor);
+// Component count an accessor yields from a value of `width` components, or 0 when
+// it reads a component the value lacks.
+int accessorWidth(std::string_view accessor, int width);
+
+}  // namespace wg

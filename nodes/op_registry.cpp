@@ -1,0 +1,92 @@
+#include "nodes/op_registry.hpp"
+
+#include <algorithm>
+
+namespace wg {
+
+const PortSpec* OpDef::findInput(std::string_view port) const {
+  for (const auto& p : inputs)
+    if (p.name == port) return &p;
+  return nullptr;
+}
+
+int OpDef::findOutput(std::string_view output) const {
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    if (outputs[i].name == output) return static_cast<int>(i);
+  return -1;
+}
+
+namespace {
+struct Registry {
+  std::vector<OpDef> ops;
+  std::vector<const OpDef*> sorted;
+
+  Registry() {
+    appendMathOps(ops);
+    appendVectorOps(ops);
+    appendGeometryOps(ops);
+    appendTextureOps(ops);
+    appendProceduralOps(ops);
+    appendNormalMapOps(ops);
+    for (const auto& op : ops) sorted.push_back(&op);
+    std::sort(sorted.begin(), sorted.end(),
+              [](const OpDef* a, const OpDef* b) { return a->name < b->name; });
+  }
+};
+
+const Registry& registry() {
+  static const Registry instance;  // immutable after first use; thread-safe init
+  return instance;
+}
+}  // namespace
+
+const OpDef* findOp(std::string_view name) {
+  const auto& sorted = registry().sorted;
+  auto it = std::lower_bound(sorted.begin(), sorted.end(), name,
+                             [](const OpDef* op, std::string_view n) { return op->name < n; });
+  return (it != sorted.end() && (*it)->name == name) ? *it : nullptr;
+}
+
+std::span<const OpDef* const> allOps() { return registry().sorted; }
+
+std::vector<std::string_view> opNames() {
+  std::vector<std::string_view> names;
+  for (const OpDef* op : allOps()) names.push_back(op->name);
+  return names;
+}
+
+}  // namespace wg
+
+namespace wg {
+
+namespace {
+int swizzleIndex(char c) {
+  switch (c) {
+    case 'x': case 'r': return 0;
+    case 'y': case 'g': return 1;
+    case 'z': case 'b': return 2;
+    case 'w': case 'a': return 3;
+    default: return -1;
+  }
+}
+}  // namespace
+
+int accessorWidth(std::string_view accessor, int width) {
+  if (accessor.empty()) return width;
+  if (accessor.size() < 2 || accessor.size() > 5 || accessor[0] != '.') return 0;
+  for (char c : accessor.substr(1)) {
+    int index = swizzleIndex(c);
+    if (index < 0 || index >= width) return 0;
+  }
+  return static_cast<int>(accessor.size() - 1);
+}
+
+Value applyAccessor(const Value& value, std::string_view accessor) {
+  if (accessor.empty()) return value;
+  int width = accessorWidth(accessor, value.width());
+  Value out{floatVectorOfWidth(width), {}};
+  for (int i = 0; i < width; ++i) out.v[i] = value.v[swizzleIndex(accessor[i + 1])];
+  return out;
+}
+
+}  // namespace wg

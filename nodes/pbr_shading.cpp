@@ -1,0 +1,175 @@
+#include "nodes/pbr_shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wg {
+
+namespace {
+// UE4's energy normalisation of Burley diffuse (Lagarde & de Rousiers 2014): the
+// retro-reflection can exceed 1, so scale by 1/1.51 at full roughness.
+constexpr float kBurleyEnergyScale = 1.f / 1.51f;
+// Spherical-Gaussian fit of (1 - VoH)^5 used by UE4 (eq. 2.5).
+constexpr float kSgA = -5.55473f, kSgB = -6.98316f;
+// UE4: F0 = 0.08 * specular, so the default specular 0.5 gives 0.04.
+constexpr float kSpecularToF0 = 0.08f;
+// Guards for n.v and the 4 (n.l)(n.v) denominator at grazing angles.
+constexpr float kMinNoV = 1e-4f;
+
+float pow5(float x) { return x * x * x * x * x; }
+float dot3(const std::array<float, 3>& a, const std::array<float, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+}  // namespace
+
+float burleyDiffuseFactor(float roughness, float NoL, float NoV, float LoH) {
+  float fd90 = 0.5f + 2.f * roughness * LoH * LoH;
+  float lightScatter = 1.f + (fd90 - 1.f) * pow5(1.f - NoL);
+  float viewScatter = 1.f + (fd90 - 1.f) * pow5(1.f - NoV);
+  float energy = 1.f + (kBurleyEnergyScale - 1.f) * roughness;
+  return lightScatter * viewScatter * energy;
+}
+
+float ggxDistribution(float NoH, float roughness) {
+  float a = roughness * roughness;
+  float a2 = a * a;
+  float d = NoH * NoH * (a2 - 1.f) + 1.f;
+  return a2 / (kPi * d * d);
+}
+
+float smithSchlickG1(float NoX, float k) { return NoX / (NoX * (1.f - k) + k); }
+
+float smithSchlickG(float NoL, float NoV, float roughness) {
+  float k = (roughness + 1.f) * (roughness + 1.f) / 8.f;
+  return smithSchlickG1(NoL, k) * smithSchlickG1(NoV, k);
+}
+
+float fresnelSchlickSG(float f0, float VoH) {
+  return f0 + (1.f - f0) * std::exp2((kSgA * VoH + kSgB) * VoH);
+}
+
+std::array<float, 3> shadeSurface(const ShadingInputs& in) {
+  float roughness = std::clamp(in.roughness, kMinShadingRoughness, 1.f);
+  std::array<float, 3> h{in.toViewer[0] + in.toSun[0], in.toViewer[1] + in.toSun[1], in.toViewer[2] + in.toSun[2]};
+  float hl = std::sqrt(std::max(dot3(h, h), 1e-12f));
+  for (auto& c : h) c /= hl;
+  float NoL = std::clamp(dot3(in.normal, in.toSun), 0.f, 1.f);
+  float NoV = std::max(dot3(in.normal, in.toViewer), kMinNoV);
+  float NoH = std::clamp(dot3(in.normal, h), 0.f, 1.f);
+  float VoH = std::clamp(dot3(in.toViewer, h), 0.f, 1.f);
+  float diffuseTerm = burleyDiffuseFactor(roughness, NoL, NoV, VoH) / kPi;
+  float dg = ggxDistribution(NoH, roughness) * smithSchlickG(NoL, NoV, roughness) / std::max(4.f * NoL * NoV, kMinNoV);
+  std::array<float, 3> out{};
+  for (int c = 0; c < 3; ++c) {
+    float diffuseColor = in.baseColor[c] * (1.f - in.metallic);
+    float f0 = kSpecularToF0 * in.specular + (in.baseColor[c] - kSpecularToF0 * in.specular) * in.metallic;
+    float spec = dg * fresnelSchlickSG(f0, VoH);
+    out[c] = (diffuseColor * diffuseTerm + spec) * in.sunRadiance[c] * NoL +
+             in.ambient[c] * diffuseColor * in.ambientOcclusion + in.emissive[c];
+  }
+  return out;
+}
+
+const ShaderLibrary kPbrShadingLibrary = {
+    "pbr_shading",
+    R"(// Seed 000, eq. 2.1-2.5: the UE4 shading model.
+float wg_pow5(float x) { return x * x * x * x * x; }
+// Eq. 2.1: Burley diffuse with FD90 = 0.5 + 2 r cos^2(theta_d), energy-normalised.
+float wg_burley_diffuse(float roughness, float NoL, float NoV, float LoH) {
+  float fd90 = 0.5 + 2.0 * roughness * LoH * LoH;
+  float lightScatter = 1.0 + (fd90 - 1.0) * wg_pow5(1.0 - NoL);
+  float viewScatter = 1.0 + (fd90 - 1.0) * wg_pow5(1.0 - NoV);
+  return lightScatter * viewScatter * (1.0 + (0.66225166 - 1.0) * roughness);
+}
+// Eq. 2.3: GGX with alpha = roughness^2.
+float wg_ggx(float NoH, float roughness) {
+  float a = roughness * roughness;
+  float a2 = a * a;
+  float d = NoH * NoH * (a2 - 1.0) + 1.0;
+  return a2 / (3.14159265 * d * d);
+}
+// Eq. 2.4: Schlick-Smith with k = (r + 1)^2 / 8.
+float wg_smith_g(float NoL, float NoV, float roughness) {
+  float k = (roughness + 1.0) * (roughness + 1.0) / 8.0;
+  return (NoL / (NoL * (1.0 - k) + k)) * (NoV / (NoV * (1.0 - k) + k));
+}
+// Eq. 2.5: spherical-Gaussian Schlick Fresnel.
+vec3 wg_fresnel(vec3 f0, float VoH) {
+  return f0 + (1.0 - f0) * exp2((-5.55473 * VoH - 6.98316) * VoH);
+}
+// Eq. 2.2 plus Burley diffuse, sun and sky ambient, metallic workflow.
+vec3 wg_shade(vec3 baseColor, float metallic, float roughness, float specular, float ao, vec3 emissive,
+              vec3 N, vec3 V) {
+  roughness = clamp(roughness, 0.02, 1.0);
+  vec3 L = frame_sunDirection;
+  vec3 H = wg_safe_normalize(V + L);
+  float NoL = clamp(dot(N, L), 0.0, 1.0);
+  float NoV = max(dot(N, V), 1e-4);
+  float NoH = clamp(dot(N, H), 0.0, 1.0);
+  float VoH = clamp(dot(V, H), 0.0, 1.0);
+  vec3 diffuseColor = baseColor * (1.0 - metallic);
+  vec3 f0 = mix(vec3(0.08 * specular), baseColor, metallic);
+  float dg = wg_ggx(NoH, roughness) * wg_smith_g(NoL, NoV, roughness) / max(4.0 * NoL * NoV, 1e-4);
+  vec3 direct = (diffuseColor * (wg_burley_diffuse(roughness, NoL, NoV, VoH) / 3.14159265) + dg * wg_fresnel(f0, VoH));
+  vec3 sun = frame_sunColor * frame_sunIntensity;
+  vec3 sky = frame_skyColor * frame_ambientIntensity;
+  return direct * sun * NoL + sky * diffuseColor * ao + emissive;
+}
+// Filmic tone curve (Narkowicz's ACES fit) so renders are viewable as 8-bit images.
+vec3 wg_tonemap(vec3 c) {
+  c *= frame_exposure;
+  return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
+}
+)",
+    R"(// Seed 000, eq. 2.1-2.5: the UE4 shading model.
+float wg_pow5(float x) { return x * x * x * x * x; }
+// Eq. 2.1: Burley diffuse with FD90 = 0.5 + 2 r cos^2(theta_d), energy-normalised.
+float wg_burley_diffuse(float roughness, float NoL, float NoV, float LoH) {
+  float fd90 = 0.5 + 2.0 * roughness * LoH * LoH;
+  float lightScatter = 1.0 + (fd90 - 1.0) * wg_pow5(1.0 - NoL);
+  float viewScatter = 1.0 + (fd90 - 1.0) * wg_pow5(1.0 - NoV);
+  return lightScatter * viewScatter * (1.0 + (0.66225166 - 1.0) * roughness);
+}
+// Eq. 2.3: GGX with alpha = roughness^2.
+float wg_ggx(float NoH, float roughness) {
+  float a = roughness * roughness;
+  float a2 = a * a;
+  float d = NoH * NoH * (a2 - 1.0) + 1.0;
+  return a2 / (3.14159265 * d * d);
+}
+// Eq. 2.4: Schlick-Smith with k = (r + 1)^2 / 8.
+float wg_smith_g(float NoL, float NoV, float roughness) {
+  float k = (roughness + 1.0) * (roughness + 1.0) / 8.0;
+  return (NoL / (NoL * (1.0 - k) + k)) * (NoV / (NoV * (1.0 - k) + k));
+}
+// Eq. 2.5: spherical-Gaussian Schlick Fresnel.
+float3 wg_fresnel(float3 f0, float VoH) {
+  return f0 + (1.0 - f0) * exp2((-5.55473 * VoH - 6.98316) * VoH);
+}
+// Eq. 2.2 plus Burley diffuse, sun and sky ambient, metallic workflow.
+float3 wg_shade(float3 baseColor, float metallic, float roughness, float specular, float ao, float3 emissive,
+                float3 N, float3 V) {
+  roughness = clamp(roughness, 0.02, 1.0);
+  float3 L = frame_sunDirection;
+  float3 H = wg_safe_normalize(V + L);
+  float NoL = clamp(dot(N, L), 0.0, 1.0);
+  float NoV = max(dot(N, V), 1e-4);
+  float NoH = clamp(dot(N, H), 0.0, 1.0);
+  float VoH = clamp(dot(V, H), 0.0, 1.0);
+  float3 diffuseColor = baseColor * (1.0 - metallic);
+  float3 f0 = lerp((float3)(0.08 * specular), baseColor, metallic);
+  float dg = wg_ggx(NoH, roughness) * wg_smith_g(NoL, NoV, roughness) / max(4.0 * NoL * NoV, 1e-4);
+  float3 direct = (diffuseColor * (wg_burley_diffuse(roughness, NoL, NoV, VoH) / 3.14159265) + dg * wg_fresnel(f0, VoH));
+  float3 sun = frame_sunColor * frame_sunIntensity;
+  float3 sky = frame_skyColor * frame_ambientIntensity;
+  return direct * sun * NoL + sky * diffuseColor * ao + emissive;
+}
+// Filmic tone curve (Narkowicz's ACES fit) so renders are viewable as 8-bit images.
+float3 wg_tonemap(float3 c) {
+  c *= frame_exposure;
+  return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
+}
+)",
+    {}};
+
+}  // namespace wg

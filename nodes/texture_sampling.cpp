@@ -1,0 +1,114 @@
+#include "nodes/texture_sampling.hpp"
+
+#include <cmath>
+
+namespace wg {
+
+namespace {
+
+constexpr float kTexelCentre = 0.5f;  // texel i covers [i, i+1); its centre is i + 0.5
+
+// Applies the wrap mode to integer texel coordinate i (held in a double so that any
+// float coordinate converts without overflow; every value involved is an exact integer).
+// Returns an index in [0, size).
+int wrapTexel(double i, int size, TextureWrap wrap) {
+  const double n = size;
+  switch (wrap) {
+    case TextureWrap::Repeat: {
+      double r = std::fmod(i, n);  // exact; has the sign of i
+      if (r < 0) r += n;
+      return static_cast<int>(r);
+    }
+    case TextureWrap::Clamp:
+      return static_cast<int>(i < 0 ? 0.0 : (i > n - 1 ? n - 1 : i));
+    case TextureWrap::Mirror: {
+      // Vulkan: (size - 1) - mirror((i mod (2 * size)) - size), mirror(a) = a >= 0 ? a : -(1 + a).
+      double t = std::fmod(i, 2 * n);
+      if (t < 0) t += 2 * n;
+      const double a = t - n;
+      const double mirrored = a >= 0 ? a : -(1 + a);
+      return static_cast<int>((n - 1) - mirrored);
+    }
+  }
+  return 0;
+}
+
+Value transparentBlack() { return Value::vec4(0.f, 0.f, 0.f, 0.f); }
+
+float clamp01(float x) { return x < 0.f ? 0.f : (x > 1.f ? 1.f : x); }
+
+}  // namespace
+
+std::optional<TextureWrap> parseTextureWrap(std::string_view name) {
+  if (name == "repeat") return TextureWrap::Repeat;
+  if (name == "clamp") return TextureWrap::Clamp;
+  if (name == "mirror") return TextureWrap::Mirror;
+  return std::nullopt;
+}
+
+std::optional<TextureFilter> parseTextureFilter(std::string_view name) {
+  if (name == "linear") return TextureFilter::Linear;
+  if (name == "nearest") return TextureFilter::Nearest;
+  return std::nullopt;
+}
+
+std::string_view textureWrapName(TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::Repeat: return "repeat";
+    case TextureWrap::Clamp: return "clamp";
+    case TextureWrap::Mirror: return "mirror";
+  }
+  return "repeat";
+}
+
+std::string_view textureFilterName(TextureFilter filter) {
+  switch (filter) {
+    case TextureFilter::Linear: return "linear";
+    case TextureFilter::Nearest: return "nearest";
+  }
+  return "linear";
+}
+
+Value sampleImage(const Image& image, float u, float v, TextureWrap wrap, TextureFilter filter) {
+  if (!image.valid()) return transparentBlack();
+  if (!std::isfinite(u)) u = 0.f;
+  if (!std::isfinite(v)) v = 0.f;
+  // Unnormalized coordinates, computed in float as the sampler does.
+  const float x = u * static_cast<float>(image.width);
+  const float y = v * static_cast<float>(image.height);
+
+  if (filter == TextureFilter::Nearest) {
+    const int i = wrapTexel(std::floor(x), image.width, wrap);
+    const int j = wrapTexel(std::floor(y), image.height, wrap);
+    const auto t = image.texel(i, j);
+    return Value::vec4(t[0], t[1], t[2], t[3]);
+  }
+
+  const float xs = x - kTexelCentre, ys = y - kTexelCentre;
+  const float x0 = std::floor(xs), y0 = std::floor(ys);
+  const float alpha = xs - x0, beta = ys - y0;  // weights of the second texel in x, y
+  const int i0 = wrapTexel(x0, image.width, wrap);
+  const int i1 = wrapTexel(static_cast<double>(x0) + 1, image.width, wrap);
+  const int j0 = wrapTexel(y0, image.height, wrap);
+  const int j1 = wrapTexel(static_cast<double>(y0) + 1, image.height, wrap);
+  const auto t00 = image.texel(i0, j0), t10 = image.texel(i1, j0);
+  const auto t01 = image.texel(i0, j1), t11 = image.texel(i1, j1);
+  const float w00 = (1.f - alpha) * (1.f - beta), w10 = alpha * (1.f - beta);
+  const float w01 = (1.f - alpha) * beta, w11 = alpha * beta;
+  Value out = Value::vec4(0.f, 0.f, 0.f, 0.f);
+  // Rounding can push a blend of in-range texels a hair outside [0,1]; UNORM results
+  // never leave it.
+  for (int c = 0; c < kImageChannels; ++c)
+    out.v[c] = clamp01(w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]);
+  return out;
+}
+
+Value TextureSampler::sample(int index, float u, float v) const {
+  if (index < 0 || static_cast<std::size_t>(index) >= images.size()) return transparentBlack();
+  const auto i = static_cast<std::size_t>(index);
+  const TextureWrap wrap = i < wraps.size() ? wraps[i] : TextureWrap::Repeat;
+  const TextureFilter filter = i < filters.size() ? filters[i] : TextureFilter::Linear;
+  return sampleImage(images[i], u, v, wrap, filter);
+}
+
+}  // namespace wg
