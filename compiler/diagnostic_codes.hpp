@@ -39,8 +39,6 @@ enum class DiagCode : std::uint16_t {
   UnknownTexture,
   TextureFileMissing,
   TextureUnsupported,
-  UnknownWeatherPreset,
-  InvalidWeatherSetting,
   UsageError,
   InternalShaderError,
   InternalSpirvInvalid,
