@@ -62,7 +62,9 @@ class Builder {
       return std::nullopt;
     }
     indexIds();
-    for (std::size_t i = 0; i < graph_.nodes.size(); ++i) resolveNode(static_cast<std::uint32_t>(i));
+    // Ops first, so links to nodes later in the file find their target's outputs.
+    for (std::size_t i = 0; i < graph_.nodes.size(); ++i) resolveOp(static_cast<std::uint32_t>(i));
+    for (std::size_t i = 0; i < graph_.nodes.size(); ++i) resolveInputs(static_cast<std::uint32_t>(i));
     if (!orderAndDetectCycles()) return std::nullopt;
     ir_.name = graph_.name;
     ir_.parameters = graph_.parameters;
@@ -107,7 +109,7 @@ class Builder {
     return out.empty() ? "none" : out;
   }
 
-  void resolveNode(std::uint32_t index) {
+  void resolveOp(std::uint32_t index) {
     PendingNode& p = pending_[index];
     const NodeDecl& n = *p.decl;
     p.op = findOp(n.op);
@@ -137,6 +139,12 @@ class Builder {
     } else if (!n.param.empty()) {
       report(DiagCode::UnknownField, appendPointer(n.pointer, "param"), {"param", "only op 'parameter' takes 'param'"});
     }
+  }
+
+  void resolveInputs(std::uint32_t index) {
+    PendingNode& p = pending_[index];
+    const NodeDecl& n = *p.decl;
+    if (!p.op) return;
     p.ports.resize(p.op->inputs.size());
     for (const auto& [port, source] : n.inputs) {
       const PortSpec* spec = p.op->findInput(port);
