@@ -7,6 +7,7 @@ CommandLine::CommandLine(int argc, char** argv, int first) {
 }
 
 std::optional<std::string> CommandLine::valueFor(const std::string& name, std::string& error) {
+  if (done() || !error.empty()) return std::nullopt;
   const std::string& arg = args_[index_];
   if (arg == name) {
     if (index_ + 1 >= args_.size()) {
@@ -29,7 +30,7 @@ std::optional<std::string> CommandLine::valueFor(const std::string& name, std::s
 }
 
 bool CommandLine::flag(const std::string& name) {
-  if (args_[index_] != name) return false;
+  if (done() || args_[index_] != name) return false;
   ++index_;
   return true;
 }

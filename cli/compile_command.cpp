@@ -142,25 +142,28 @@ int runCompileCommand(int argc, char** argv) {
       o.quiet = true;
       continue;
     }
-    if (auto v = cl.valueFor("--output", error)) {
+    if (auto v = cl.valueFor("--output", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
       o.outputDir = *v;
       continue;
     }
-    if (auto v = cl.valueFor("-o", error)) {
+    if (auto v = cl.valueFor("-o", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
       o.outputDir = *v;
       continue;
     }
-    if (auto v = cl.valueFor("--target", error)) {
+    if (auto v = cl.valueFor("--target", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
       targetList = anyTarget ? targetList + "," + *v : *v;
       anyTarget = true;
       continue;
     }
-    if (auto v = cl.valueFor("--diagnostics", error)) {
+    if (auto v = cl.valueFor("--diagnostics", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
       if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
       o.json = *v == "json";
       continue;
     }
-    if (!error.empty()) return usageError(error, o.json);
     return usageError("unknown option '" + quoteUserText(arg) + "'", o.json);
   }
   std::string error;

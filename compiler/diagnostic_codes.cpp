@@ -14,9 +14,8 @@ constexpr auto Bug = DiagCategory::Internal;
 constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = {{
     {JsonSyntax, "WG1001", E, In, "json-syntax", "malformed JSON: {0}",
      "fix the JSON syntax at this position"},
-    {FileUnreadable, "WG1002", E, In, "file-unreadable", "cannot read '{0}': {1}",
-     "check that the path exists and is readable"},
-    {WrongJsonKind, "WG1003", E, In, "wrong-json-kind", "'{0}' must be {1}, not {2}",
+    {FileUnreadable, "WG1002", E, In, "file-unreadable", "cannot read '{0}': {1}", "{2}"},
+    {WrongJsonKind, "WG1003", E, In, "wrong-json-kind", "{0} must be {1}, not {2}",
      "change the value to {1}"},
     {MissingField, "WG1004", E, In, "missing-field", "missing required field '{0}'",
      "add '{0}' to this object"},

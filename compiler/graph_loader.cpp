@@ -1,6 +1,7 @@
 #include "compiler/graph_loader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,12 +15,12 @@ namespace wg {
 std::optional<std::string> readGraphFile(const std::string& path, DiagnosticList& diagnostics) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
-    diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), "it is a directory"});
+    diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), "it is a directory", "pass the path of a graph file, not a directory"});
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), "no such file"});
+    diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), "no such file", "check the path; it is relative to the working directory"});
     return std::nullopt;
   }
   // Refuse oversized files before reading them into memory.
@@ -34,6 +35,16 @@ std::optional<std::string> readGraphFile(const std::string& path, DiagnosticList
 }
 
 namespace {
+
+// A JSON number with an integral value (3 and 3.0 alike), else nullopt.
+std::optional<std::int64_t> integralValue(const nlohmann::json& j) {
+  if (j.is_number_integer()) return j.get<std::int64_t>();
+  if (!j.is_number_float()) return std::nullopt;
+  double d = j.get<double>();
+  constexpr double kLimit = 9.0e15;  // within double's exact-integer range
+  if (!(std::fabs(d) < kLimit) || d != std::floor(d)) return std::nullopt;
+  return static_cast<std::int64_t>(d);
+}
 
 // Texture sizes: powers of two keep procedural tiles seamless and mips complete.
 constexpr int kMinTextureSize = 16;
@@ -64,7 +75,7 @@ class Loader {
     if (root.contains("weather")) {
       const auto& w = root["weather"];
       if (!w.is_string() && !w.is_object())
-        report(DiagCode::WrongJsonKind, "/weather", {"weather", "a preset name or an object", describeJsonKind(w)});
+        report(DiagCode::WrongJsonKind, "/weather", {"'weather'", "a preset name or an object", describeJsonKind(w)});
       else {
         graph_.weather = w;
         graph_.weatherPointer = "/weather";
@@ -73,7 +84,7 @@ class Loader {
     if (root.contains("alphaCutoff")) {
       const auto& a = root["alphaCutoff"];
       if (!a.is_number())
-        report(DiagCode::WrongJsonKind, "/alphaCutoff", {"alphaCutoff", "a number", describeJsonKind(a)});
+        report(DiagCode::WrongJsonKind, "/alphaCutoff", {"'alphaCutoff'", "a number", describeJsonKind(a)});
       else if (double v = a.get<double>(); !(v >= 0.0 && v <= 1.0))
         report(DiagCode::LiteralOutOfRange, "/alphaCutoff", {"alphaCutoff", formatFloat(static_cast<float>(v)), "0", "1"});
       else
@@ -104,24 +115,30 @@ class Loader {
       report(DiagCode::MissingField, pointer, {key});
       return nullptr;
     }
-    return expectKind(*it, appendPointer(pointer, key), kind, key, expected) ? &*it : nullptr;
+    return expectKind(*it, appendPointer(pointer, key), kind, "'" + std::string(key) + "'", expected) ? &*it : nullptr;
   }
 
   const nlohmann::json* optionalString(const nlohmann::json& object, const std::string& pointer, const char* key) {
     auto it = object.find(key);
     if (it == object.end()) return nullptr;
-    return expectKind(*it, appendPointer(pointer, key), nlohmann::json::value_t::string, key, "a string") ? &*it : nullptr;
+    return expectKind(*it, appendPointer(pointer, key), nlohmann::json::value_t::string, "'" + std::string(key) + "'", "a string")
+               ? &*it
+               : nullptr;
   }
 
   void checkFields(const nlohmann::json& object, const std::string& pointer, std::vector<std::string_view> known) {
     for (const auto& [key, value] : object.items()) {
+      if ((key == "description" || key == "$schema") && !value.is_string())
+        report(DiagCode::WrongJsonKind, appendPointer(pointer, key), {"'" + key + "'", "a string", describeJsonKind(value)});
       if (std::find(known.begin(), known.end(), key) != known.end()) continue;
       std::string hint = suggestClosest(key, known);
       if (hint.empty()) {
         hint = "known fields:";
         for (auto k : known) hint += " " + std::string(k);
       }
-      report(DiagCode::UnknownField, appendPointer(pointer, key), {quoteUserText(key), hint});
+      failed_ = true;
+      std::string fieldPointer = appendPointer(pointer, key);
+      diags_.report(DiagCode::UnknownField, doc_.locateKey(fieldPointer), {quoteUserText(key), hint});
     }
   }
 
@@ -148,8 +165,13 @@ class Loader {
     }
     for (const char* bound : {"min", "max"}) {
       if (!j.contains(bound)) continue;
+      if (p.type == ValueType::Bool) {
+        report(DiagCode::InvalidParameter, appendPointer(pointer, bound),
+               {shown, "a bool parameter has no range", "remove '" + std::string(bound) + "'"});
+        continue;
+      }
       const auto& b = j[bound];
-      if (!expectKind(b, appendPointer(pointer, bound), nlohmann::json::value_t::number_float, bound, "a number")) continue;
+      if (!expectKind(b, appendPointer(pointer, bound), nlohmann::json::value_t::number_float, "'" + std::string(bound) + "'", "a number")) continue;
       LiteralResult r = parseLiteral(b);
       if (r.notFinite) {
         report(DiagCode::LiteralNotFinite, appendPointer(pointer, bound), {std::string(bound)});
@@ -157,7 +179,8 @@ class Loader {
       }
       (std::string_view(bound) == "min" ? p.min : p.max) = r.value->x();
     }
-    if (p.min && p.max && *p.min > *p.max)
+    bool boundsValid = !(p.min && p.max && *p.min > *p.max);
+    if (!boundsValid)
       report(DiagCode::InvalidParameter, appendPointer(pointer, "min"),
              {shown, "min " + formatFloat(*p.min) + " is above max " + formatFloat(*p.max), "swap min and max"});
     if (auto* label = optionalString(j, pointer, "label")) p.label = label->get<std::string>();
@@ -184,7 +207,7 @@ class Loader {
       return;
     }
     p.defaultValue = *r.value;
-    for (int i = 0; i < p.defaultValue.width() && p.type != ValueType::Bool; ++i) {
+    for (int i = 0; boundsValid && i < p.defaultValue.width() && p.type != ValueType::Bool; ++i) {
       float x = p.defaultValue.v[i];
       if ((p.min && x < *p.min) || (p.max && x > *p.max)) {
         report(DiagCode::LiteralOutOfRange, dp, {"the default of '" + shown + "'", formatFloat(x),
@@ -202,6 +225,8 @@ class Loader {
     TextureDecl t;
     t.name = name;
     t.pointer = pointer;
+    if (name.empty())
+      report(DiagCode::TextureUnsupported, pointer, {shown, "the texture name is empty", "give the texture a name"});
     if (auto* wrap = optionalString(j, pointer, "wrap")) {
       auto w = parseTextureWrap(wrap->get<std::string>());
       if (!w) report(DiagCode::TextureUnsupported, appendPointer(pointer, "wrap"),
@@ -237,7 +262,7 @@ class Loader {
           return;
         case ImageFileStatus::Unsupported:
           report(DiagCode::TextureUnsupported, appendPointer(pointer, "file"),
-                 {shown, quoteUserText(error), "convert the image to PNG or JPEG"});
+                 {shown, quoteUserText(error), "use a PNG, JPEG, TGA or BMP image"});
           return;
         case ImageFileStatus::TooLarge:
           report(DiagCode::ResourceLimit, appendPointer(pointer, "file"),
@@ -262,16 +287,15 @@ class Loader {
         return;
       }
       if (j.contains("seed")) {
-        const auto& s = j["seed"];
-        if (!s.is_number_integer() || s.get<std::int64_t>() < 0 || s.get<std::int64_t>() > 0xFFFFFFFFll)
+        auto seed = integralValue(j["seed"]);
+        if (!seed || *seed < 0 || *seed > 0xFFFFFFFFll)
           report(DiagCode::TextureUnsupported, appendPointer(pointer, "seed"),
                  {shown, "the seed must be an integer in [0, 4294967295]", "use a whole number"});
         else
-          t.seed = static_cast<std::uint32_t>(s.get<std::int64_t>());
+          t.seed = static_cast<std::uint32_t>(*seed);
       }
       if (j.contains("size")) {
-        const auto& s = j["size"];
-        std::int64_t n = s.is_number_integer() ? s.get<std::int64_t>() : 0;
+        std::int64_t n = integralValue(j["size"]).value_or(0);
         if (n < kMinTextureSize || n > kMaxTextureSize || (n & (n - 1)) != 0)
           report(DiagCode::TextureUnsupported, appendPointer(pointer, "size"),
                  {shown, "size must be a power of two from 16 to 2048", "use 64, 128, 256, 512, 1024 or 2048"});
@@ -284,7 +308,8 @@ class Loader {
           options[key] = value;
       std::string error = validateGeneratorOptions(*spec, options);
       if (!error.empty())
-        report(DiagCode::TextureUnsupported, pointer, {shown, quoteUserText(error), "see 'weathergen list-generators'"});
+        // Our own message (it may quote a user's option name, hence the escaping).
+        report(DiagCode::TextureUnsupported, pointer, {shown, quoteUserText(error, 400), "see 'weathergen list-generators'"});
       t.options = std::move(options);
     }
     graph_.textures.push_back(std::move(t));
@@ -318,7 +343,7 @@ class Loader {
     if (j.contains("inputs")) {
       const auto& inputs = j["inputs"];
       std::string ip = appendPointer(pointer, "inputs");
-      if (expectKind(inputs, ip, nlohmann::json::value_t::object, "inputs", "an object"))
+      if (expectKind(inputs, ip, nlohmann::json::value_t::object, "'inputs'", "an object"))
         for (const auto& [port, value] : inputs.items())
           n.inputs.emplace_back(port, loadInput(value, appendPointer(ip, port)));
     }

@@ -50,6 +50,13 @@ std::string describePort(PortType type) {
   }
 }
 
+std::string conversionHint(ValueType from, ValueType to, bool generic) {
+  if (from == ValueType::Bool || to == ValueType::Bool)
+    return "bools and numbers do not convert: use 'greater' or 'less' to make a bool, 'select' to use one";
+  if (generic) return "generic inputs must share one width (a float may feed any of them)";
+  return "convert with swizzle, split or combine";
+}
+
 class Builder {
  public:
   Builder(const MaterialGraph& g, const JsonDocument& doc, DiagnosticList& diags, const IrLimits& limits)
@@ -373,9 +380,7 @@ class Builder {
       ValueType portType = spec.type == PortType::Generic ? generic : fixedPortType(spec.type);
       node.inputTypes.push_back(portType);
       if (!isImplicitlyConvertible(node.inputs[i].type, portType)) {
-        std::string hint = spec.type == PortType::Generic
-                               ? "generic inputs must share one width (a float may feed any of them)"
-                               : "convert with swizzle, split or combine";
+        std::string hint = conversionHint(node.inputs[i].type, portType, spec.type == PortType::Generic);
         report(DiagCode::TypeMismatch, portPointer(p, i),
                {"input '" + std::string(spec.name) + "' of '" + std::string(op.name) + "'", std::string(typeName(portType)),
                 std::string(typeName(node.inputs[i].type)), hint});
@@ -391,7 +396,7 @@ class Builder {
         if (w == 0) {
           report(DiagCode::InvalidSetting, textPointer(p),
                  {"swizzle channels '" + quoteUserText(node.text) + "' do not fit a " + std::string(typeName(generic)),
-                  "use 1 to 4 of x, y, z, w (or r, g, b, a) that the input has"});
+                  "use 1 to 4 channels the input has, all from x, y, z, w or all from r, g, b, a"});
           ok = false;
         }
         node.valueType = floatVectorOfWidth(std::max(w, 1));
@@ -448,7 +453,7 @@ class Builder {
       ValueType t = node.outputType(in.output);
       if (!isImplicitlyConvertible(t, info.type)) {
         report(DiagCode::TypeMismatch, source.pointer,
-               {what, std::string(typeName(info.type)), std::string(typeName(t)), "convert with swizzle, split or combine"});
+               {what, std::string(typeName(info.type)), std::string(typeName(t)), conversionHint(t, info.type, false)});
         continue;
       }
       out = Operand::ofNode(target, static_cast<std::uint8_t>(in.output), t);

@@ -118,8 +118,8 @@ struct TextScanner {
     }
   }
 
-  template <typename OnValue, typename OnDuplicate>
-  void scan(OnValue&& onValue, OnDuplicate&& onDuplicate) {
+  template <typename OnValue, typename OnKey, typename OnDuplicate>
+  void scan(OnValue&& onValue, OnKey&& onKey, OnDuplicate&& onDuplicate) {
     struct Frame {
       bool isObject;
       std::string pointer;
@@ -170,6 +170,7 @@ struct TextScanner {
           skipSpace();
           if (peek() == ':') advance();
           std::string pointer = appendPointer(top.pointer, key);
+          onKey(pointer, keyLine, keyColumn);
           if (std::find(top.keys.begin(), top.keys.end(), key) != top.keys.end())
             onDuplicate(pointer, keyLine, keyColumn, key);
           else
@@ -223,22 +224,44 @@ std::pair<int, int> lineColumnOfByte(const std::string& text, std::size_t byte) 
   return {line, column};
 }
 
+// nlohmann's message without its "[json.exception...] " prefix and the position we
+// already print as line:col.
+std::string plainParseMessage(std::string what) {
+  if (auto cut = what.find("] "); cut != std::string::npos) what = what.substr(cut + 2);
+  if (what.starts_with("parse error at line ")) {
+    if (auto colon = what.find(": "); colon != std::string::npos) what = "parse error: " + what.substr(colon + 2);
+  }
+  return what;
+}
+
 }  // namespace
 
 JsonDocument::JsonDocument(std::string file, std::string text, nlohmann::json root)
     : file_(std::move(file)), text_(std::move(text)), root_(std::move(root)) {}
 
+void JsonDocument::buildIndex() const {
+  if (values_) return;
+  values_ = std::make_unique<PositionIndex>();
+  keys_ = std::make_unique<PositionIndex>();
+  TextScanner scanner{text_};
+  scanner.scan([&](const std::string& p, int l, int c) { values_->emplace(p, std::make_pair(l, c)); },
+               [&](const std::string& p, int l, int c) { keys_->emplace(p, std::make_pair(l, c)); },
+               [](const std::string&, int, int, const std::string&) {});
+}
+
+SourceLocation JsonDocument::locateKey(const std::string& pointer) const {
+  buildIndex();
+  auto it = keys_->find(pointer);
+  if (it == keys_->end()) return locate(pointer);
+  return {file_, pointer, it->second.first, it->second.second};
+}
+
 SourceLocation JsonDocument::locate(const std::string& pointer) const {
-  if (!index_) {
-    index_ = std::make_unique<std::unordered_map<std::string, std::pair<int, int>>>();
-    TextScanner scanner{text_};
-    scanner.scan([&](const std::string& p, int l, int c) { index_->emplace(p, std::make_pair(l, c)); },
-                 [](const std::string&, int, int, const std::string&) {});
-  }
+  buildIndex();
   std::string p = pointer;
   while (true) {
-    auto it = index_->find(p);
-    if (it != index_->end()) return {file_, pointer, it->second.first, it->second.second};
+    auto it = values_->find(p);
+    if (it != values_->end()) return {file_, pointer, it->second.first, it->second.second};
     auto slash = p.rfind('/');
     if (slash == std::string::npos) return {file_, pointer, 1, 1};
     p.resize(slash);
@@ -265,18 +288,23 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
       (void)nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
       auto [line, column] = lineColumnOfByte(text, e.byte > 0 ? e.byte - 1 : 0);
+      diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column}, {plainParseMessage(e.what())});
+    } catch (const nlohmann::json::out_of_range& e) {
+      // A number too large for a double ("1e999"): point at it and call it non-finite.
       std::string what = e.what();
-      auto cut = what.find("] ");
-      diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column},
-                         {cut == std::string::npos ? what : what.substr(cut + 2)});
+      auto open = what.find('\''), close = what.rfind('\'');
+      std::string number = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+      std::size_t at = number.empty() ? std::string::npos : text.find(number);
+      auto [line, column] = lineColumnOfByte(text, at == std::string::npos ? 0 : at);
+      diagnostics.report(DiagCode::LiteralNotFinite, {file, "", line, column}, {"the number " + number});
     } catch (const std::exception& e) {
-      diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {e.what()});
+      diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {plainParseMessage(e.what())});
     }
     return std::nullopt;
   }
   bool duplicate = false;
   TextScanner scanner{text};
-  scanner.scan([](const std::string&, int, int) {},
+  scanner.scan([](const std::string&, int, int) {}, [](const std::string&, int, int) {},
                [&](const std::string& pointer, int l, int c, const std::string& key) {
                  diagnostics.report(DiagCode::DuplicateKey, {file, pointer, l, c}, {key});
                  duplicate = true;

@@ -21,12 +21,17 @@ class JsonDocument {
 
   // Location of the value at `pointer`; falls back to the nearest located ancestor.
   SourceLocation locate(const std::string& pointer) const;
+  // Location of the key naming the object member at `pointer` (for unknown fields).
+  SourceLocation locateKey(const std::string& pointer) const;
 
  private:
   std::string file_;
   std::string text_;
   nlohmann::json root_;
-  mutable std::unique_ptr<std::unordered_map<std::string, std::pair<int, int>>> index_;  // lazy
+  void buildIndex() const;
+  using PositionIndex = std::unordered_map<std::string, std::pair<int, int>>;
+  mutable std::unique_ptr<PositionIndex> values_;  // built on the first diagnostic
+  mutable std::unique_ptr<PositionIndex> keys_;
 };
 
 struct JsonLimits {

@@ -56,10 +56,9 @@ std::string describeJsonKind(const nlohmann::json& json) {
   }
 }
 
-std::string quoteUserText(std::string_view text) {
-  constexpr std::size_t kMaxShown = 60;  // keeps one diagnostic on one readable line
+std::string quoteUserText(std::string_view text, std::size_t maxShown) {
   std::string out;
-  for (std::size_t i = 0; i < text.size() && i < kMaxShown; ++i) {
+  for (std::size_t i = 0; i < text.size() && i < maxShown; ++i) {
     unsigned char c = static_cast<unsigned char>(text[i]);
     if (c < 0x20 || c == 0x7f) {
       static const char* hex = "0123456789abcdef";
@@ -70,7 +69,7 @@ std::string quoteUserText(std::string_view text) {
       out += static_cast<char>(c);
     }
   }
-  if (text.size() > kMaxShown) out += "...";
+  if (text.size() > maxShown) out += "...";
   return out;
 }
 

@@ -22,6 +22,6 @@ std::string describeJsonKind(const nlohmann::json& json);
 
 // A user-supplied string made safe for a one-line message: control characters
 // escaped, long text shortened. User text never reaches emitted code.
-std::string quoteUserText(std::string_view text);
+std::string quoteUserText(std::string_view text, std::size_t maxShown = 60);
 
 }  // namespace wg

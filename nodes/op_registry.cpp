@@ -74,11 +74,16 @@ int swizzleIndex(char c) {
 int accessorWidth(std::string_view accessor, int width) {
   if (accessor.empty()) return width;
   if (accessor.size() < 2 || accessor.size() > 5 || accessor[0] != '.') return 0;
-  for (char c : accessor.substr(1)) {
+  // GLSL and HLSL both forbid mixing the xyzw and rgba sets in one swizzle.
+  std::string_view channels = accessor.substr(1);
+  bool position = channels.find_first_of("xyzw") != std::string_view::npos;
+  bool colour = channels.find_first_of("rgba") != std::string_view::npos;
+  if (position && colour) return 0;
+  for (char c : channels) {
     int index = swizzleIndex(c);
     if (index < 0 || index >= width) return 0;
   }
-  return static_cast<int>(accessor.size() - 1);
+  return static_cast<int>(channels.size());
 }
 
 Value applyAccessor(const Value& value, std::string_view accessor) {
