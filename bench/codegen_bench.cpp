@@ -1,0 +1,40 @@
+// BM_Codegen/<graph>: the whole compiler short of glslang, for each bundled graph:
+// parse + load + validate + IR + passes + GLSL and HLSL for both stages + reflection
+// (compileMaterialText with emitSpirv = false). The JSON text is already in memory.
+// Counters report each emitted shader's size in bytes.
+#include <benchmark/benchmark.h>
+
+#include "bench/bench_common.hpp"
+#include "compiler/material_compiler.hpp"
+
+namespace {
+
+void codegen(benchmark::State& state, const wg::bench::BundledGraph& graph) {
+  const std::string text = wg::bench::readText(graph.path);
+  const wg::CompileOptions options{.emitSpirv = false};
+  auto first = wg::compileMaterialText(graph.path, text, options);
+  if (!first.material) {
+    state.SkipWithError(("does not compile: " + graph.path).c_str());
+    return;
+  }
+  for (auto _ : state) {
+    auto result = wg::compileMaterialText(graph.path, text, options);
+    benchmark::DoNotOptimize(result);
+  }
+  const auto& m = *first.material;
+  using L = wg::ShaderLanguage;
+  using S = wg::ShaderStage;
+  state.counters["glsl_vert_bytes"] = static_cast<double>(m.stage(L::Glsl, S::Vertex).source.size());
+  state.counters["glsl_frag_bytes"] = static_cast<double>(m.stage(L::Glsl, S::Fragment).source.size());
+  state.counters["hlsl_vert_bytes"] = static_cast<double>(m.stage(L::Hlsl, S::Vertex).source.size());
+  state.counters["hlsl_frag_bytes"] = static_cast<double>(m.stage(L::Hlsl, S::Fragment).source.size());
+  state.counters["ir_nodes"] = static_cast<double>(m.ir.nodes.size());
+}
+
+const bool registered = [] {
+  for (const auto& graph : wg::bench::bundledGraphs())
+    benchmark::RegisterBenchmark(("BM_Codegen/" + graph.stem).c_str(), codegen, graph)->Unit(benchmark::kMicrosecond);
+  return true;
+}();
+
+}  // namespace
