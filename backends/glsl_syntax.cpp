@@ -41,7 +41,8 @@ class GlslSyntax final : public ShaderSyntax {
     std::string out = "#version 450\n" + s.banner;
     appendBlock(out, mi.frame);
     appendBlock(out, mi.material);
-    for (const auto& t : mi.textures) {
+    for (const auto* list : {&mi.weatherMaps, &mi.textures})
+    for (const auto& t : *list) {
       out += "layout(set = " + std::to_string(t.set) + ", binding = " + std::to_string(t.textureBinding) +
              ") uniform texture2D " + t.textureIdentifier + ";\n";
       out += "layout(set = " + std::to_string(t.set) + ", binding = " + std::to_string(t.samplerBinding) +

@@ -58,7 +58,8 @@ class HlslSyntax final : public ShaderSyntax {
     std::string out = s.banner;
     appendBlock(out, mi.frame);
     appendBlock(out, mi.material);
-    for (const auto& t : mi.textures) {
+    for (const auto* list : {&mi.weatherMaps, &mi.textures})
+    for (const auto& t : *list) {
       out += "[[vk::binding(" + std::to_string(t.textureBinding) + ", " + std::to_string(t.set) + ")]] Texture2D " +
              t.textureIdentifier + " : register(t" + std::to_string(t.textureBinding) + ", space" +
              std::to_string(t.set) + ");\n";

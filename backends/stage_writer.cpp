@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <functional>
 
+#include "compiler/debug_views.hpp"
 #include "nodes/core_library.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
@@ -40,9 +41,20 @@ class StageWriter {
     source.alphaTested = graph_.alphaTested;
     source.alphaCutoff = graph_.alphaCutoff;
     if (stage_ == ShaderStage::Fragment) {
-      source.debugViews = {{1, "albedo", "wg_baseColor"},
-                           {2, "roughness", syntax_.splat(ValueType::Vec3, "wg_roughness")},
-                           {3, "normal", "(wg_N * 0.5 + 0.5)"}};
+      for (const auto& view : kDebugViews) {
+        std::string expression;
+        if (view.coverage)
+          expression = syntax_.splat(ValueType::Vec3, operandExpression(graph_.coverage(*view.coverage), ValueType::Float));
+        else if (view.name == "albedo")
+          expression = "wg_baseColor";
+        else if (view.name == "roughness")
+          expression = syntax_.splat(ValueType::Vec3, "wg_roughness");
+        else if (view.name == "normal")
+          expression = "(wg_N * 0.5 + 0.5)";
+        else
+          continue;  // "lit" is the default colour
+        source.debugViews.push_back({view.id, view.name, std::move(expression)});
+      }
     }
     return syntax_.assemble(source);
   }
@@ -54,6 +66,11 @@ class StageWriter {
       const Operand& o = graph_.output(info.field);
       if (info.stage == stage_ && o.kind == Operand::Kind::Node) needed_[o.node] = true;
     }
+    if (stage_ == ShaderStage::Fragment)
+      for (const auto& info : coverageTerms()) {
+        const Operand& o = graph_.coverage(info.term);
+        if (o.kind == Operand::Kind::Node) needed_[o.node] = true;
+      }
     for (std::size_t i = graph_.nodes.size(); i-- > 0;)
       if (needed_[i])
         for (const auto& o : graph_.nodes[i].inputs)

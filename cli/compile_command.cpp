@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "compiler/literal.hpp"
 #include "compiler/material_compiler.hpp"
+#include "compiler/weather_config.hpp"
 
 namespace wg {
 
@@ -30,6 +31,8 @@ Options:
   --target LIST              comma-separated glsl, hlsl, spirv, or all (default: all)
   -O                         optimise SPIR-V with spirv-opt's performance passes
   -O0                        no SPIR-V optimisation (default)
+  --weather-preset NAME      weather preset for every graph, replacing the graph's own
+                             (rock, terrain, foliage, river, road, none)
   --diagnostics text|json    diagnostic format on stderr (default: text)
   -q, --quiet                print nothing but diagnostics
   -h, --help                 this help
@@ -67,6 +70,7 @@ struct Options {
   bool optimize = false;
   bool json = false;
   bool quiet = false;
+  std::optional<std::string> weatherPreset;
 };
 
 void printDiagnostics(const std::vector<Diagnostic>& list, bool json) {
@@ -158,6 +162,16 @@ int runCompileCommand(int argc, char** argv) {
       anyTarget = true;
       continue;
     }
+    if (auto v = cl.valueFor("--weather-preset", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
+      if (!weatherPreset(*v)) {
+        std::string presets;
+        for (auto name : weatherPresetNames()) presets += (presets.empty() ? "" : ", ") + std::string(name);
+        return usageError("unknown weather preset '" + quoteUserText(*v) + "' (presets: " + presets + ")", o.json);
+      }
+      o.weatherPreset = *v;
+      continue;
+    }
     if (auto v = cl.valueFor("--diagnostics", error); v || !error.empty()) {
       if (!v) return usageError(error, o.json);
       if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
@@ -174,6 +188,7 @@ int runCompileCommand(int argc, char** argv) {
   CompileOptions options;
   options.emitSpirv = o.targets.spirv;
   options.optimize = o.optimize;
+  options.weatherPreset = o.weatherPreset;
   std::vector<Diagnostic> diagnostics;
   std::vector<CompiledMaterial> materials;
   std::map<std::string, std::string> stemOwner;

@@ -1,4 +1,5 @@
 // list-ops, list-passes, list-diagnostics, list-generators: the compiler's tables.
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -45,7 +46,12 @@ int runListCommand(int argc, char** argv) {
       nlohmann::ordered_json inputs = nlohmann::ordered_json::array();
       std::string signature;
       for (const auto& p : op->inputs) {
-        inputs.push_back({{"name", p.name}, {"type", portTypeName(p.type)}, {"default", defaultText(p)}});
+        nlohmann::ordered_json port = {{"name", p.name}, {"type", portTypeName(p.type)}, {"default", defaultText(p)}};
+        if (std::isfinite(p.min) && std::isfinite(p.max) && p.min > -1e29f && p.max < 1e29f) {
+          port["min"] = p.min;
+          port["max"] = p.max;
+        }
+        inputs.push_back(std::move(port));
         signature += (signature.empty() ? "" : ", ") + std::string(p.name) + ": " + std::string(portTypeName(p.type)) +
                      (p.defaultValue ? " = " + defaultText(p) : "");
       }

@@ -73,7 +73,7 @@ std::string contentHash(const IrGraph& graph) {
   }
   h.add(static_cast<std::uint64_t>(graph.alphaTested));
   h.add(std::bit_cast<std::uint32_t>(graph.alphaCutoff));
-  h.add(graph.weatherPreset);
+  h.add(graph.weather.preset);
   return h.hex();
 }
 

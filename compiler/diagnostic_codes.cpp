@@ -53,6 +53,8 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
     {TextureFileMissing, "WG3002", E, In, "texture-file-missing",
      "texture '{0}': file '{1}' not found", "paths are relative to the graph file"},
     {TextureUnsupported, "WG3003", E, In, "texture-unsupported", "texture '{0}': {1}", "{2}"},
+    {UnknownWeatherPreset, "WG4001", E, In, "unknown-weather-preset", "unknown weather preset '{0}'", "{1}"},
+    {InvalidWeatherSetting, "WG4002", E, In, "invalid-weather-setting", "{0}", "{1}"},
     {UsageError, "WG9001", E, Use, "usage", "{0}", "run 'weathergen --help' for usage"},
     {InternalShaderError, "WG9901", E, Bug, "internal-shader-error",
      "emitted {0} failed to compile: {1}", "this is a weathergen bug; please report it"},

@@ -39,6 +39,8 @@ enum class DiagCode : std::uint16_t {
   UnknownTexture,
   TextureFileMissing,
   TextureUnsupported,
+  UnknownWeatherPreset,
+  InvalidWeatherSetting,
   UsageError,
   InternalShaderError,
   InternalSpirvInvalid,

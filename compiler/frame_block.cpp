@@ -12,20 +12,20 @@ struct FrameField {
   InterfaceType type;
 };
 // Ordered so std140 packs without holes: each vec3 is followed by a float.
-constexpr std::array<FrameField, 23> kFrameFields = {{
+constexpr std::array<FrameField, 24> kFrameFields = {{
     {"model", InterfaceType::Mat4},
     {"viewProjection", InterfaceType::Mat4},
     {"normalMatrix", InterfaceType::Mat4},  // inverse transpose of model
     {"cameraPosition", InterfaceType::Vec3},
     {"time", InterfaceType::Float},           // seconds
     {"sunDirection", InterfaceType::Vec3},    // unit vector towards the sun
-    {"sunIntensity", InterfaceType::Float},
-    {"sunColor", InterfaceType::Vec3},
+    {"sunIntensity", InterfaceType::Float},   // [0, 1]: weather's sun strength; radiance = sunColor * this
+    {"sunColor", InterfaceType::Vec3},        // linear radiance at full intensity
     {"ambientIntensity", InterfaceType::Float},
     {"skyColor", InterfaceType::Vec3},
     {"temperature", InterfaceType::Float},    // degrees Celsius
-    {"windDirection", InterfaceType::Vec2},   // unit vector in world xz
-    {"windIntensity", InterfaceType::Float},
+    {"windDirection", InterfaceType::Vec2},   // unit vector in world xz (y is up)
+    {"windIntensity", InterfaceType::Float},  // [0, 1]
     {"precipitation", InterfaceType::Float},  // [0, 1]
     {"snowLevel", InterfaceType::Float},      // accumulated levels, each [0, 1]
     {"wetnessLevel", InterfaceType::Float},
@@ -34,8 +34,9 @@ constexpr std::array<FrameField, 23> kFrameFields = {{
     {"puddleLevel", InterfaceType::Float},
     {"exposure", InterfaceType::Float},       // tone-mapping exposure
     {"debugView", InterfaceType::Uint},       // 0 = lit; others select an AOV
-    {"reserved0", InterfaceType::Float},
-    {"reserved1", InterfaceType::Float},
+    {"terrainHeightScale", InterfaceType::Float},  // metres per unit of the terrain height map
+    {"skyExposureRegion", InterfaceType::Vec4},    // xz origin, 1/size: world -> exposure-map uv
+    {"terrainRegion", InterfaceType::Vec4},        // xz origin, 1/size: world -> height-map uv (eq. 3.11)
 }};
 }  // namespace
 

@@ -7,6 +7,7 @@
 
 #include "compiler/material_graph.hpp"
 #include "compiler/pbr_output.hpp"
+#include "compiler/weather_config.hpp"
 #include "nodes/op_definition.hpp"
 
 namespace wg {
@@ -39,18 +40,33 @@ struct IrNode {
   ValueType outputType(std::size_t output) const;
 };
 
+// Weather coverage terms: published as AOVs, debug views and CPU-evaluator outputs.
+enum class CoverageTerm : std::uint8_t { Snow, Wet, Moss, Frost, Ice, Puddle, Density };
+inline constexpr std::size_t kCoverageCount = 7;
+struct CoverageInfo {
+  CoverageTerm term;
+  std::string_view name;
+  float neutral;  // value without weather: 0, or 1 for foliage density
+};
+const std::array<CoverageInfo, kCoverageCount>& coverageTerms();
+
+// Every root of the graph: the PBR fields, then the coverage terms.
+inline constexpr std::size_t kIrOutputCount = kPbrFieldCount + kCoverageCount;
+
 struct IrGraph {
   std::string name;
   std::vector<IrNode> nodes;  // always in a valid topological order
-  std::array<Operand, kPbrFieldCount> outputs;
+  std::array<Operand, kIrOutputCount> outputs;
   std::vector<ParameterDecl> parameters;
   std::vector<TextureDecl> textures;
   float alphaCutoff = 0.5f;
   bool alphaTested = false;  // opacity was given
-  std::string weatherPreset = "none";  // the weather issue's injection pass reads this
+  WeatherConfig weather;  // what the weather-inject pass adds; preset "none" adds nothing
 
   Operand& output(PbrField field) { return outputs[static_cast<std::size_t>(field)]; }
   const Operand& output(PbrField field) const { return outputs[static_cast<std::size_t>(field)]; }
+  Operand& coverage(CoverageTerm term) { return outputs[kPbrFieldCount + static_cast<std::size_t>(term)]; }
+  const Operand& coverage(CoverageTerm term) const { return outputs[kPbrFieldCount + static_cast<std::size_t>(term)]; }
 };
 
 }  // namespace wg

@@ -59,8 +59,8 @@ std::string conversionHint(ValueType from, ValueType to, bool generic) {
 
 class Builder {
  public:
-  Builder(const MaterialGraph& g, const JsonDocument& doc, DiagnosticList& diags, const IrLimits& limits)
-      : graph_(g), doc_(doc), diags_(diags), limits_(limits) {}
+  Builder(const MaterialGraph& g, const JsonDocument& doc, DiagnosticList& diags, const IrBuildOptions& options)
+      : graph_(g), doc_(doc), diags_(diags), limits_(options.limits), options_(options) {}
 
   std::optional<IrGraph> run() {
     if (graph_.nodes.size() > limits_.maxNodes) {
@@ -80,6 +80,7 @@ class Builder {
     irIndex_.assign(pending_.size(), kNoNode);
     for (std::uint32_t n : order_) typeNode(n);
     bindOutputs();
+    resolveWeather();
     if (failed_) return std::nullopt;
     return std::move(ir_);
   }
@@ -460,10 +461,28 @@ class Builder {
     }
   }
 
+  void resolveWeather() {
+    auto config = resolveWeatherConfig(graph_.weather, graph_.weatherPointer.empty() ? "/weather" : graph_.weatherPointer,
+                                       options_.weatherPreset, doc_, diags_);
+    if (!config) {
+      failed_ = true;
+      return;
+    }
+    ir_.weather = *config;
+    for (const auto& info : coverageTerms()) ir_.coverage(info.term) = Operand::ofConstant(Value::scalar(info.neutral));
+    if (!config->active()) return;
+    for (const auto& p : graph_.parameters)
+      if (p.name.starts_with("weather."))
+        report(DiagCode::InvalidWeatherSetting, p.pointer,
+               {"parameter '" + quoteUserText(p.name) + "' uses the prefix 'weather.', which the weather pass reserves",
+                "rename the parameter"});
+  }
+
   const MaterialGraph& graph_;
   const JsonDocument& doc_;
   DiagnosticList& diags_;
   IrLimits limits_;
+  IrBuildOptions options_;
   std::unordered_map<std::string, std::uint32_t> ids_;
   std::vector<PendingNode> pending_;
   std::vector<std::uint32_t> order_;
@@ -475,8 +494,8 @@ class Builder {
 }  // namespace
 
 std::optional<IrGraph> buildIr(const MaterialGraph& graph, const JsonDocument& document, DiagnosticList& diagnostics,
-                               const IrLimits& limits) {
-  return Builder(graph, document, diagnostics, limits).run();
+                               const IrBuildOptions& options) {
+  return Builder(graph, document, diagnostics, options).run();
 }
 
 }  // namespace wg

@@ -15,7 +15,12 @@ struct IrLimits {
   std::size_t maxNodes = 100000;  // ten times the largest synthetic benchmark graph
 };
 
+struct IrBuildOptions {
+  std::optional<std::string> weatherPreset;  // the CLI's --weather-preset, replacing the graph's
+  IrLimits limits;
+};
+
 std::optional<IrGraph> buildIr(const MaterialGraph& graph, const JsonDocument& document,
-                               DiagnosticList& diagnostics, const IrLimits& limits = {});
+                               DiagnosticList& diagnostics, const IrBuildOptions& options = {});
 
 }  // namespace wg

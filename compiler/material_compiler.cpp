@@ -30,12 +30,15 @@ std::string stageFileSuffix(ShaderLanguage language, ShaderStage stage) {
   return std::string(stage == ShaderStage::Vertex ? "vert." : "frag.") + std::string(languageName(language));
 }
 
-std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string text, DiagnosticList& diagnostics) {
+std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string text, DiagnosticList& diagnostics,
+                                        const CompileOptions& options) {
   auto document = parseJsonDocument(file, std::move(text), diagnostics);
   if (!document) return std::nullopt;
   auto graph = loadMaterialGraph(*document, diagnostics);
   if (!graph) return std::nullopt;
-  auto ir = buildIr(*graph, *document, diagnostics);
+  IrBuildOptions buildOptions;
+  buildOptions.weatherPreset = options.weatherPreset;
+  auto ir = buildIr(*graph, *document, diagnostics, buildOptions);
   if (!ir) return std::nullopt;
   runPassPipeline(*ir);
   return ir;
@@ -100,7 +103,7 @@ bool compileStageToSpirv(CompiledStage& stage, const MaterialInterface& mi, cons
 
 CompileResult compileMaterialText(const std::string& file, std::string text, const CompileOptions& options) {
   CompileResult result;
-  auto ir = buildOptimizedIr(file, std::move(text), result.diagnostics);
+  auto ir = buildOptimizedIr(file, std::move(text), result.diagnostics, options);
   if (!ir) return result;
   CompiledMaterial material;
   material.name = ir->name;

@@ -16,6 +16,7 @@ namespace wg {
 struct CompileOptions {
   bool emitSpirv = true;
   bool optimize = false;  // spirv-opt performance passes (-O)
+  std::optional<std::string> weatherPreset;  // replaces the graph's preset (--weather-preset)
 };
 
 struct CompiledStage {
@@ -46,7 +47,8 @@ CompileResult compileMaterialFile(const std::string& path, const CompileOptions&
 CompileResult compileMaterialText(const std::string& file, std::string text, const CompileOptions& options);
 
 // The front half alone (load, validate, IR, passes): for tools and tests.
-std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string text, DiagnosticList& diagnostics);
+std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string text, DiagnosticList& diagnostics,
+                                        const CompileOptions& options = {});
 
 // A material name made safe as a file name stem: [A-Za-z0-9_-], at most 64 bytes.
 std::string fileStemFor(std::string_view name);

@@ -1,5 +1,6 @@
 #include "compiler/material_interface.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace wg {
@@ -77,6 +78,26 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
     b.textureBinding = binding++;
     b.samplerBinding = binding++;
     mi.textures.push_back(std::move(b));
+  }
+
+  // Shared weather maps: set 0 next to the frame block, at fixed bindings.
+  struct WeatherMap {
+    std::string_view name, texture, sampler;
+    std::uint32_t binding;
+  };
+  constexpr std::array<WeatherMap, 2> kWeatherMaps = {{
+      {"terrainHeight", "wg_terrain_height_map", "wg_terrain_height_sampler", 1},
+      {"skyExposure", "wg_sky_exposure_map", "wg_sky_exposure_sampler", 3},
+  }};
+  for (const auto& map : kWeatherMaps) {
+    mi.globals.reserve(map.texture);
+    mi.globals.reserve(map.sampler);
+    bool used = std::any_of(graph.nodes.begin(), graph.nodes.end(), [&](const IrNode& n) {
+      return std::find(n.op->weatherMaps.begin(), n.op->weatherMaps.end(), map.name) != n.op->weatherMaps.end();
+    });
+    if (used)
+      mi.weatherMaps.push_back({-1, std::string(map.name), std::string(map.texture), std::string(map.sampler), 0,
+                                map.binding, map.binding + 1});
   }
 
   const std::array<std::pair<std::string_view, InterfaceType>, 5> kAttributes = {{

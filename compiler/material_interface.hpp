@@ -51,6 +51,9 @@ struct MaterialInterface {
   UniformBlock frame;
   UniformBlock material;  // empty members: the block is not emitted
   std::vector<TextureBinding> textures;
+  // Shared weather maps (set 0) that some op of this material samples; their
+  // bindings are fixed so every material agrees.
+  std::vector<TextureBinding> weatherMaps;
   std::vector<StageVariable> vertexInputs;
   std::vector<StageVariable> varyings;
   IdentifierScope globals;  // every global name above; stages copy it for locals

@@ -5,7 +5,8 @@
 namespace wg {
 
 namespace {
-constexpr std::array<Pass, 4> kPasses = {{
+constexpr std::array<Pass, 5> kPasses = {{
+    {"weather-inject", "inserts the weather subgraph between the PBR attributes and the output", injectWeather},
     {"constant-fold", "evaluates pure nodes whose inputs are all constant, via the ops' CPU semantics", foldConstants},
     {"cse", "merges structurally identical nodes", eliminateCommonSubexpressions},
     {"dead-node-elim", "removes nodes no output depends on", eliminateDeadNodes},

@@ -17,6 +17,7 @@ std::span<const Pass> passPipeline();
 void runPassPipeline(IrGraph& graph);
 
 // The passes, one file each under compiler/passes/.
+void injectWeather(IrGraph& graph);
 void foldConstants(IrGraph& graph);
 void eliminateCommonSubexpressions(IrGraph& graph);
 void eliminateDeadNodes(IrGraph& graph);

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "backends/shader_syntax.hpp"
+#include "compiler/debug_views.hpp"
 #include "nodes/texture_sampling.hpp"
 
 namespace wg {
@@ -44,6 +45,18 @@ Json stageVariablesJson(const std::vector<StageVariable>& vars) {
                    {"type", interfaceTypeName(v.type)}});
   return out;
 }
+Json weatherJson(const IrGraph& graph) {
+  const WeatherConfig& w = graph.weather;
+  Json effects = Json::object();
+  const WeatherEffects& e = w.effects;
+  for (auto [name, on] : {std::pair<const char*, bool>{"snow", e.snow}, {"displacement", e.displacement},
+                          {"terrainOrientation", e.terrainOrientation}, {"moss", e.moss}, {"wetness", e.wetness},
+                          {"puddles", e.puddles}, {"ice", e.ice}, {"hoarfrost", e.hoarfrost},
+                          {"foliageDensity", e.foliageDensity}, {"skyExposure", e.skyExposure}})
+    if (w.active()) effects[name] = on;
+  return {{"preset", w.preset}, {"effects", std::move(effects)}};
+}
+
 }  // namespace
 
 std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& mi, const std::string& hash,
@@ -63,6 +76,13 @@ std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& m
                         {"samplerIdentifier", b.samplerIdentifier}, {"wrap", textureWrapName(t.wrap)},
                         {"filter", textureFilterName(t.filter)}, {"source", std::move(source)}});
   }
+  Json weatherMaps = Json::array();
+  for (const auto& m : mi.weatherMaps)
+    weatherMaps.push_back({{"name", m.name}, {"set", m.set}, {"binding", m.textureBinding},
+                           {"samplerBinding", m.samplerBinding}, {"textureIdentifier", m.textureIdentifier},
+                           {"samplerIdentifier", m.samplerIdentifier}});
+  Json debugViews = Json::array();
+  for (const auto& view : kDebugViews) debugViews.push_back({{"id", view.id}, {"name", view.name}});
   Json files = Json::object();
   for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
     for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
@@ -75,7 +95,7 @@ std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& m
       {"weathergenVersion", WEATHERGEN_VERSION},
       {"material", graph.name},
       {"contentHash", hash},
-      {"weatherPreset", graph.weatherPreset},
+      {"weather", weatherJson(graph)},
       {"alphaTested", graph.alphaTested},
       {"alphaCutoff", graph.alphaCutoff},
       {"blocks", Json::array({blockJson(mi.frame, nullptr), blockJson(mi.material, &graph)})},
@@ -83,8 +103,8 @@ std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& m
       {"vertexInputs", stageVariablesJson(mi.vertexInputs)},
       {"varyings", stageVariablesJson(mi.varyings)},
       {"fragmentOutputs", Json::array({{{"name", "color"}, {"location", 0}, {"type", "vec4"}}})},
-      {"debugViews", Json::array({{{"id", 0}, {"name", "lit"}}, {{"id", 1}, {"name", "albedo"}},
-                                  {{"id", 2}, {"name", "roughness"}}, {{"id", 3}, {"name", "normal"}}})},
+      {"weatherMaps", std::move(weatherMaps)},
+      {"debugViews", std::move(debugViews)},
       {"files", std::move(files)},
   };
   return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";

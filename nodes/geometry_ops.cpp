@@ -37,7 +37,7 @@ void appendGeometryOps(std::vector<OpDef>& ops) {
                             return Value::vec4(v[0], v[1], v[2], v[3]);
                           }));
   ops.push_back(surfaceOp("time", "seconds since the scene started", ValueType::Float, "{@time}",
-                          [](const Value*, const EvalContext& c) { return Value::scalar(c.surface->time); }));
+                          [](const Value*, const EvalContext& c) { return Value::scalar(c.frame->time); }));
   ops.push_back({"parameter", "input", "reads a material parameter (set \"param\" on the node)", {},
                  ValueRule::Parameter, ValueType::Float, "{@parameter}", "", singleOutput(),
                  [](const Value*, const EvalContext& c) { return (*c.parameters)[c.parameterIndex]; },

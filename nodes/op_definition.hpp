@@ -39,15 +39,34 @@ struct SurfacePoint {
   std::array<float, 4> tangent{1.f, 0.f, 0.f, 1.f};
   std::array<float, 2> texcoord{0.f, 0.f};
   std::array<float, 4> vertexColor{1.f, 1.f, 1.f, 1.f};
-  float time = 0.f;
+  // What the GPU reads from the shared weather maps at this point.
+  float skyExposure = 1.f;  // 1: open sky; 0: fully sheltered
+};
+
+// The CPU mirror of the frame and weather uniforms the weather ops read.
+struct FrameState {
+  std::array<float, 3> cameraPosition{0.f, 2.f, 5.f};
+  std::array<float, 3> sunDirection{0.f, 1.f, 0.f};  // towards the sun
+  float sunIntensity = 0.f;
+  float temperature = 15.f;
+  float precipitation = 0.f;
+  std::array<float, 2> windDirection{1.f, 0.f};
+  float windIntensity = 0.f;
+  float snowLevel = 0.f, wetnessLevel = 0.f, mossLevel = 0.f, frostLevel = 0.f, puddleLevel = 0.f;
+  float terrainHeightScale = 1.f;
+  std::array<float, 4> terrainRegion{0.f, 0.f, 0.f, 0.f};  // xz origin, 1/size (eq. 3.11)
+  float time = 0.f;  // seconds
 };
 
 struct TextureSampler;  // nodes/texture_sampling.hpp
+struct Image;           // nodes/texture_image.hpp
 
 struct EvalContext {
   const SurfacePoint* surface = nullptr;
   const TextureSampler* textures = nullptr;  // null while constant folding
   const std::vector<Value>* parameters = nullptr;
+  const FrameState* frame = nullptr;
+  const Image* terrainHeight = nullptr;  // null: flat terrain
   // Node-level settings (resolved by the compiler).
   std::string_view text;  // swizzle channels
   int parameterIndex = -1;
@@ -92,6 +111,8 @@ struct OpDef {
   CpuEval eval = nullptr;
   OpPurity purity = OpPurity::Pure;
   std::vector<const ShaderLibrary*> libraries;
+  // Shared weather maps the op samples (set 0): "terrainHeight", "skyExposure".
+  std::vector<std::string_view> weatherMaps;
 
   const PortSpec* findInput(std::string_view port) const;
   int findOutput(std::string_view output) const;

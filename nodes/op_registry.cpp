@@ -28,6 +28,7 @@ struct Registry {
     appendTextureOps(ops);
     appendProceduralOps(ops);
     appendNormalMapOps(ops);
+    appendWeatherOps(ops);
     for (const auto& op : ops) sorted.push_back(&op);
     std::sort(sorted.begin(), sorted.end(),
               [](const OpDef* a, const OpDef* b) { return a->name < b->name; });

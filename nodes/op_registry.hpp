@@ -19,5 +19,6 @@ void appendGeometryOps(std::vector<OpDef>& ops);
 void appendTextureOps(std::vector<OpDef>& ops);
 void appendProceduralOps(std::vector<OpDef>& ops);
 void appendNormalMapOps(std::vector<OpDef>& ops);
+void appendWeatherOps(std::vector<OpDef>& ops);
 
 }  // namespace wg

@@ -11,7 +11,7 @@ void appendProceduralOps(std::vector<OpDef>& ops) {
                  {{"uv", PortType::Vec2, std::nullopt}, {"speed", PortType::Vec2, Value::vec2(0.f, 0.f)}},
                  ValueRule::Fixed, ValueType::Vec2, "({uv} + {speed} * {@time})", "", singleOutput(),
                  [](const Value* in, const EvalContext& c) {
-                   float t = c.surface->time;
+                   float t = c.frame->time;
                    return Value::vec2(in[0].v[0] + in[1].v[0] * t, in[0].v[1] + in[1].v[1] * t);
                  },
                  OpPurity::Varying});

@@ -10,12 +10,13 @@ namespace wg {
 namespace {
 
 Value eval(std::string_view opName, std::vector<Value> inputs, std::string_view text = "",
-           const SurfacePoint* surface = nullptr) {
+           const SurfacePoint* surface = nullptr, const FrameState* frame = nullptr) {
   const OpDef* op = findOp(opName);
   EXPECT_NE(op, nullptr) << opName;
   EvalContext context;
   context.text = text;
   context.surface = surface;
+  context.frame = frame;
   return op->eval(inputs.data(), context);
 }
 
@@ -96,12 +97,13 @@ TEST(NodeSemantics, GeometryReadsTheSurface) {
   SurfacePoint s;
   s.texcoord = {0.25f, 0.75f};
   s.worldPosition = {1, 2, 3};
-  s.time = 4;
-  expectValue(eval("texcoord", {}, "", &s), Value::vec2(0.25f, 0.75f));
-  expectValue(eval("world_position", {}, "", &s), Value::vec3(1, 2, 3));
-  expectValue(eval("time", {}, "", &s), Value::scalar(4));
+  FrameState f;
+  f.time = 4;
+  expectValue(eval("texcoord", {}, "", &s, &f), Value::vec2(0.25f, 0.75f));
+  expectValue(eval("world_position", {}, "", &s, &f), Value::vec3(1, 2, 3));
+  expectValue(eval("time", {}, "", &s, &f), Value::scalar(4));
   // Panner(h, v, time): uv + (h, v) * time.
-  expectValue(eval("panner", {Value::vec2(0.5f, 0.5f), Value::vec2(0.1f, -0.2f)}, "", &s), Value::vec2(0.9f, -0.3f));
+  expectValue(eval("panner", {Value::vec2(0.5f, 0.5f), Value::vec2(0.1f, -0.2f)}, "", &s, &f), Value::vec2(0.9f, -0.3f));
 }
 
 TEST(NodeSemantics, NormalMaps) {

@@ -1,0 +1,218 @@
+// weather-inject: inserts the weather subgraph between the material's PBR attributes
+// and the output (seed 000: weather functions run after the original shader). The base
+// graph is left as it is; only the output bindings move to the weathered values. With
+// preset "none" the pass does nothing, so the shader is exactly the unweathered one.
+#include <algorithm>
+
+#include "compiler/ir_node_builder.hpp"
+#include "compiler/pass_pipeline.hpp"
+#include "nodes/weather_model.hpp"
+
+namespace wg {
+
+namespace {
+
+// Parameters the pass publishes (material block), sorted in with the user's.
+struct WeatherParameter {
+  std::string_view name;
+  std::string_view label;
+  float WeatherConfig::*field;  // default from the config, or null for a weight
+  int weight;                   // 0-3 for w1-w4, else -1
+  float min, max;
+};
+constexpr std::array<WeatherParameter, 7> kParameters = {{
+    {"weather.w1", "Snow weight w1 (sun, eq. 3.1)", nullptr, 0, 0.f, 16.f},
+    {"weather.w2", "Snow weight w2 (wind, eq. 3.1)", nullptr, 1, 0.f, 16.f},
+    {"weather.w3", "Snow weight w3 (height, eq. 3.1)", nullptr, 2, 0.f, 16.f},
+    {"weather.w4", "Snow weight w4 (terrain, eq. 3.1)", nullptr, 3, 0.f, 16.f},
+    {"weather.maxSnowHeight", "Max snow height (m, eq. 3.10)", &WeatherConfig::maxSnowHeight, -1, 0.f, 10.f},
+    {"weather.minHeight", "Snow line low (m, eq. 3.8)", &WeatherConfig::minHeight, -1, -1e5f, 1e5f},
+    {"weather.maxHeight", "Snow line high (m, eq. 3.8)", &WeatherConfig::maxHeight, -1, -1e5f, 1e5f},
+}};
+
+// Adds the weather parameters, keeps the list sorted by name (identifiers and
+// offsets depend on that order) and renumbers existing parameter nodes.
+std::vector<int> addParameters(IrGraph& g) {
+  std::vector<ParameterDecl> all = g.parameters;
+  for (const auto& p : kParameters) {
+    float value = p.weight >= 0 ? g.weather.weights[static_cast<std::size_t>(p.weight)] : g.weather.*(p.field);
+    all.push_back({std::string(p.name), ValueType::Float, Value::scalar(value), p.min, p.max, std::string(p.label), ""});
+  }
+  std::vector<std::size_t> order(all.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all[a].name < all[b].name; });
+  std::vector<int> newIndex(all.size());
+  std::vector<ParameterDecl> sorted;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    newIndex[order[i]] = static_cast<int>(i);
+    sorted.push_back(all[order[i]]);
+  }
+  for (auto& node : g.nodes)
+    if (node.parameter >= 0) node.parameter = newIndex[static_cast<std::size_t>(node.parameter)];
+  g.parameters = std::move(sorted);
+  std::vector<int> weatherIndex;
+  for (std::size_t i = 0; i < kParameters.size(); ++i) weatherIndex.push_back(newIndex[g.parameters.size() - kParameters.size() + i]);
+  return weatherIndex;
+}
+
+class WeatherInjector {
+ public:
+  explicit WeatherInjector(IrGraph& g) : g_(g), b_(g), cfg_(g.weather) {}
+
+  void run() {
+    const WeatherEffects& e = cfg_.effects;
+    std::vector<int> params = addParameters(g_);
+    for (std::size_t i = 0; i < params.size(); ++i) paramNodes_.push_back(b_.parameter(params[i]));
+
+    position_ = b_.add("world_position", {});
+    normal_ = b_.add("world_normal", {});
+    exposure_ = e.skyExposure ? b_.add("sky_exposure", {{"position", position_}}) : IrNodeBuilder::constant(1.f);
+    diffuse_ = g_.output(PbrField::BaseColor);
+
+    color_ = g_.output(PbrField::BaseColor);
+    roughness_ = g_.output(PbrField::Roughness);
+    specular_ = g_.output(PbrField::Specular);
+    metallic_ = g_.output(PbrField::Metallic);
+    tangentNormal_ = g_.output(PbrField::Normal);
+    weights_ = b_.add("combine4", {{"x", paramNodes_[0]}, {"y", paramNodes_[1]}, {"z", paramNodes_[2]}, {"w", paramNodes_[3]}});
+    shape_ = b_.add("combine4", {{"x", paramNodes_[5]}, {"y", paramNodes_[6]}, {"z", IrNodeBuilder::constant(cfg_.inclinationIntensity)}});
+    terms_ = IrNodeBuilder::constant(Value::vec4(cfg_.terms[0], cfg_.terms[1], cfg_.terms[2], cfg_.terms[3]));
+
+    // Order of the layers: moss grows on the rock, snow lies on top, rain wets both,
+    // water pools in puddles, and frost or ice forms last.
+    if (e.moss) addMoss();
+    if (e.snow) addSnow();
+    if (e.wetness) addWetness();
+    if (e.puddles) addPuddles();
+    if (e.ice) addIce();
+    if (e.hoarfrost) addHoarfrost();
+    if (e.foliageDensity) addFoliageDensity();
+
+    g_.output(PbrField::BaseColor) = color_;
+    g_.output(PbrField::Roughness) = roughness_;
+    g_.output(PbrField::Specular) = specular_;
+    g_.output(PbrField::Metallic) = metallic_;
+    g_.output(PbrField::Normal) = tangentNormal_;
+  }
+
+ private:
+  Operand lerp(const Operand& a, const Operand& b, const Operand& t) {
+    return b_.add("lerp", {{"a", a}, {"b", b}, {"t", t}});
+  }
+  static Operand k(float x) { return IrNodeBuilder::constant(x); }
+  static Operand flatNormal() { return IrNodeBuilder::constant(Value::vec3(0.f, 0.f, 1.f)); }
+
+  // Covers the surface with a layer: albedo, roughness and specular move to the
+  // layer's, metals become dielectric, and the normal map flattens under it.
+  void cover(const Operand& coverage, const Operand& albedo, float roughness, float specular, float normalFlattening) {
+    color_ = lerp(color_, albedo, coverage);
+    roughness_ = lerp(roughness_, k(roughness), coverage);
+    specular_ = lerp(specular_, k(specular), coverage);
+    metallic_ = lerp(metallic_, k(0.f), coverage);
+    if (normalFlattening > 0.f)
+      tangentNormal_ = lerp(tangentNormal_, flatNormal(), b_.add("multiply", {{"a", coverage}, {"b", k(normalFlattening)}}));
+  }
+
+  Operand terrainTerm() {
+    // Eq. 3.11-3.13: slope of the shared height map under the object.
+    Operand uv = b_.add("terrain_coord", {{"position", position_}});
+    Operand h0 = b_.add("terrain_height", {{"uv", uv}});
+    Operand hu = b_.add("terrain_height", {{"uv", b_.add("add", {{"a", uv}, {"b", IrNodeBuilder::constant(Value::vec2(0.05f, 0.f))}})}});
+    Operand hv = b_.add("terrain_height", {{"uv", b_.add("add", {{"a", uv}, {"b", IrNodeBuilder::constant(Value::vec2(0.f, 0.05f))}})}});
+    Operand slope = b_.add("weather_terrain_slope",
+                           {{"h0", h0}, {"hShiftU", hu}, {"hShiftV", hv}, {"intensity", k(cfg_.terrainSlopeIntensity)}});
+    Operand tangentZ = b_.output(b_.add("split", {{"in", g_.output(PbrField::Normal)}}), "z");
+    return b_.add("weather_terrain_orientation", {{"slope", slope}, {"normal", normal_}, {"tangentNormalZ", tangentZ},
+                                                  {"intensity", k(cfg_.terrainIntensity)}});
+  }
+
+  void addSnow() {
+    Operand detailNormal = b_.add("tangent_to_world", {{"normal", g_.output(PbrField::Normal)}});
+    Operand terrain = cfg_.effects.terrainOrientation ? terrainTerm() : k(0.f);
+    Operand coverage = b_.add("weather_snow_coverage", {{"normal", normal_}, {"detailNormal", detailNormal},
+                                                        {"position", position_}, {"diffuse", diffuse_}, {"terrain", terrain},
+                                                        {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
+                                                        {"terms", terms_}});
+    cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), weather::kSnowRoughness, 0.5f, 0.7f);
+    g_.coverage(CoverageTerm::Snow) = coverage;
+    if (cfg_.effects.displacement) {
+      Operand offset = b_.add("weather_snow_offset", {{"normal", normal_}, {"position", position_}, {"exposure", exposure_},
+                                                      {"weights", weights_}, {"shape", shape_}, {"terms", terms_},
+                                                      {"maxSnowHeight", paramNodes_[4]}});
+      g_.output(PbrField::WorldPositionOffset) =
+          b_.add("add", {{"a", g_.output(PbrField::WorldPositionOffset)}, {"b", offset}});
+    }
+  }
+
+  void addMoss() {
+    Operand coverage = b_.add("weather_moss_coverage", {{"normal", normal_}, {"position", position_}, {"diffuse", diffuse_},
+                                                        {"weights", weights_}, {"shape", shape_}});
+    cover(coverage, b_.add("weather_moss_albedo", {{"diffuse", diffuse_}}), weather::kMossRoughness, 0.5f, 0.f);
+    g_.coverage(CoverageTerm::Moss) = coverage;
+  }
+
+  void addWetness() {
+    Operand p = b_.add("weather_wetness", {{"exposure", exposure_}});
+    color_ = b_.add("weather_wet_diffuse", {{"diffuse", color_}, {"p", p}});
+    roughness_ = b_.add("weather_wet_roughness", {{"roughness", roughness_}, {"p", p}});
+    tangentNormal_ = b_.add("weather_wet_normal", {{"normal", tangentNormal_}, {"position", position_}, {"p", p}});
+    g_.coverage(CoverageTerm::Wet) = p;
+  }
+
+  void addPuddles() {
+    // Flooded: water's F0 0.02 and a near-mirror surface over a darkened base.
+    Operand coverage = b_.add("weather_puddle_coverage", {{"normal", normal_}, {"position", position_}, {"exposure", exposure_}});
+    Operand darkened = b_.add("multiply", {{"a", color_}, {"b", k(kPuddleDarkening)}});
+    cover(coverage, darkened, weather::kPuddleRoughness, weather::kWaterSpecular, 1.f);
+    g_.coverage(CoverageTerm::Puddle) = coverage;
+  }
+
+  void addIce() {
+    // Eq. 3.20's frost map: 0 on the banks, 1 mid-stream, from the river's v coordinate.
+    Operand v = b_.output(b_.add("split", {{"in", b_.add("texcoord", {})}}), "y");
+    Operand across = b_.add("abs", {{"in", b_.add("subtract", {{"a", b_.add("multiply", {{"a", v}, {"b", k(2.f)}})}, {"b", k(1.f)}})}});
+    Operand frostMap = b_.add("one_minus", {{"in", across}});
+    Operand coverage = b_.add("weather_frost_coverage", {{"frostMap", frostMap}});
+    cover(coverage, b_.add("weather_ice_albedo", {{"diffuse", diffuse_}}), weather::kIceRoughness, weather::kIceSpecular, 1.f);
+    g_.coverage(CoverageTerm::Frost) = coverage;
+    g_.coverage(CoverageTerm::Ice) = coverage;
+  }
+
+  void addHoarfrost() {
+    Operand coverage = b_.add("weather_hoarfrost_coverage", {{"position", position_}, {"exposure", exposure_}});
+    Operand partial = b_.add("multiply", {{"a", coverage}, {"b", k(kHoarfrostOpacity)}});
+    cover(partial, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), weather::kFrostRoughness, 0.5f, 0.f);
+    g_.coverage(CoverageTerm::Frost) = coverage;
+  }
+
+  void addFoliageDensity() {
+    // Section 5.1.1: foliage density falls as snow rises; alpha testing thins the cards.
+    Operand snow = b_.output(b_.add("weather_levels", {}), "snow");
+    Operand sheltered = b_.add("multiply", {{"a", snow}, {"b", exposure_}});
+    Operand density = b_.add("saturate", {{"in", b_.add("subtract", {{"a", k(1.f)}, {"b", b_.add("multiply", {{"a", sheltered}, {"b", k(cfg_.foliageThinning)}})}})}});
+    g_.output(PbrField::Opacity) = b_.add("multiply", {{"a", g_.output(PbrField::Opacity)}, {"b", density}});
+    g_.alphaTested = true;
+    g_.coverage(CoverageTerm::Density) = density;
+  }
+
+  // Puddle water darkens what it floods (Lagarde: porous surfaces under water).
+  static constexpr float kPuddleDarkening = 0.55f;
+  // Hoarfrost is a thin, partial crystal layer, never full snow cover.
+  static constexpr float kHoarfrostOpacity = 0.6f;
+
+  IrGraph& g_;
+  IrNodeBuilder b_;
+  const WeatherConfig& cfg_;
+  std::vector<Operand> paramNodes_;
+  Operand position_, normal_, exposure_, diffuse_, color_, roughness_, specular_, metallic_, tangentNormal_;
+  Operand weights_, shape_, terms_;
+};
+
+}  // namespace
+
+void injectWeather(IrGraph& graph) {
+  if (!graph.weather.active()) return;
+  WeatherInjector(graph).run();
+}
+
+}  // namespace wg

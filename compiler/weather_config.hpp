@@ -1,0 +1,57 @@
+// What the weather-inject pass adds to a material: a preset (seed 000, chapter 5) plus
+// the graph's overrides. Settings here are compile-time constants, so a disabled
+// effect folds away entirely; w1-w4, maxSnowHeight and the height range become
+// material parameters that artists can tune at run time.
+#pragma once
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostic.hpp"
+#include "compiler/json_document.hpp"
+
+namespace wg {
+
+struct WeatherEffects {
+  bool snow = false;
+  bool displacement = false;        // eq. 3.10, vertex stage
+  bool terrainOrientation = false;  // eq. 3.11-3.13
+  bool moss = false;
+  bool wetness = false;  // eq. 3.15-3.18
+  bool puddles = false;  // section 5.1.2
+  bool ice = false;      // eq. 3.20 frost mask from the banks, then ice
+  bool hoarfrost = false;  // frost crystals on exposed ground
+  bool foliageDensity = false;  // foliage thins under snow
+  bool skyExposure = true;      // sheltered points get no snow, rain or puddles
+};
+
+struct WeatherConfig {
+  std::string preset = "none";
+  WeatherEffects effects;
+  // Eq. 3.1 switches: inclination, sun, height, wind (a factor switched off counts as 1).
+  std::array<float, 4> terms{1.f, 1.f, 1.f, 1.f};
+  std::array<float, 4> weights{2.f, 0.5f, 2.f, 0.5f};  // w1 sun, w2 wind, w3 height, w4 terrain
+  float maxSnowHeight = 0.25f;  // metres: the seed's test scene uses 25 cm
+  float minHeight = -50.f, maxHeight = 50.f;  // metres, eq. 3.8
+  float inclinationIntensity = 0.5f;  // eq. 3.4's normal-map term
+  float terrainSlopeIntensity = 10.f;  // eq. 3.12: height-map differences are small over 0.05 uv
+  float terrainIntensity = 1.f;        // eq. 3.13
+  float foliageThinning = 0.8f;        // share of foliage cards removed under full snow
+
+  bool active() const { return preset != "none"; }
+};
+
+std::vector<std::string_view> weatherPresetNames();
+std::optional<WeatherConfig> weatherPreset(std::string_view name);
+
+// Resolves the graph's "weather" value (a preset name or an object with "preset" and
+// overrides), with presetOverride (the CLI's --weather-preset) replacing the preset.
+// Reports WG4001/WG4002 and returns nullopt on errors.
+std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::json>& block,
+                                                  const std::string& pointer,
+                                                  const std::optional<std::string>& presetOverride,
+                                                  const JsonDocument& document, DiagnosticList& diagnostics);
+
+}  // namespace wg

@@ -1,0 +1,217 @@
+#include "nodes/weather_model.hpp"
+
+#include <cmath>
+
+#include "nodes/lattice_noise.hpp"
+
+namespace wg::weather {
+
+namespace {
+// Eq. 3.10: the displacement noise is brightened so it never opens holes.
+constexpr float kNoiseBrightening = 0.75f;
+// Eq. 3.12: the height map is shifted by 0.05 texture units to measure slope.
+constexpr float kTerrainShift = 0.05f;
+// Eq. 3.16: wet diffuse is toned down to 70 %.
+constexpr float kWetDarkening = 0.7f;
+// Eq. 3.18: the flowing-water normal pans at (0.5 p, 0.01 p) units per second.
+constexpr glm::vec2 kWetFlowSpeed{0.5f, 0.01f};
+// Eq. 3.20: the frost gradient's exponent runs from 0 to 5.
+constexpr float kFrostExponentMax = 5.f;
+// Liquid water has no frozen banks: the frost mask fades in over the first 1/10 of frost.
+constexpr float kFrostFadeIn = 10.f;
+// Section 5.1.2: puddles only within 8 degrees of up; fully formed within 4.
+const float kCosPuddleMaxSlope = std::cos(glm::radians(8.f));
+const float kCosPuddleFullSlope = std::cos(glm::radians(4.f));
+// Puddle shapes: high-contrast noise of about 3 m blobs, with a soft 0.1-wide edge.
+constexpr float kPuddleNoiseScale = 0.35f;
+constexpr float kPuddleEdge = 0.05f;
+// World-space noise frequencies (cells per metre) for transitions, wind and ripples.
+constexpr float kCoverageNoiseScale = 1.5f;
+constexpr float kWindFlowScale = 0.25f;
+constexpr float kRippleScale = 2.f;
+constexpr float kRippleStrength = 0.25f;
+// Offsets that decorrelate a second noise lookup from the first.
+constexpr glm::vec2 kDecorrelate{17.3f, 9.1f};
+// Temperatures (C) over which rain turns into wetness (eq. 3.15's T > 0, made continuous).
+constexpr float kWetTemperatureRamp = 1.f;
+// Precipitation over which the flowing-water normal fades in (eq. 3.15's P > 0).
+constexpr float kRainFlowRamp = 0.1f;
+// Maps a typical diffuse reflectance (0.1-0.5) across each measured band.
+constexpr float kSnowBandSpread = 2.f, kMossBandSpread = 1.5f, kIceBandSpread = 3.f;
+// Hues, normalised to reflectance 1 below: slightly blue snow, moss green, blue-white ice.
+constexpr glm::vec3 kSnowTint{0.97f, 0.985f, 1.f};
+constexpr glm::vec3 kMossTint{0.45f, 0.75f, 0.2f};
+constexpr glm::vec3 kIceTint{0.85f, 0.95f, 1.f};
+// Height differences below this (metres) would divide by zero in eq. 3.8.
+constexpr float kMinHeightRange = 1e-3f;
+// Eq. 3.20 raises 1 - F to a power that may be 0; pow(0, 0) is undefined in shaders.
+constexpr float kMinFrostBase = 1e-4f;
+
+glm::vec3 bandAlbedo(glm::vec3 diffuse, glm::vec3 tint, Band band, float spread) {
+  float value = lerp(band.low, band.high, clamp01(detailMask(diffuse) * spread));
+  return tint / reflectance(tint) * value;
+}
+
+float smoothStep(float e0, float e1, float x) {
+  float t = clamp01((x - e0) / (e1 - e0));
+  return t * t * (3.f - 2.f * t);
+}
+}  // namespace
+
+float reflectance(glm::vec3 albedo) { return glm::dot(kDetailWeights, albedo); }
+
+float clamp01(float x) { return std::min(std::max(x, 0.f), 1.f); }
+
+float lerp(float a, float b, float p) { return a * (1.f - p) + b * p; }
+
+float inclination(glm::vec3 normal, glm::vec3 detailNormal, float intensity) {
+  float c = clamp01(glm::dot(normal, kUp) + glm::dot(detailNormal, kUp) * intensity);
+  return c * c * c;
+}
+
+float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float sunIntensity) {
+  return clamp01(glm::dot(normal, -towardsSun) * clamp01(sunIntensity) + 1.f);
+}
+
+float windFlow(glm::vec2 xz, glm::vec2 direction, float time) {
+  glm::vec2 p = xz * kWindFlowScale;
+  auto pan = [&](float h, float v) { return valueNoise(p.x + h * time, p.y + v * time); };
+  return pan(direction.x, direction.y) + 0.5f * pan(direction.y, direction.x);
+}
+
+float windInfluence(glm::vec3 normal, glm::vec2 xz, glm::vec2 direction, float intensity, float time) {
+  glm::vec3 flow = glm::vec3(direction.x, 0.f, direction.y) * windFlow(xz, direction, time);
+  return clamp01(glm::dot(normal, flow) + intensity);
+}
+
+float height(float y, float minHeight, float maxHeight) {
+  return clamp01((y - minHeight) / std::max(maxHeight - minHeight, kMinHeightRange));
+}
+
+float heightInverted(float y, float minHeight, float maxHeight) { return 1.f - height(y, minHeight, maxHeight); }
+
+glm::vec3 snowDisplacement(float noise, float progress, float maxSnowHeight, glm::vec3 normal) {
+  return (clamp01(noise + kNoiseBrightening) * progress * maxSnowHeight) * normal;
+}
+
+glm::vec3 terrainSlope(float h0, float hShiftU, float hShiftV, float intensity) {
+  return glm::cross(glm::vec3(1.f, 0.f, intensity * (hShiftU - h0)), glm::vec3(0.f, 1.f, intensity * (hShiftV - h0)));
+}
+
+float terrainOrientation(glm::vec3 slope, glm::vec3 normal, float tangentNormalZ, float intensity) {
+  glm::vec3 horizontal(slope.x, 0.f, slope.y);  // height-map (u, v) lie along world (x, z)
+  return glm::dot(horizontal, normal) * tangentNormalZ * intensity;
+}
+
+float transition(float noise, float progress) { return clamp01(noise - 1.f + 3.f * progress); }
+
+float prediction(float inc, float sun, float heightTerm, float terrain, float wind, glm::vec4 w) {
+  return clamp01(inc * (w.x * sun * w.z * heightTerm + w.w * terrain + w.y * wind));
+}
+
+float wetness(float temperature, float wetnessLevel, float exposure) {
+  return clamp01(wetnessLevel) * clamp01(exposure) * smoothStep(0.f, kWetTemperatureRamp, temperature);
+}
+
+glm::vec3 wetDiffuse(glm::vec3 diffuse, float p) { return diffuse * lerp(1.f, kWetDarkening, p); }
+
+float wetRoughness(float roughness, float p) { return clamp01(roughness - p); }
+
+glm::vec3 wetNormal(glm::vec3 tangentNormal, glm::vec2 xz, float p, float precipitation, float time) {
+  float rain = smoothStep(0.f, kRainFlowRamp, precipitation);
+  if (p <= 0.f || rain <= 0.f) return tangentNormal;
+  glm::vec2 uv = xz * kRippleScale + kWetFlowSpeed * p * time;
+  glm::vec2 pan(valueNoise(uv.x, uv.y) - 0.5f, valueNoise(uv.x + kDecorrelate.x, uv.y + kDecorrelate.y) - 0.5f);
+  return tangentNormal + glm::vec3(pan * (2.f * kRippleStrength * rain), 0.f);
+}
+
+glm::vec3 desaturate(glm::vec3 in, float p) { return p * glm::dot(kDetailWeights, in) + (1.f - p) * in; }
+
+float detailMask(glm::vec3 diffuse) { return clamp01(desaturate(diffuse, 1.f).x); }
+
+glm::vec3 snowAlbedo(glm::vec3 diffuse) { return bandAlbedo(diffuse, kSnowTint, kSnowBand, kSnowBandSpread); }
+glm::vec3 mossAlbedo(glm::vec3 diffuse) { return bandAlbedo(diffuse, kMossTint, kGrassBand, kMossBandSpread); }
+glm::vec3 iceAlbedo(glm::vec3 diffuse) { return bandAlbedo(diffuse, kIceTint, kOceanIceBand, kIceBandSpread); }
+
+float frostMask(float frostMap, float frostLevel) {
+  float exponent = lerp(0.f, kFrostExponentMax, 1.f - clamp01(frostLevel));
+  return std::pow(std::max(1.f - clamp01(frostMap), kMinFrostBase), exponent) * clamp01(frostLevel * kFrostFadeIn);
+}
+
+float puddleMask(glm::vec3 normal, float noise, float puddleLevel) {
+  float flat = smoothStep(kCosPuddleMaxSlope, kCosPuddleFullSlope, glm::dot(normal, kUp));
+  float shaped = smoothStep(0.5f - kPuddleEdge, 0.5f + kPuddleEdge, noise + puddleLevel - 0.5f);
+  return flat * shaped;
+}
+
+float coverageNoise(glm::vec3 position) {
+  return valueNoise(position.x * kCoverageNoiseScale, position.z * kCoverageNoiseScale);
+}
+
+namespace {
+glm::vec3 toVec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
+glm::vec2 toVec2(const std::array<float, 2>& a) { return {a[0], a[1]}; }
+
+// Eq. 3.1 with the shape's switches: a switched-off factor counts as 1, a switched-off
+// sum term as 0.
+float shapedPrediction(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
+                       float terrain, const SnowShape& shape) {
+  float inc = lerp(1.f, inclination(normal, detailNormal, shape.inclinationIntensity), shape.terms.x);
+  float sun = lerp(1.f, sunFacing(normal, toVec3(frame.sunDirection), frame.sunIntensity), shape.terms.y);
+  float h = lerp(1.f, height(position.y, shape.minHeight, shape.maxHeight), shape.terms.z);
+  float wind = windInfluence(normal, {position.x, position.z}, toVec2(frame.windDirection), frame.windIntensity,
+                             frame.time) *
+               shape.terms.w;
+  return prediction(inc, sun, h, terrain, wind, shape.weights);
+}
+}  // namespace
+
+float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
+                   glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape) {
+  float level = clamp01(frame.snowLevel) * clamp01(exposure);
+  if (level <= 0.f) return 0.f;
+  float fp = shapedPrediction(frame, normal, detailNormal, position, terrain, shape);
+  float noise = 0.5f * coverageNoise(position) + 0.5f * (1.f - detailMask(diffuse));
+  return transition(noise, fp * level);
+}
+
+glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure,
+                     const SnowShape& shape, float maxSnowHeight) {
+  float level = clamp01(frame.snowLevel) * clamp01(exposure);
+  if (level <= 0.f) return glm::vec3(0.f);
+  float fp = shapedPrediction(frame, normal, normal, position, 0.f, shape);
+  return snowDisplacement(coverageNoise(position), fp * level, maxSnowHeight, normal);
+}
+
+float mossCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, glm::vec3 diffuse,
+                   const SnowShape& shape) {
+  float level = clamp01(frame.mossLevel);
+  if (level <= 0.f) return 0.f;
+  float sun = sunFacing(normal, toVec3(frame.sunDirection), frame.sunIntensity);
+  float low = heightInverted(position.y, shape.minHeight, shape.maxHeight);
+  // Moss clings to tops and sides but not to overhangs.
+  float facing = 0.5f + 0.5f * glm::dot(normal, kUp);
+  float predicted = clamp01(shape.weights.x * sun * shape.weights.z * low) * facing;
+  float noise = 0.5f * coverageNoise(position + glm::vec3(kDecorrelate.x, 0.f, kDecorrelate.y)) +
+                0.5f * (1.f - detailMask(diffuse));
+  return transition(noise, predicted * level);
+}
+
+float puddleCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure) {
+  float level = clamp01(frame.puddleLevel) * clamp01(exposure);
+  if (level <= 0.f) return 0.f;
+  return puddleMask(normal, valueNoise(position.x * kPuddleNoiseScale, position.z * kPuddleNoiseScale), level);
+}
+
+float frostCoverage(const FrameState& frame, float frostMap) {
+  if (frame.frostLevel <= 0.f) return 0.f;
+  return frostMask(frostMap, frame.frostLevel);
+}
+
+float hoarfrostCoverage(const FrameState& frame, glm::vec3 position, float exposure) {
+  float level = clamp01(frame.frostLevel) * clamp01(exposure);
+  if (level <= 0.f) return 0.f;
+  return transition(coverageNoise(position), level);
+}
+
+}  // namespace wg::weather

@@ -1,0 +1,97 @@
+// The weather functions of seed 000, chapter 3, on the CPU. The shader library in
+// nodes/weather_shader_library.cpp is the same code in GLSL and HLSL; the CPU
+// evaluator and constant folding use these. docs/weather-model.md explains each
+// equation and the reading chosen where the print is ambiguous.
+#pragma once
+#include <glm/glm.hpp>
+
+#include "nodes/op_definition.hpp"
+
+namespace wg::weather {
+
+// The seed works in UE4's Z-up world; weathergen's world is Y-up, so the seed's
+// (0, 0, 1) "up" is (0, 1, 0) here.
+inline constexpr glm::vec3 kUp{0.f, 1.f, 0.f};
+// Eq. 3.19's desaturation weights; also how we measure an albedo's reflectance
+// against Table 4.1.
+inline constexpr glm::vec3 kDetailWeights{0.3f, 0.59f, 0.11f};
+
+// Table 4.1: measured reflectance bands (Remember Me, GDC 2013).
+struct Band {
+  float low, high;
+};
+inline constexpr Band kSnowBand{0.90f, 0.95f};
+inline constexpr Band kGrassBand{0.25f, 0.53f};
+inline constexpr Band kOceanIceBand{0.50f, 0.70f};
+
+// Surface constants of the weather layers.
+inline constexpr float kWaterSpecular = 0.25f;  // UE4 specular: F0 = 0.08 * 0.25 = 0.02 (water, IOR 1.33)
+inline constexpr float kIceSpecular = 0.225f;   // F0 = 0.018 (ice, IOR 1.31)
+inline constexpr float kPuddleRoughness = 0.02f;  // still water: near mirror
+inline constexpr float kSnowRoughness = 0.65f;    // fresh snow is a rough, forward-scattering dielectric
+inline constexpr float kIceRoughness = 0.12f;
+inline constexpr float kMossRoughness = 0.85f;    // the seed tunes moss "as if it were grass"
+inline constexpr float kFrostRoughness = 0.45f;   // hoarfrost on a road: fine crystals
+
+float reflectance(glm::vec3 albedo);  // dot(kDetailWeights, albedo)
+
+float clamp01(float x);                      // eq. 3.2
+float lerp(float a, float b, float p);       // eq. 3.3
+// Eq. 3.4: Clamp(N.up + (Nd.up) * intensity)^3, Nd the normal-mapped world normal.
+float inclination(glm::vec3 normal, glm::vec3 detailNormal, float intensity);
+// Eq. 3.5: Clamp(N . sunTravel * sunIntensity + 1): sun-facing sides lose cover.
+float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float sunIntensity);
+// Eq. 3.6: f_pan(h, v) = flow(xz + (h, v) * time); f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x).
+float windFlow(glm::vec2 xz, glm::vec2 direction, float time);
+// Eq. 3.7: Clamp(N . (d.x, 0, d.y) * f_wind(d) + windIntensity).
+float windInfluence(glm::vec3 normal, glm::vec2 xz, glm::vec2 direction, float intensity, float time);
+float height(float y, float minHeight, float maxHeight);          // eq. 3.8
+float heightInverted(float y, float minHeight, float maxHeight);  // eq. 3.9
+// Eq. 3.10: (Clamp(noise + 0.75) * progress * maxSnowHeight) * N.
+glm::vec3 snowDisplacement(float noise, float progress, float maxSnowHeight, glm::vec3 normal);
+// Eq. 3.12: (1, 0, I (hH - h0)) x (0, 1, I (hV - h0)) in height-map space (u, v, height).
+glm::vec3 terrainSlope(float h0, float hShiftU, float hShiftV, float intensity);
+// Eq. 3.13: ((slope * (1, 1, 0)) . N) (TN . (0, 0, 1)) intensity, the slope's u, v -> world x, z.
+float terrainOrientation(glm::vec3 slope, glm::vec3 normal, float tangentNormalZ, float intensity);
+float transition(float noise, float progress);  // eq. 3.14: Clamp(noise - 1 + 3 p)
+// Eq. 3.1, grouped so that inclination gates every other term:
+// Clamp(inc * (w1 sun * w3 height + w4 terrain + w2 wind)).
+float prediction(float inc, float sun, float heightTerm, float terrain, float wind, glm::vec4 weights);
+// Eq. 3.15 as a continuous level: wetnessLevel * exposure * smoothstep(0, 1 C, T).
+float wetness(float temperature, float wetnessLevel, float exposure);
+glm::vec3 wetDiffuse(glm::vec3 diffuse, float p);  // eq. 3.16: diffuse * Lerp(1, 0.7, p)
+float wetRoughness(float roughness, float p);      // eq. 3.17: Clamp(R - p)
+// Eq. 3.18: normal + Pan((0.5 p, 0.01 p)) * (1, 1, 0), flowing only while it rains.
+glm::vec3 wetNormal(glm::vec3 tangentNormal, glm::vec2 xz, float p, float precipitation, float time);
+glm::vec3 desaturate(glm::vec3 in, float p);  // eq. 3.19
+float detailMask(glm::vec3 diffuse);          // eq. 3.19 with p = 1: Clamp(d . diffuse)
+glm::vec3 snowAlbedo(glm::vec3 diffuse);      // eq. 3.19 + Table 4.1 snow band
+glm::vec3 mossAlbedo(glm::vec3 diffuse);      // detail mask * green, grass band
+glm::vec3 iceAlbedo(glm::vec3 diffuse);       // ocean-ice band
+// Eq. 3.20: (1 - F)^Lerp(0, 5, 1 - frost), faded in over the first tenth of freezing.
+float frostMask(float frostMap, float frostLevel);
+// Section 5.1.2: flat (within 8 degrees of up) and where high-contrast noise allows.
+float puddleMask(glm::vec3 normal, float noise, float puddleLevel);
+
+// The per-effect coverage functions the injection pass emits. Each returns 0 at
+// once when its level is 0, which is the uniform branch the shaders take.
+struct SnowShape {
+  glm::vec4 weights{2.f, 0.5f, 2.f, 0.5f};  // w1 sun, w2 wind, w3 height, w4 terrain
+  float minHeight = -50.f, maxHeight = 50.f;
+  float inclinationIntensity = 0.5f;
+  glm::vec4 terms{1.f, 1.f, 1.f, 1.f};  // use inclination, sun, height, wind (0 or 1)
+};
+float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
+                   glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape);
+glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure,
+                     const SnowShape& shape, float maxSnowHeight);
+float mossCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, glm::vec3 diffuse,
+                   const SnowShape& shape);
+float puddleCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure);
+float frostCoverage(const FrameState& frame, float frostMap);
+float hoarfrostCoverage(const FrameState& frame, glm::vec3 position, float exposure);
+
+// Low-contrast world-space noise the coverage functions share (value noise, [0, 1]).
+float coverageNoise(glm::vec3 position);
+
+}  // namespace wg::weather

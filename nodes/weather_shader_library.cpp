@@ -1,0 +1,297 @@
+// Shader library text of the weather functions (seed 000, chapter 3): the same code,
+// operation for operation, as nodes/weather_model.cpp, so GPU and CPU agree.
+// The HLSL differs only in type names and two vector comparisons.
+#include "nodes/weather_shader_library.hpp"
+
+#include "nodes/core_library.hpp"
+#include "nodes/lattice_noise.hpp"
+
+namespace wg {
+
+const ShaderLibrary kWeatherLibrary = {
+    "weather",
+    R"WG(// Seed 000, chapter 3. weathergen's world is Y-up: the seed's (0, 0, 1) is (0, 1, 0).
+float wg_clamp01(float x) { return clamp(x, 0.0, 1.0); }  // eq. 3.2
+float wg_lerp(float a, float b, float p) { return a * (1.0 - p) + b * p; }  // eq. 3.3
+float wg_reflectance(vec3 c) { return dot(vec3(0.3, 0.59, 0.11), c); }
+// Eq. 3.4: geometric and normal-mapped world normals against up, cubed.
+float wg_inclination(vec3 n, vec3 nd, float intensity) {
+  float c = wg_clamp01(dot(n, vec3(0.0, 1.0, 0.0)) + dot(nd, vec3(0.0, 1.0, 0.0)) * intensity);
+  return c * c * c;
+}
+// Eq. 3.5: sun-facing sides lose cover, the more the stronger the sun.
+float wg_sun_facing(vec3 n, vec3 towardsSun, float intensity) {
+  return wg_clamp01(dot(n, -towardsSun) * wg_clamp01(intensity) + 1.0);
+}
+// Eq. 3.6: two panning phases of the flow noise.
+float wg_wind_flow(vec2 xz, vec2 d, float t) {
+  vec2 p = xz * 0.25;
+  return wg_value_noise(p + vec2(d.x, d.y) * t) + 0.5 * wg_value_noise(p + vec2(d.y, d.x) * t);
+}
+// Eq. 3.7
+float wg_wind_influence(vec3 n, vec2 xz, vec2 d, float intensity, float t) {
+  vec3 flow = vec3(d.x, 0.0, d.y) * wg_wind_flow(xz, d, t);
+  return wg_clamp01(dot(n, flow) + intensity);
+}
+float wg_height(float y, float lo, float hi) { return wg_clamp01((y - lo) / max(hi - lo, 1e-3)); }  // eq. 3.8
+float wg_height_inverted(float y, float lo, float hi) { return 1.0 - wg_height(y, lo, hi); }  // eq. 3.9
+// Eq. 3.10
+vec3 wg_snow_displacement(float noise, float progress, float maxSnowHeight, vec3 n) {
+  return (wg_clamp01(noise + 0.75) * progress * maxSnowHeight) * n;
+}
+// Eq. 3.12
+vec3 wg_terrain_slope(float h0, float hu, float hv, float intensity) {
+  return cross(vec3(1.0, 0.0, intensity * (hu - h0)), vec3(0.0, 1.0, intensity * (hv - h0)));
+}
+// Eq. 3.13: the slope's height-map (u, v) lie along world (x, z).
+float wg_terrain_orientation(vec3 slope, vec3 n, float tangentNormalZ, float intensity) {
+  return dot(vec3(slope.x, 0.0, slope.y), n) * tangentNormalZ * intensity;
+}
+float wg_transition(float noise, float p) { return wg_clamp01(noise - 1.0 + 3.0 * p); }  // eq. 3.14
+// Eq. 3.1: inclination gates every other term.
+float wg_prediction(float inc, float sun, float h, float terrain, float wind, vec4 w) {
+  return wg_clamp01(inc * (w.x * sun * w.z * h + w.w * terrain + w.y * wind));
+}
+// Eq. 3.15 as a continuous level.
+float wg_wetness(float temperature, float level, float exposure) {
+  return wg_clamp01(level) * wg_clamp01(exposure) * smoothstep(0.0, 1.0, temperature);
+}
+vec3 wg_wet_diffuse(vec3 d, float p) { return d * wg_lerp(1.0, 0.7, p); }  // eq. 3.16
+float wg_wet_roughness(float r, float p) { return wg_clamp01(r - p); }  // eq. 3.17
+// Eq. 3.18: a panning ripple added to the tangent-space normal while it rains.
+vec3 wg_wet_normal(vec3 n, vec2 xz, float p, float precipitation, float t) {
+  float rain = smoothstep(0.0, 0.1, precipitation);
+  if (p <= 0.0 || rain <= 0.0) return n;
+  vec2 uv = xz * 2.0 + vec2(0.5, 0.01) * p * t;
+  vec2 pan = vec2(wg_value_noise(uv) - 0.5, wg_value_noise(uv + vec2(17.3, 9.1)) - 0.5);
+  return n + vec3(pan * (2.0 * 0.25 * rain), 0.0);
+}
+vec3 wg_desaturate(vec3 c, float p) { return p * dot(vec3(0.3, 0.59, 0.11), c) + (1.0 - p) * c; }  // eq. 3.19
+float wg_detail_mask(vec3 d) { return wg_clamp01(wg_desaturate(d, 1.0).x); }  // eq. 3.19
+// Table 4.1: the albedo's reflectance is mapped into the measured band.
+vec3 wg_band_albedo(vec3 d, vec3 tint, float lo, float hi, float spread) {
+  float v = wg_lerp(lo, hi, wg_clamp01(wg_detail_mask(d) * spread));
+  return tint / wg_reflectance(tint) * v;
+}
+vec3 wg_snow_albedo(vec3 d) { return wg_band_albedo(d, vec3(0.97, 0.985, 1.0), 0.9, 0.95, 2.0); }
+vec3 wg_moss_albedo(vec3 d) { return wg_band_albedo(d, vec3(0.45, 0.75, 0.2), 0.25, 0.53, 1.5); }
+vec3 wg_ice_albedo(vec3 d) { return wg_band_albedo(d, vec3(0.85, 0.95, 1.0), 0.5, 0.7, 3.0); }
+// Eq. 3.20, faded in over the first tenth of freezing.
+float wg_frost_mask(float frostMap, float frost) {
+  float e = wg_lerp(0.0, 5.0, 1.0 - wg_clamp01(frost));
+  return pow(max(1.0 - wg_clamp01(frostMap), 1e-4), e) * wg_clamp01(frost * 10.0);
+}
+// Section 5.1.2: within 8 degrees of up (cos 8 = 0.990268), full within 4 (cos 4 = 0.997564).
+float wg_puddle_mask(vec3 n, float noise, float level) {
+  float flatness = smoothstep(0.99026807, 0.99756405, dot(n, vec3(0.0, 1.0, 0.0)));
+  return flatness * smoothstep(0.45, 0.55, noise + level - 0.5);
+}
+float wg_coverage_noise(vec3 p) { return wg_value_noise(vec2(p.x * 1.5, p.z * 1.5)); }
+// Eq. 3.1 with switches: shape = (minHeight, maxHeight, inclination intensity, unused),
+// terms = (inclination, sun, height, wind) as 0 or 1.
+float wg_shaped_prediction(vec3 n, vec3 nd, vec3 p, float terrain, vec4 w, vec4 shape, vec4 terms) {
+  float inc = wg_lerp(1.0, wg_inclination(n, nd, shape.z), terms.x);
+  float sun = wg_lerp(1.0, wg_sun_facing(n, frame_sunDirection, frame_sunIntensity), terms.y);
+  float h = wg_lerp(1.0, wg_height(p.y, shape.x, shape.y), terms.z);
+  float wind = wg_wind_influence(n, vec2(p.x, p.z), frame_windDirection, frame_windIntensity, frame_time) * terms.w;
+  return wg_prediction(inc, sun, h, terrain, wind, w);
+}
+// Each effect returns at once while its level is 0: one uniform branch.
+float wg_snow_coverage(vec3 n, vec3 nd, vec3 p, vec3 diffuse, float terrain, float exposure, vec4 w, vec4 shape,
+                       vec4 terms) {
+  float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
+  if (level <= 0.0) return 0.0;
+  float fp = wg_shaped_prediction(n, nd, p, terrain, w, shape, terms);
+  float noise = 0.5 * wg_coverage_noise(p) + 0.5 * (1.0 - wg_detail_mask(diffuse));
+  return wg_transition(noise, fp * level);
+}
+vec3 wg_snow_offset(vec3 n, vec3 p, float exposure, vec4 w, vec4 shape, vec4 terms, float maxSnowHeight) {
+  float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
+  if (level <= 0.0) return vec3(0.0);
+  float fp = wg_shaped_prediction(n, n, p, 0.0, w, shape, terms);
+  return wg_snow_displacement(wg_coverage_noise(p), fp * level, maxSnowHeight, n);
+}
+float wg_moss_coverage(vec3 n, vec3 p, vec3 diffuse, vec4 w, vec4 shape) {
+  float level = wg_clamp01(frame_mossLevel);
+  if (level <= 0.0) return 0.0;
+  float sun = wg_sun_facing(n, frame_sunDirection, frame_sunIntensity);
+  float low = wg_height_inverted(p.y, shape.x, shape.y);
+  float facing = 0.5 + 0.5 * dot(n, vec3(0.0, 1.0, 0.0));
+  float predicted = wg_clamp01(w.x * sun * w.z * low) * facing;
+  float noise = 0.5 * wg_coverage_noise(p + vec3(17.3, 0.0, 9.1)) + 0.5 * (1.0 - wg_detail_mask(diffuse));
+  return wg_transition(noise, predicted * level);
+}
+float wg_puddle_coverage(vec3 n, vec3 p, float exposure) {
+  float level = wg_clamp01(frame_puddleLevel) * wg_clamp01(exposure);
+  if (level <= 0.0) return 0.0;
+  return wg_puddle_mask(n, wg_value_noise(vec2(p.x * 0.35, p.z * 0.35)), level);
+}
+float wg_frost_coverage(float frostMap) {
+  if (frame_frostLevel <= 0.0) return 0.0;
+  return wg_frost_mask(frostMap, frame_frostLevel);
+}
+float wg_hoarfrost_coverage(vec3 p, float exposure) {
+  float level = wg_clamp01(frame_frostLevel) * wg_clamp01(exposure);
+  if (level <= 0.0) return 0.0;
+  return wg_transition(wg_coverage_noise(p), level);
+}
+// Tangent-space normal to world space with the stage's orthonormal frame.
+vec3 wg_tangent_to_world(vec3 n, vec3 normal, vec4 tangent) {
+  vec3 t = wg_safe_normalize(tangent.xyz - normal * dot(normal, tangent.xyz));
+  vec3 b = cross(normal, t) * tangent.w;
+  return wg_safe_normalize(t * n.x + b * n.y + normal * n.z);
+}
+// The sky-exposure map covers skyExposureRegion; outside it everything is open sky.
+vec2 wg_sky_exposure_uv(vec3 p) { return (vec2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw; }
+float wg_exposure_from_map(vec3 p, float texel) {
+  vec2 uv = wg_sky_exposure_uv(p);
+  bool inside = frame_skyExposureRegion.z > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+  return inside ? texel : 1.0;
+}
+// Eq. 3.11: world position to height-map coordinates.
+vec2 wg_terrain_coord(vec3 p) { return (vec2(p.x, p.z) - frame_terrainRegion.xy) * frame_terrainRegion.zw; }
+)WG",
+    R"WG(// Seed 000, chapter 3. weathergen's world is Y-up: the seed's (0, 0, 1) is (0, 1, 0).
+float wg_clamp01(float x) { return clamp(x, 0.0, 1.0); }  // eq. 3.2
+float wg_lerp(float a, float b, float p) { return a * (1.0 - p) + b * p; }  // eq. 3.3
+float wg_reflectance(float3 c) { return dot(float3(0.3, 0.59, 0.11), c); }
+// Eq. 3.4: geometric and normal-mapped world normals against up, cubed.
+float wg_inclination(float3 n, float3 nd, float intensity) {
+  float c = wg_clamp01(dot(n, float3(0.0, 1.0, 0.0)) + dot(nd, float3(0.0, 1.0, 0.0)) * intensity);
+  return c * c * c;
+}
+// Eq. 3.5: sun-facing sides lose cover, the more the stronger the sun.
+float wg_sun_facing(float3 n, float3 towardsSun, float intensity) {
+  return wg_clamp01(dot(n, -towardsSun) * wg_clamp01(intensity) + 1.0);
+}
+// Eq. 3.6: two panning phases of the flow noise.
+float wg_wind_flow(float2 xz, float2 d, float t) {
+  float2 p = xz * 0.25;
+  return wg_value_noise(p + float2(d.x, d.y) * t) + 0.5 * wg_value_noise(p + float2(d.y, d.x) * t);
+}
+// Eq. 3.7
+float wg_wind_influence(float3 n, float2 xz, float2 d, float intensity, float t) {
+  float3 flow = float3(d.x, 0.0, d.y) * wg_wind_flow(xz, d, t);
+  return wg_clamp01(dot(n, flow) + intensity);
+}
+float wg_height(float y, float lo, float hi) { return wg_clamp01((y - lo) / max(hi - lo, 1e-3)); }  // eq. 3.8
+float wg_height_inverted(float y, float lo, float hi) { return 1.0 - wg_height(y, lo, hi); }  // eq. 3.9
+// Eq. 3.10
+float3 wg_snow_displacement(float noise, float progress, float maxSnowHeight, float3 n) {
+  return (wg_clamp01(noise + 0.75) * progress * maxSnowHeight) * n;
+}
+// Eq. 3.12
+float3 wg_terrain_slope(float h0, float hu, float hv, float intensity) {
+  return cross(float3(1.0, 0.0, intensity * (hu - h0)), float3(0.0, 1.0, intensity * (hv - h0)));
+}
+// Eq. 3.13: the slope's height-map (u, v) lie along world (x, z).
+float wg_terrain_orientation(float3 slope, float3 n, float tangentNormalZ, float intensity) {
+  return dot(float3(slope.x, 0.0, slope.y), n) * tangentNormalZ * intensity;
+}
+float wg_transition(float noise, float p) { return wg_clamp01(noise - 1.0 + 3.0 * p); }  // eq. 3.14
+// Eq. 3.1: inclination gates every other term.
+float wg_prediction(float inc, float sun, float h, float terrain, float wind, float4 w) {
+  return wg_clamp01(inc * (w.x * sun * w.z * h + w.w * terrain + w.y * wind));
+}
+// Eq. 3.15 as a continuous level.
+float wg_wetness(float temperature, float level, float exposure) {
+  return wg_clamp01(level) * wg_clamp01(exposure) * smoothstep(0.0, 1.0, temperature);
+}
+float3 wg_wet_diffuse(float3 d, float p) { return d * wg_lerp(1.0, 0.7, p); }  // eq. 3.16
+float wg_wet_roughness(float r, float p) { return wg_clamp01(r - p); }  // eq. 3.17
+// Eq. 3.18: a panning ripple added to the tangent-space normal while it rains.
+float3 wg_wet_normal(float3 n, float2 xz, float p, float precipitation, float t) {
+  float rain = smoothstep(0.0, 0.1, precipitation);
+  if (p <= 0.0 || rain <= 0.0) return n;
+  float2 uv = xz * 2.0 + float2(0.5, 0.01) * p * t;
+  float2 pan = float2(wg_value_noise(uv) - 0.5, wg_value_noise(uv + float2(17.3, 9.1)) - 0.5);
+  return n + float3(pan * (2.0 * 0.25 * rain), 0.0);
+}
+float3 wg_desaturate(float3 c, float p) { return p * dot(float3(0.3, 0.59, 0.11), c) + (1.0 - p) * c; }  // eq. 3.19
+float wg_detail_mask(float3 d) { return wg_clamp01(wg_desaturate(d, 1.0).x); }  // eq. 3.19
+// Table 4.1: the albedo's reflectance is mapped into the measured band.
+float3 wg_band_albedo(float3 d, float3 tint, float lo, float hi, float spread) {
+  float v = wg_lerp(lo, hi, wg_clamp01(wg_detail_mask(d) * spread));
+  return tint / wg_reflectance(tint) * v;
+}
+float3 wg_snow_albedo(float3 d) { return wg_band_albedo(d, float3(0.97, 0.985, 1.0), 0.9, 0.95, 2.0); }
+float3 wg_moss_albedo(float3 d) { return wg_band_albedo(d, float3(0.45, 0.75, 0.2), 0.25, 0.53, 1.5); }
+float3 wg_ice_albedo(float3 d) { return wg_band_albedo(d, float3(0.85, 0.95, 1.0), 0.5, 0.7, 3.0); }
+// Eq. 3.20, faded in over the first tenth of freezing.
+float wg_frost_mask(float frostMap, float frost) {
+  float e = wg_lerp(0.0, 5.0, 1.0 - wg_clamp01(frost));
+  return pow(max(1.0 - wg_clamp01(frostMap), 1e-4), e) * wg_clamp01(frost * 10.0);
+}
+// Section 5.1.2: within 8 degrees of up (cos 8 = 0.990268), full within 4 (cos 4 = 0.997564).
+float wg_puddle_mask(float3 n, float noise, float level) {
+  float flatness = smoothstep(0.99026807, 0.99756405, dot(n, float3(0.0, 1.0, 0.0)));
+  return flatness * smoothstep(0.45, 0.55, noise + level - 0.5);
+}
+float wg_coverage_noise(float3 p) { return wg_value_noise(float2(p.x * 1.5, p.z * 1.5)); }
+// Eq. 3.1 with switches: shape = (minHeight, maxHeight, inclination intensity, unused),
+// terms = (inclination, sun, height, wind) as 0 or 1.
+float wg_shaped_prediction(float3 n, float3 nd, float3 p, float terrain, float4 w, float4 shape, float4 terms) {
+  float inc = wg_lerp(1.0, wg_inclination(n, nd, shape.z), terms.x);
+  float sun = wg_lerp(1.0, wg_sun_facing(n, frame_sunDirection, frame_sunIntensity), terms.y);
+  float h = wg_lerp(1.0, wg_height(p.y, shape.x, shape.y), terms.z);
+  float wind = wg_wind_influence(n, float2(p.x, p.z), frame_windDirection, frame_windIntensity, frame_time) * terms.w;
+  return wg_prediction(inc, sun, h, terrain, wind, w);
+}
+// Each effect returns at once while its level is 0: one uniform branch.
+float wg_snow_coverage(float3 n, float3 nd, float3 p, float3 diffuse, float terrain, float exposure, float4 w, float4 shape,
+                       float4 terms) {
+  float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
+  if (level <= 0.0) return 0.0;
+  float fp = wg_shaped_prediction(n, nd, p, terrain, w, shape, terms);
+  float noise = 0.5 * wg_coverage_noise(p) + 0.5 * (1.0 - wg_detail_mask(diffuse));
+  return wg_transition(noise, fp * level);
+}
+float3 wg_snow_offset(float3 n, float3 p, float exposure, float4 w, float4 shape, float4 terms, float maxSnowHeight) {
+  float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
+  if (level <= 0.0) return (float3)0.0;
+  float fp = wg_shaped_prediction(n, n, p, 0.0, w, shape, terms);
+  return wg_snow_displacement(wg_coverage_noise(p), fp * level, maxSnowHeight, n);
+}
+float wg_moss_coverage(float3 n, float3 p, float3 diffuse, float4 w, float4 shape) {
+  float level = wg_clamp01(frame_mossLevel);
+  if (level <= 0.0) return 0.0;
+  float sun = wg_sun_facing(n, frame_sunDirection, frame_sunIntensity);
+  float low = wg_height_inverted(p.y, shape.x, shape.y);
+  float facing = 0.5 + 0.5 * dot(n, float3(0.0, 1.0, 0.0));
+  float predicted = wg_clamp01(w.x * sun * w.z * low) * facing;
+  float noise = 0.5 * wg_coverage_noise(p + float3(17.3, 0.0, 9.1)) + 0.5 * (1.0 - wg_detail_mask(diffuse));
+  return wg_transition(noise, predicted * level);
+}
+float wg_puddle_coverage(float3 n, float3 p, float exposure) {
+  float level = wg_clamp01(frame_puddleLevel) * wg_clamp01(exposure);
+  if (level <= 0.0) return 0.0;
+  return wg_puddle_mask(n, wg_value_noise(float2(p.x * 0.35, p.z * 0.35)), level);
+}
+float wg_frost_coverage(float frostMap) {
+  if (frame_frostLevel <= 0.0) return 0.0;
+  return wg_frost_mask(frostMap, frame_frostLevel);
+}
+float wg_hoarfrost_coverage(float3 p, float exposure) {
+  float level = wg_clamp01(frame_frostLevel) * wg_clamp01(exposure);
+  if (level <= 0.0) return 0.0;
+  return wg_transition(wg_coverage_noise(p), level);
+}
+// Tangent-space normal to world space with the stage's orthonormal frame.
+float3 wg_tangent_to_world(float3 n, float3 normal, float4 tangent) {
+  float3 t = wg_safe_normalize(tangent.xyz - normal * dot(normal, tangent.xyz));
+  float3 b = cross(normal, t) * tangent.w;
+  return wg_safe_normalize(t * n.x + b * n.y + normal * n.z);
+}
+// The sky-exposure map covers skyExposureRegion; outside it everything is open sky.
+float2 wg_sky_exposure_uv(float3 p) { return (float2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw; }
+float wg_exposure_from_map(float3 p, float texel) {
+  float2 uv = wg_sky_exposure_uv(p);
+  bool inside = frame_skyExposureRegion.z > 0.0 && all(uv >= (float2)0.0) && all(uv <= (float2)1.0);
+  return inside ? texel : 1.0;
+}
+// Eq. 3.11: world position to height-map coordinates.
+float2 wg_terrain_coord(float3 p) { return (float2(p.x, p.z) - frame_terrainRegion.xy) * frame_terrainRegion.zw; }
+)WG",
+    {&kCoreLibrary, &kLatticeNoiseLibrary}};
+
+}  // namespace wg
