@@ -8,6 +8,14 @@ namespace wg {
 
 namespace {
 
+// Bytes of declarations and stage frame around the body and libraries (sizes the output once).
+constexpr std::size_t kFrameSizeHint = 6144;
+std::size_t librarySize(const StageSource& s) {
+  std::size_t n = 0;
+  for (const ShaderLibrary* lib : s.libraries) n += lib->glsl.size() + 1;
+  return n;
+}
+
 std::string_view glslInterfaceType(InterfaceType type) { return interfaceTypeName(type); }
 
 void appendBlock(std::string& out, const UniformBlock& block) {
@@ -38,8 +46,17 @@ class GlslSyntax final : public ShaderSyntax {
 
   std::string assemble(const StageSource& s) const override {
     const MaterialInterface& mi = *s.interface;
-    std::string out = "#version 450\n" + s.banner;
-    appendBlock(out, mi.frame);
+    std::string out;
+    out.reserve(kFrameSizeHint + s.body.size() + librarySize(s));
+    out += "#version 450\n";
+    out += s.banner;
+    // The frame block is the same for every material: format it once.
+    static const std::string kFrameBlockText = [&] {
+      std::string text;
+      appendBlock(text, mi.frame);
+      return text;
+    }();
+    out += kFrameBlockText;
     appendBlock(out, mi.material);
     for (const auto* list : {&mi.weatherMaps, &mi.textures})
     for (const auto& t : *list) {
@@ -57,7 +74,10 @@ class GlslSyntax final : public ShaderSyntax {
       out += "layout(location = " + std::to_string(v.location) + ") " + (vertex ? "out " : "in ") +
              std::string(glslInterfaceType(v.type)) + " " + v.identifier + ";\n";
     if (!vertex) out += "layout(location = 0) out vec4 out_color;\n";
-    for (const ShaderLibrary* lib : s.libraries) out += "\n" + std::string(lib->glsl);
+    for (const ShaderLibrary* lib : s.libraries) {
+      out += '\n';
+      out += lib->glsl;
+    }
     out += "\nvoid main() {\n";
     if (vertex) {
       out += "  vec3 wg_worldPosition = (frame_model * vec4(in_position, 1.0)).xyz;\n"

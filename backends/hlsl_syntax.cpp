@@ -9,6 +9,14 @@ namespace wg {
 
 namespace {
 
+// Bytes of declarations and stage frame around the body and libraries (sizes the output once).
+constexpr std::size_t kFrameSizeHint = 6144;
+std::size_t librarySize(const StageSource& s) {
+  std::size_t n = 0;
+  for (const ShaderLibrary* lib : s.libraries) n += lib->hlsl.size() + 1;
+  return n;
+}
+
 std::string_view hlslInterfaceType(InterfaceType type) {
   constexpr std::array<std::string_view, 6> kNames = {"float", "float2", "float3", "float4", "uint", "float4x4"};
   return kNames[static_cast<int>(type)];
@@ -55,8 +63,16 @@ class HlslSyntax final : public ShaderSyntax {
 
   std::string assemble(const StageSource& s) const override {
     const MaterialInterface& mi = *s.interface;
-    std::string out = s.banner;
-    appendBlock(out, mi.frame);
+    std::string out;
+    out.reserve(kFrameSizeHint + s.body.size() + librarySize(s));
+    out += s.banner;
+    // The frame block is the same for every material: format it once.
+    static const std::string kFrameBlockText = [&] {
+      std::string text;
+      appendBlock(text, mi.frame);
+      return text;
+    }();
+    out += kFrameBlockText;
     appendBlock(out, mi.material);
     for (const auto* list : {&mi.weatherMaps, &mi.textures})
     for (const auto& t : *list) {
@@ -80,7 +96,10 @@ class HlslSyntax final : public ShaderSyntax {
       out += "  [[vk::location(" + std::to_string(v.location) + ")]] " + std::string(hlslInterfaceType(v.type)) + " " +
              v.identifier + " : " + semantic(v.location) + ";\n";
     out += "};\n";
-    for (const ShaderLibrary* lib : s.libraries) out += "\n" + std::string(lib->hlsl);
+    for (const ShaderLibrary* lib : s.libraries) {
+      out += '\n';
+      out += lib->hlsl;
+    }
     if (vertex) {
       out += "\nVSOutput main(VSInput wg_in) {\n";
       for (const auto& a : mi.vertexInputs)

@@ -19,12 +19,14 @@ constexpr std::string_view kFrameLocals[] = {
     "wg_bitangent", "wg_N", "wg_V", "wg_color", "wg_in", "wg_out", "wg_frontFacing", "wg_clipPosition", "out_color",
     "main", "VSInput", "VSOutput", "PSInput"};
 
+// A typical emitted statement's length, to size the body once.
+constexpr std::size_t kBytesPerStatement = 96;
+
 class StageWriter {
  public:
-  StageWriter(const IrGraph& g, const MaterialInterface& mi, const ShaderSyntax& syntax, ShaderStage stage)
-      : graph_(g), mi_(mi), syntax_(syntax), stage_(stage), scope_(mi.globals), names_(g.nodes.size()) {
-    for (auto name : kFrameLocals) scope_.reserve(name);
-  }
+  StageWriter(const IrGraph& g, const MaterialInterface& mi, const ShaderSyntax& syntax, ShaderStage stage,
+              const std::vector<std::string>& names)
+      : graph_(g), mi_(mi), syntax_(syntax), stage_(stage), names_(names) {}
 
   std::string run(std::string_view contentHash) {
     StageSource source;
@@ -34,6 +36,7 @@ class StageWriter {
                     ". Do not edit.\n";
     markNeeded();
     collectLibraries(source.libraries);
+    source.body.reserve(graph_.nodes.size() * kBytesPerStatement);
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
       if (needed_[i]) emitNode(i, source.body);
     for (const auto& info : pbrFields())
@@ -135,45 +138,54 @@ class StageWriter {
     const IrNode& node = graph_.nodes[index];
     const OpDef& op = *node.op;
     std::string_view code = op.code(syntax_.language() == ShaderLanguage::Hlsl);
-    std::string expr;
-    expr.reserve(code.size() + 32);
-    for (std::size_t i = 0; i < code.size(); ++i) {
-      if (code[i] != '{') {
-        expr += code[i];
-        continue;
-      }
-      std::size_t close = code.find('}', i);
-      std::string_view key = code.substr(i + 1, close - i - 1);
-      i = close;
-      if (key == "T") {
-        expr += syntax_.typeName(node.valueType);
-      } else if (key.starts_with('@')) {
-        expr += symbol(key.substr(1), node);
-      } else {
-        for (std::size_t p = 0; p < op.inputs.size(); ++p)
-          if (op.inputs[p].name == key) expr += operandExpression(node.inputs[p], node.inputTypes[p]);
-      }
-    }
-    names_[index] = scope_.make("n" + std::to_string(index) + "_" + std::string(op.name));
     body += "  ";
     body += syntax_.typeName(node.valueType);
-    body += " " + names_[index] + " = " + expr + ";\n";
+    body += ' ';
+    body += names_[index];
+    body += " = ";
+    // Copies the template in spans between placeholders.
+    std::size_t done = 0;
+    for (std::size_t open = code.find('{'); open != std::string_view::npos; open = code.find('{', done)) {
+      body.append(code.substr(done, open - done));
+      std::size_t close = code.find('}', open);
+      std::string_view key = code.substr(open + 1, close - open - 1);
+      done = close + 1;
+      if (key == "T") {
+        body += syntax_.typeName(node.valueType);
+      } else if (key.starts_with('@')) {
+        body += symbol(key.substr(1), node);
+      } else {
+        for (std::size_t p = 0; p < op.inputs.size(); ++p)
+          if (op.inputs[p].name == key) body += operandExpression(node.inputs[p], node.inputTypes[p]);
+      }
+    }
+    body.append(code.substr(done));
+    body += ";\n";
   }
 
   const IrGraph& graph_;
   const MaterialInterface& mi_;
   const ShaderSyntax& syntax_;
   ShaderStage stage_;
-  IdentifierScope scope_;
-  std::vector<std::string> names_;
+  const std::vector<std::string>& names_;
   std::vector<bool> needed_;
 };
 
 }  // namespace
 
+std::vector<std::string> nameNodes(const IrGraph& graph, const MaterialInterface& interface) {
+  IdentifierScope scope = interface.globals;
+  for (auto name : kFrameLocals) scope.reserve(name);
+  std::vector<std::string> names;
+  names.reserve(graph.nodes.size());
+  for (std::size_t i = 0; i < graph.nodes.size(); ++i)
+    names.push_back(scope.make("n" + std::to_string(i) + "_" + std::string(graph.nodes[i].op->name)));
+  return names;
+}
+
 std::string writeStage(const IrGraph& graph, const MaterialInterface& interface, const ShaderSyntax& syntax,
-                       ShaderStage stage, std::string_view contentHash) {
-  return StageWriter(graph, interface, syntax, stage).run(contentHash);
+                       ShaderStage stage, std::string_view contentHash, const std::vector<std::string>& nodeNames) {
+  return StageWriter(graph, interface, syntax, stage, nodeNames).run(contentHash);
 }
 
 }  // namespace wg

@@ -9,9 +9,11 @@
 
 namespace {
 
-void codegen(benchmark::State& state, const wg::bench::BundledGraph& graph) {
+// The codegen target: load + validate + passes + GLSL and HLSL for both
+// stages; no glslang and no reflection JSON (BM_CompileNoSpirv adds that).
+void codegen(benchmark::State& state, const wg::bench::BundledGraph& graph, bool reflection) {
   const std::string text = wg::bench::readText(graph.path);
-  const wg::CompileOptions options{.emitSpirv = false};
+  const wg::CompileOptions options{.emitSpirv = false, .emitReflection = reflection};
   auto first = wg::compileMaterialText(graph.path, text, options);
   if (!first.material) {
     state.SkipWithError(("does not compile: " + graph.path).c_str());
@@ -33,7 +35,10 @@ void codegen(benchmark::State& state, const wg::bench::BundledGraph& graph) {
 
 const bool registered = [] {
   for (const auto& graph : wg::bench::bundledGraphs())
-    benchmark::RegisterBenchmark(("BM_Codegen/" + graph.stem).c_str(), codegen, graph)->Unit(benchmark::kMicrosecond);
+  {
+    benchmark::RegisterBenchmark(("BM_Codegen/" + graph.stem).c_str(), codegen, graph, false)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("BM_CompileNoSpirv/" + graph.stem).c_str(), codegen, graph, true)->Unit(benchmark::kMicrosecond);
+  }
   return true;
 }();
 

@@ -38,9 +38,16 @@ constexpr std::array<FrameField, 24> kFrameFields = {{
     {"skyExposureRegion", InterfaceType::Vec4},    // xz origin, 1/size: world -> exposure-map uv
     {"terrainRegion", InterfaceType::Vec4},        // xz origin, 1/size: world -> height-map uv (eq. 3.11)
 }};
+UniformBlock makeFrameBlock();
 }  // namespace
 
 UniformBlock frameBlock() {
+  static const UniformBlock kBlock = makeFrameBlock();  // immutable; shared by every compile
+  return kBlock;
+}
+
+namespace {
+UniformBlock makeFrameBlock() {
   UniformBlock block;
   block.name = "Frame";
   block.identifier = "FrameBlock";
@@ -51,5 +58,6 @@ UniformBlock frameBlock() {
   layoutStd140(block);
   return block;
 }
+}  // namespace
 
 }  // namespace wg

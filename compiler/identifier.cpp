@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <unordered_set>
 
 namespace wg {
 
@@ -61,7 +62,9 @@ bool startsWithIgnoringCase(std::string_view s, std::string_view prefix) {
 bool IdentifierScope::isReserved(std::string_view name) {
   if (startsWithIgnoringCase(name, "gl_") || startsWithIgnoringCase(name, "sv_")) return true;
   if (name.starts_with('_') || name.find("__") != std::string_view::npos) return true;
-  return std::find(kReserved.begin(), kReserved.end(), name) != kReserved.end();
+  // Hashed: every emitted name is checked, and large graphs emit tens of thousands.
+  static const std::unordered_set<std::string_view> kReservedSet(kReserved.begin(), kReserved.end());
+  return kReservedSet.count(name) != 0;
 }
 
 std::string IdentifierScope::sanitize(std::string_view hint) {
@@ -81,8 +84,24 @@ std::string IdentifierScope::sanitize(std::string_view hint) {
   return out;
 }
 
+namespace {
+// Already what sanitize would return: ASCII alphanumerics and single inner underscores,
+// starting with a letter, short enough.
+bool isCleanIdentifier(std::string_view s) {
+  if (s.empty() || s.size() > IdentifierScope::kMaxLength || !std::isalpha(static_cast<unsigned char>(s[0])) ||
+      s.back() == '_')
+    return false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c >= 0x80 || !(std::isalnum(c) || c == '_')) return false;
+    if (c == '_' && s[i - 1] == '_') return false;
+  }
+  return !IdentifierScope::isReserved(s);
+}
+}  // namespace
+
 std::string IdentifierScope::make(std::string_view hint) {
-  std::string base = sanitize(hint);
+  std::string base = isCleanIdentifier(hint) ? std::string(hint) : sanitize(hint);
   std::string name = base;
   for (int suffix = 2; used_.count(name) || isReserved(name); ++suffix) name = base + "_" + std::to_string(suffix);
   used_.insert(name);

@@ -76,8 +76,19 @@ struct TextScanner {
     return v;
   }
   std::string readString() {  // at the opening quote
-    std::string out;
     advance();
+    // Fast path: most keys have no escapes. Raw JSON strings hold no newlines, so only
+    // the column moves.
+    std::size_t end = pos;
+    while (end < text.size() && text[end] != '"' && text[end] != '\\') ++end;
+    if (end < text.size() && text[end] == '"') {
+      std::string out = text.substr(pos, end - pos);
+      for (; pos < end; ++pos)
+        if ((static_cast<unsigned char>(text[pos]) & 0xC0) != 0x80) ++column;
+      advance();
+      return out;
+    }
+    std::string out;
     while (pos < text.size() && text[pos] != '"') {
       if (text[pos] == '\\') {
         advance();
@@ -118,13 +129,21 @@ struct TextScanner {
     }
   }
 
+  // trackPointers: build every value's pointer (for the location index); without it
+  // only the keys are compared, and a pointer is built for a duplicate alone.
   template <typename OnValue, typename OnKey, typename OnDuplicate>
-  void scan(OnValue&& onValue, OnKey&& onKey, OnDuplicate&& onDuplicate) {
+  void scan(OnValue&& onValue, OnKey&& onKey, OnDuplicate&& onDuplicate, bool trackPointers = true) {
     struct Frame {
       bool isObject;
       std::string pointer;
       std::size_t index = 0;
       std::vector<std::string> keys;
+    };
+    auto pointerOf = [](const std::vector<Frame>& frames) {
+      std::string p;
+      for (const auto& f : frames)
+        p = f.isObject ? appendPointer(p, f.keys.empty() ? std::string() : f.keys.back()) : appendPointer(p, f.index - 1);
+      return p;
     };
     std::vector<Frame> stack;
     std::string currentPointer;
@@ -132,11 +151,11 @@ struct TextScanner {
     while (true) {
       // At the start of a value whose pointer is currentPointer.
       skipSpace();
-      onValue(currentPointer, line, column);
+      if (trackPointers) onValue(currentPointer, line, column);
       char c = peek();
       if (c == '{' || c == '[') {
         advance();
-        stack.push_back({c == '{', currentPointer, 0, {}});
+        stack.push_back({c == '{', trackPointers ? currentPointer : std::string(), 0, {}});
       } else if (c == '"') {
         readString();
       } else {
@@ -169,20 +188,28 @@ struct TextScanner {
           std::string key = readString();
           skipSpace();
           if (peek() == ':') advance();
-          std::string pointer = appendPointer(top.pointer, key);
-          onKey(pointer, keyLine, keyColumn);
-          if (std::find(top.keys.begin(), top.keys.end(), key) != top.keys.end())
+          bool duplicate = std::find(top.keys.begin(), top.keys.end(), key) != top.keys.end();
+          if (trackPointers) {
+            std::string pointer = appendPointer(top.pointer, key);
+            onKey(pointer, keyLine, keyColumn);
+            if (duplicate) onDuplicate(pointer, keyLine, keyColumn, key);
+            currentPointer = std::move(pointer);
+          } else if (duplicate) {
+            std::string pointer = appendPointer(pointerOf({stack.begin(), stack.end() - 1}), key);
             onDuplicate(pointer, keyLine, keyColumn, key);
-          else
-            top.keys.push_back(std::move(key));
-          currentPointer = std::move(pointer);
+          }
+          // Keep the key last: pointerOf reads each object's current key from the back.
+          auto seen = std::find(top.keys.begin(), top.keys.end(), key);
+          if (seen != top.keys.end()) top.keys.erase(seen);
+          top.keys.push_back(std::move(key));
         } else {
           if (d == ']') {
             advance();
             stack.pop_back();
             continue;
           }
-          currentPointer = appendPointer(top.pointer, top.index++);
+          ++top.index;
+          if (trackPointers) currentPointer = appendPointer(top.pointer, top.index - 1);
         }
         haveNext = true;
       }
@@ -281,34 +308,53 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
                        {"the JSON nesting depth", std::to_string(depth), std::to_string(limits.maxDepth)});
     return std::nullopt;
   }
-  nlohmann::json root = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (root.is_discarded()) {
-    // Parse again with exceptions only on the error path, for nlohmann's message and offset.
-    try {
-      (void)nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-      auto [line, column] = lineColumnOfByte(text, e.byte > 0 ? e.byte - 1 : 0);
-      diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column}, {plainParseMessage(e.what())});
-    } catch (const nlohmann::json::out_of_range& e) {
-      // A number too large for a double ("1e999"): point at it and call it non-finite.
-      std::string what = e.what();
-      auto open = what.find('\''), close = what.rfind('\'');
-      std::string number = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
-      std::size_t at = number.empty() ? std::string::npos : text.find(number);
-      auto [line, column] = lineColumnOfByte(text, at == std::string::npos ? 0 : at);
-      diagnostics.report(DiagCode::LiteralNotFinite, {file, "", line, column}, {"the number " + number});
-    } catch (const std::exception& e) {
-      diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {plainParseMessage(e.what())});
+  // Duplicate keys are detected during the parse (nlohmann would silently keep the
+  // last); only when one is found does the text scanner run, to locate it.
+  std::vector<std::vector<std::string>> keysPerObject;
+  bool anyDuplicate = false;
+  nlohmann::json::parser_callback_t onEvent = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    if (event == Event::object_start) {
+      keysPerObject.emplace_back();
+    } else if (event == Event::object_end) {
+      keysPerObject.pop_back();
+    } else if (event == Event::key && !keysPerObject.empty()) {
+      auto& keys = keysPerObject.back();
+      const auto& key = parsed.get_ref<const std::string&>();
+      if (std::find(keys.begin(), keys.end(), key) != keys.end()) anyDuplicate = true;
+      else keys.push_back(key);
     }
+    return true;
+  };
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(text, onEvent);
+  } catch (const nlohmann::json::parse_error& e) {
+    auto [line, column] = lineColumnOfByte(text, e.byte > 0 ? e.byte - 1 : 0);
+    diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column}, {plainParseMessage(e.what())});
+    return std::nullopt;
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number too large for a double ("1e999"): point at it and call it non-finite.
+    std::string what = e.what();
+    auto open = what.find('\''), close = what.rfind('\'');
+    std::string number = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    std::size_t at = number.empty() ? std::string::npos : text.find(number);
+    auto [line, column] = lineColumnOfByte(text, at == std::string::npos ? 0 : at);
+    diagnostics.report(DiagCode::LiteralNotFinite, {file, "", line, column}, {"the number " + number});
+    return std::nullopt;
+  } catch (const std::exception& e) {
+    diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {plainParseMessage(e.what())});
     return std::nullopt;
   }
+  if (!anyDuplicate) return JsonDocument(std::move(file), std::move(text), std::move(root));
   bool duplicate = false;
   TextScanner scanner{text};
   scanner.scan([](const std::string&, int, int) {}, [](const std::string&, int, int) {},
                [&](const std::string& pointer, int l, int c, const std::string& key) {
                  diagnostics.report(DiagCode::DuplicateKey, {file, pointer, l, c}, {key});
                  duplicate = true;
-               });
+               },
+               /*trackPointers=*/false);
   if (duplicate) return std::nullopt;
   return JsonDocument(std::move(file), std::move(text), std::move(root));
 }

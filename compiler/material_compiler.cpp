@@ -110,13 +110,16 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
   material.fileStem = fileStemFor(ir->name);
   material.contentHash = contentHash(*ir);
   MaterialInterface mi = buildMaterialInterface(*ir);
+  std::vector<std::string> names = nameNodes(*ir, mi);
   for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
     for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
-      material.stages.push_back({language, stage, writeStage(*ir, mi, syntaxFor(language), stage, material.contentHash), {}, {}});
+      material.stages.push_back(
+          {language, stage, writeStage(*ir, mi, syntaxFor(language), stage, material.contentHash, names), {}, {}});
   if (options.emitSpirv)
     for (auto& stage : material.stages)
       if (!compileStageToSpirv(stage, mi, options, file, result.diagnostics)) return result;
-  material.reflectionJson = buildReflectionJson(*ir, mi, material.contentHash, material.fileStem);
+  if (options.emitReflection)
+    material.reflectionJson = buildReflectionJson(*ir, mi, material.contentHash, material.fileStem);
   material.ir = std::move(*ir);
   result.material = std::move(material);
   return result;

@@ -17,6 +17,7 @@ struct CompileOptions {
   bool emitSpirv = true;
   bool optimize = false;  // spirv-opt performance passes (-O)
   std::optional<std::string> weatherPreset;  // replaces the graph's preset (--weather-preset)
+  bool emitReflection = true;  // off for callers that only want shader text
 };
 
 struct CompiledStage {

@@ -19,6 +19,7 @@ void runPassPipeline(IrGraph& graph);
 // The passes, one file each under compiler/passes/.
 void injectWeather(IrGraph& graph);
 void foldConstants(IrGraph& graph);
+void simplifyAlgebra(IrGraph& graph);
 void eliminateCommonSubexpressions(IrGraph& graph);
 void eliminateDeadNodes(IrGraph& graph);
 void orderTopologically(IrGraph& graph);

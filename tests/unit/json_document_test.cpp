@@ -40,6 +40,13 @@ TEST(JsonDocument, RejectsDuplicateKeys) {
   EXPECT_EQ(d.items()[0].location.pointer, "/b/x");
 }
 
+TEST(JsonDocument, NamesNestedDuplicatesByPointer) {
+  DiagnosticList d;
+  EXPECT_FALSE(parseJsonDocument("f.json", R"({"nodes": [{"a": 1}, {"id": 1, "x": {"k": 0}, "id": 2}]})", d));
+  ASSERT_EQ(d.items().size(), 1u);
+  EXPECT_EQ(d.items()[0].location.pointer, "/nodes/1/id");
+}
+
 TEST(JsonDocument, EnforcesDepthAndSizeLimits) {
   DiagnosticList d;
   std::string deep(100000, '[');

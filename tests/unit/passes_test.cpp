@@ -56,6 +56,23 @@ TEST(ConstantFoldPass, FoldsNoiseOfConstantsAndSwizzles) {
   EXPECT_FLOAT_EQ(out.constant.v[2], valueNoise(3, 5));
 }
 
+TEST(AlgebraicSimplifyPass, RemovesIdentitiesButKeepsTypes) {
+  IrGraph g = irBeforePasses(graphJson(
+      R"({"id": "t", "op": "time"},
+         {"id": "same", "op": "lerp", "inputs": {"a": 0.5, "b": 0.5, "t": "t.out"}},
+         {"id": "one", "op": "multiply", "inputs": {"a": "t.out", "b": 1}},
+         {"id": "zero", "op": "add", "inputs": {"a": 0, "b": "one.out"}},
+         {"id": "widen", "op": "multiply", "inputs": {"a": "t.out", "b": [1, 1, 1]}})",
+      R"("specular": "same.out", "roughness": "zero.out", "baseColor": "widen.out")"));
+  simplifyAlgebra(g);
+  EXPECT_EQ(g.output(PbrField::Specular).kind, Operand::Kind::Constant);
+  EXPECT_EQ(g.output(PbrField::Specular).constant, Value::scalar(0.5f));
+  ASSERT_EQ(g.output(PbrField::Roughness).kind, Operand::Kind::Node);
+  EXPECT_EQ(g.nodes[g.output(PbrField::Roughness).node].op->name, "time");
+  // float * vec3(1) is a vec3: replacing it by the float would change the output's type.
+  EXPECT_EQ(g.nodes[g.output(PbrField::BaseColor).node].op->name, "multiply");
+}
+
 TEST(CsePass, MergesStructurallyIdenticalNodes) {
   IrGraph g = irBeforePasses(graphJson(
       R"({"id": "uv1", "op": "texcoord"}, {"id": "uv2", "op": "texcoord"},
@@ -100,7 +117,7 @@ TEST(TopoOrderPass, InputsPrecedeUsersAndOrderFollowsOutputs) {
 TEST(PassPipeline, IsOneNamedOrderedList) {
   std::vector<std::string_view> names;
   for (const auto& p : passPipeline()) names.push_back(p.name);
-  EXPECT_EQ(names, (std::vector<std::string_view>{"weather-inject", "constant-fold", "cse", "dead-node-elim", "topo-order"}));
+  EXPECT_EQ(names, (std::vector<std::string_view>{"weather-inject", "constant-fold", "algebraic-simplify", "cse", "dead-node-elim", "topo-order"}));
 }
 
 TEST(PassPipeline, ResultDependsOnContentNotSpellingOrOrder) {
