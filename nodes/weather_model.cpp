@@ -30,6 +30,7 @@ constexpr float kCoverageNoiseScale = 1.5f;
 constexpr float kWindFlowScale = 0.25f;
 constexpr float kRippleScale = 2.f;
 constexpr float kRippleStrength = 0.25f;
+constexpr float kRippleFold = 7.f;  // decorrelates the ripple's second slope from the first
 // Offsets that decorrelate a second noise lookup from the first.
 constexpr glm::vec2 kDecorrelate{17.3f, 9.1f};
 // Temperatures (C) over which rain turns into wetness (eq. 3.15's T > 0, made continuous).
@@ -121,7 +122,10 @@ glm::vec3 wetNormal(glm::vec3 tangentNormal, glm::vec2 xz, float p, float precip
   float rain = smoothStep(0.f, kRainFlowRamp, precipitation);
   if (p <= 0.f || rain <= 0.f) return tangentNormal;
   glm::vec2 uv = xz * kRippleScale + kWetFlowSpeed * p * time;
-  glm::vec2 pan(valueNoise(uv.x, uv.y) - 0.5f, valueNoise(uv.x + kDecorrelate.x, uv.y + kDecorrelate.y) - 0.5f);
+  // One lookup gives both slopes: the second is the noise folded by a fixed factor.
+  float n = valueNoise(uv.x, uv.y);
+  float folded = n * kRippleFold;
+  glm::vec2 pan(n - 0.5f, folded - std::floor(folded) - 0.5f);
   return tangentNormal + glm::vec3(pan * (2.f * kRippleStrength * rain), 0.f);
 }
 

@@ -63,7 +63,8 @@ vec3 wg_wet_normal(vec3 n, vec2 xz, float p, float precipitation, float t) {
   float rain = smoothstep(0.0, 0.1, precipitation);
   if (p <= 0.0 || rain <= 0.0) return n;
   vec2 uv = xz * 2.0 + vec2(0.5, 0.01) * p * t;
-  vec2 pan = vec2(wg_value_noise(uv) - 0.5, wg_value_noise(uv + vec2(17.3, 9.1)) - 0.5);
+  float noise = wg_value_noise(uv);
+  vec2 pan = vec2(noise - 0.5, fract(noise * 7.0) - 0.5);
   return n + vec3(pan * (2.0 * 0.25 * rain), 0.0);
 }
 vec3 wg_desaturate(vec3 c, float p) { return p * dot(vec3(0.3, 0.59, 0.11), c) + (1.0 - p) * c; }  // eq. 3.19
@@ -135,11 +136,10 @@ float wg_hoarfrost_coverage(vec3 p, float exposure) {
   if (level <= 0.0) return 0.0;
   return wg_transition(wg_coverage_noise(p), level);
 }
-// Tangent-space normal to world space with the stage's orthonormal frame.
+// Tangent-space normal to world space; the fragment stage's frame is already orthonormal.
 vec3 wg_tangent_to_world(vec3 n, vec3 normal, vec4 tangent) {
-  vec3 t = wg_safe_normalize(tangent.xyz - normal * dot(normal, tangent.xyz));
-  vec3 b = cross(normal, t) * tangent.w;
-  return wg_safe_normalize(t * n.x + b * n.y + normal * n.z);
+  vec3 b = cross(normal, tangent.xyz) * tangent.w;
+  return wg_safe_normalize(tangent.xyz * n.x + b * n.y + normal * n.z);
 }
 // The sky-exposure map covers skyExposureRegion; outside it everything is open sky.
 vec2 wg_sky_exposure_uv(vec3 p) { return (vec2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw; }
@@ -204,7 +204,8 @@ float3 wg_wet_normal(float3 n, float2 xz, float p, float precipitation, float t)
   float rain = smoothstep(0.0, 0.1, precipitation);
   if (p <= 0.0 || rain <= 0.0) return n;
   float2 uv = xz * 2.0 + float2(0.5, 0.01) * p * t;
-  float2 pan = float2(wg_value_noise(uv) - 0.5, wg_value_noise(uv + float2(17.3, 9.1)) - 0.5);
+  float noise = wg_value_noise(uv);
+  float2 pan = float2(noise - 0.5, frac(noise * 7.0) - 0.5);
   return n + float3(pan * (2.0 * 0.25 * rain), 0.0);
 }
 float3 wg_desaturate(float3 c, float p) { return p * dot(float3(0.3, 0.59, 0.11), c) + (1.0 - p) * c; }  // eq. 3.19
@@ -276,11 +277,10 @@ float wg_hoarfrost_coverage(float3 p, float exposure) {
   if (level <= 0.0) return 0.0;
   return wg_transition(wg_coverage_noise(p), level);
 }
-// Tangent-space normal to world space with the stage's orthonormal frame.
+// Tangent-space normal to world space; the fragment stage's frame is already orthonormal.
 float3 wg_tangent_to_world(float3 n, float3 normal, float4 tangent) {
-  float3 t = wg_safe_normalize(tangent.xyz - normal * dot(normal, tangent.xyz));
-  float3 b = cross(normal, t) * tangent.w;
-  return wg_safe_normalize(t * n.x + b * n.y + normal * n.z);
+  float3 b = cross(normal, tangent.xyz) * tangent.w;
+  return wg_safe_normalize(tangent.xyz * n.x + b * n.y + normal * n.z);
 }
 // The sky-exposure map covers skyExposureRegion; outside it everything is open sky.
 float2 wg_sky_exposure_uv(float3 p) { return (float2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw; }
