@@ -114,7 +114,7 @@ class GlslSyntax final : public ShaderSyntax {
       out += "  vec3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
              "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
              "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
-             "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V));\n";
+             "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
       for (const auto& view : s.debugViews)
         out += "  if (frame_debugView == " + std::to_string(view.id) + "u) wg_color = " + view.expression + ";\n";
       out += "  out_color = vec4(wg_color, 1.0);\n";

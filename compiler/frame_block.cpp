@@ -11,11 +11,15 @@ struct FrameField {
   std::string_view name;
   InterfaceType type;
 };
-// Ordered so std140 packs without holes: each vec3 is followed by a float.
-constexpr std::array<FrameField, 24> kFrameFields = {{
+// Ordered so std140 packs without holes: matrices and vec4s first, then each vec3
+// followed by a float, then the scalars.
+constexpr std::array<FrameField, 26> kFrameFields = {{
     {"model", InterfaceType::Mat4},
     {"viewProjection", InterfaceType::Mat4},
     {"normalMatrix", InterfaceType::Mat4},  // inverse transpose of model
+    {"lightViewProjection", InterfaceType::Mat4},  // world -> sun shadow-map clip space
+    {"skyExposureRegion", InterfaceType::Vec4},    // xz origin, 1/size: world -> exposure-map uv
+    {"terrainRegion", InterfaceType::Vec4},        // xz origin, 1/size: world -> height-map uv (eq. 3.11)
     {"cameraPosition", InterfaceType::Vec3},
     {"time", InterfaceType::Float},           // seconds
     {"sunDirection", InterfaceType::Vec3},    // unit vector towards the sun
@@ -35,8 +39,7 @@ constexpr std::array<FrameField, 24> kFrameFields = {{
     {"exposure", InterfaceType::Float},       // tone-mapping exposure
     {"debugView", InterfaceType::Uint},       // 0 = lit; others select an AOV
     {"terrainHeightScale", InterfaceType::Float},  // metres per unit of the terrain height map
-    {"skyExposureRegion", InterfaceType::Vec4},    // xz origin, 1/size: world -> exposure-map uv
-    {"terrainRegion", InterfaceType::Vec4},        // xz origin, 1/size: world -> height-map uv (eq. 3.11)
+    {"shadowMapTexel", InterfaceType::Float},      // 1 / shadow-map size; 0 turns sun shadows off
 }};
 UniformBlock makeFrameBlock();
 }  // namespace

@@ -85,14 +85,15 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
     std::string_view name, texture, sampler;
     std::uint32_t binding;
   };
-  constexpr std::array<WeatherMap, 2> kWeatherMaps = {{
+  constexpr std::array<WeatherMap, 3> kWeatherMaps = {{
       {"terrainHeight", "wg_terrain_height_map", "wg_terrain_height_sampler", 1},
       {"skyExposure", "wg_sky_exposure_map", "wg_sky_exposure_sampler", 3},
+      {"sunShadow", "wg_sun_shadow_map", "wg_sun_shadow_sampler", 5},  // every fragment stage reads it
   }};
   for (const auto& map : kWeatherMaps) {
     mi.globals.reserve(map.texture);
     mi.globals.reserve(map.sampler);
-    bool used = std::any_of(graph.nodes.begin(), graph.nodes.end(), [&](const IrNode& n) {
+    bool used = map.name == "sunShadow" || std::any_of(graph.nodes.begin(), graph.nodes.end(), [&](const IrNode& n) {
       return std::find(n.op->weatherMaps.begin(), n.op->weatherMaps.end(), map.name) != n.op->weatherMaps.end();
     });
     if (used)

@@ -97,9 +97,26 @@ float wg_smith_g(float NoL, float NoV, float roughness) {
 vec3 wg_fresnel(vec3 f0, float VoH) {
   return f0 + (1.0 - f0) * exp2((-5.55473 * VoH - 6.98316) * VoH);
 }
-// Eq. 2.2 plus Burley diffuse, sun and sky ambient, metallic workflow.
+// Sun shadow: 2x2 percentage-closer filtering of the shadow map's depth. The normal
+// offset and depth bias keep lit surfaces from shadowing themselves.
+float wg_sun_shadow(vec3 p, vec3 n) {
+  if (frame_shadowMapTexel <= 0.0) return 1.0;
+  vec4 clip = frame_lightViewProjection * vec4(p + n * 0.04, 1.0);
+  if (clip.w <= 0.0) return 1.0;
+  vec3 ndc = clip.xyz / clip.w;
+  vec2 uv = ndc.xy * 0.5 + 0.5;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
+  float h = 0.5 * frame_shadowMapTexel;
+  float depth = ndc.z - 0.0015;
+  float lit = step(depth, texture(sampler2D(wg_sun_shadow_map, wg_sun_shadow_sampler), uv + vec2(-h, -h)).r);
+  lit += step(depth, texture(sampler2D(wg_sun_shadow_map, wg_sun_shadow_sampler), uv + vec2(h, -h)).r);
+  lit += step(depth, texture(sampler2D(wg_sun_shadow_map, wg_sun_shadow_sampler), uv + vec2(-h, h)).r);
+  lit += step(depth, texture(sampler2D(wg_sun_shadow_map, wg_sun_shadow_sampler), uv + vec2(h, h)).r);
+  return lit * 0.25;
+}
+// Eq. 2.2 plus Burley diffuse, sun (times its shadow) and sky ambient, metallic workflow.
 vec3 wg_shade(vec3 baseColor, float metallic, float roughness, float specular, float ao, vec3 emissive,
-              vec3 N, vec3 V) {
+              vec3 N, vec3 V, float shadow) {
   roughness = clamp(roughness, 0.02, 1.0);
   vec3 L = frame_sunDirection;
   vec3 H = wg_safe_normalize(V + L);
@@ -111,7 +128,7 @@ vec3 wg_shade(vec3 baseColor, float metallic, float roughness, float specular, f
   vec3 f0 = mix(vec3(0.08 * specular), baseColor, metallic);
   float dg = wg_ggx(NoH, roughness) * wg_smith_g(NoL, NoV, roughness) / max(4.0 * NoL * NoV, 1e-4);
   vec3 direct = (diffuseColor * (wg_burley_diffuse(roughness, NoL, NoV, VoH) / 3.14159265) + dg * wg_fresnel(f0, VoH));
-  vec3 sun = frame_sunColor * frame_sunIntensity;
+  vec3 sun = frame_sunColor * frame_sunIntensity * shadow;
   vec3 sky = frame_skyColor * frame_ambientIntensity;
   return direct * sun * NoL + sky * diffuseColor * ao + emissive;
 }
@@ -146,9 +163,26 @@ float wg_smith_g(float NoL, float NoV, float roughness) {
 float3 wg_fresnel(float3 f0, float VoH) {
   return f0 + (1.0 - f0) * exp2((-5.55473 * VoH - 6.98316) * VoH);
 }
-// Eq. 2.2 plus Burley diffuse, sun and sky ambient, metallic workflow.
+// Sun shadow: 2x2 percentage-closer filtering of the shadow map's depth. The normal
+// offset and depth bias keep lit surfaces from shadowing themselves.
+float wg_sun_shadow(float3 p, float3 n) {
+  if (frame_shadowMapTexel <= 0.0) return 1.0;
+  float4 clip = mul(frame_lightViewProjection, float4(p + n * 0.04, 1.0));
+  if (clip.w <= 0.0) return 1.0;
+  float3 ndc = clip.xyz / clip.w;
+  float2 uv = ndc.xy * 0.5 + 0.5;
+  if (any(uv < (float2)0.0) || any(uv > (float2)1.0) || ndc.z > 1.0) return 1.0;
+  float h = 0.5 * frame_shadowMapTexel;
+  float depth = ndc.z - 0.0015;
+  float lit = step(depth, wg_sun_shadow_map.Sample(wg_sun_shadow_sampler, uv + float2(-h, -h)).r);
+  lit += step(depth, wg_sun_shadow_map.Sample(wg_sun_shadow_sampler, uv + float2(h, -h)).r);
+  lit += step(depth, wg_sun_shadow_map.Sample(wg_sun_shadow_sampler, uv + float2(-h, h)).r);
+  lit += step(depth, wg_sun_shadow_map.Sample(wg_sun_shadow_sampler, uv + float2(h, h)).r);
+  return lit * 0.25;
+}
+// Eq. 2.2 plus Burley diffuse, sun (times its shadow) and sky ambient, metallic workflow.
 float3 wg_shade(float3 baseColor, float metallic, float roughness, float specular, float ao, float3 emissive,
-                float3 N, float3 V) {
+                float3 N, float3 V, float shadow) {
   roughness = clamp(roughness, 0.02, 1.0);
   float3 L = frame_sunDirection;
   float3 H = wg_safe_normalize(V + L);
@@ -160,7 +194,7 @@ float3 wg_shade(float3 baseColor, float metallic, float roughness, float specula
   float3 f0 = lerp((float3)(0.08 * specular), baseColor, metallic);
   float dg = wg_ggx(NoH, roughness) * wg_smith_g(NoL, NoV, roughness) / max(4.0 * NoL * NoV, 1e-4);
   float3 direct = (diffuseColor * (wg_burley_diffuse(roughness, NoL, NoV, VoH) / 3.14159265) + dg * wg_fresnel(f0, VoH));
-  float3 sun = frame_sunColor * frame_sunIntensity;
+  float3 sun = frame_sunColor * frame_sunIntensity * shadow;
   float3 sky = frame_skyColor * frame_ambientIntensity;
   return direct * sun * NoL + sky * diffuseColor * ao + emissive;
 }

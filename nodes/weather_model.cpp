@@ -7,6 +7,10 @@
 namespace wg::weather {
 
 namespace {
+// Sky exposure: an occluder within 2 cm above is the surface itself (open sky); one
+// 30 cm or more above shelters the point completely.
+constexpr float kShelterClearance = 0.02f;
+constexpr float kShelterFull = 0.3f;
 // Eq. 3.10: the displacement noise is brightened so it never opens holes.
 constexpr float kNoiseBrightening = 0.75f;
 // Eq. 3.12: the height map is shifted by 0.05 texture units to measure slope.
@@ -146,6 +150,10 @@ float puddleMask(glm::vec3 normal, float noise, float puddleLevel) {
   float flat = smoothStep(kCosPuddleMaxSlope, kCosPuddleFullSlope, glm::dot(normal, kUp));
   float shaped = smoothStep(0.5f - kPuddleEdge, 0.5f + kPuddleEdge, noise + puddleLevel - 0.5f);
   return flat * shaped;
+}
+
+float skyExposure(float pointHeight, float occluderHeight) {
+  return 1.f - smoothStep(pointHeight + kShelterClearance, pointHeight + kShelterFull, occluderHeight);
 }
 
 float coverageNoise(glm::vec3 position) {

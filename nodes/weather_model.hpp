@@ -91,6 +91,9 @@ float puddleCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 positi
 float frostCoverage(const FrameState& frame, float frostMap);
 float hoarfrostCoverage(const FrameState& frame, glm::vec3 position, float exposure);
 
+// Sky exposure from the shared map's occluder height above a point (1 open, 0 sheltered).
+float skyExposure(float pointHeight, float occluderHeight);
+
 // Low-contrast world-space noise the coverage functions share (value noise, [0, 1]).
 float coverageNoise(glm::vec3 position);
 
