@@ -1,0 +1,578 @@
+// The weather ops' CPU semantics (seed 000, chapter 3; docs/weather-model.md) against
+// values computed by hand from the equations, called through the op registry the way
+// constant folding and the CPU evaluator call them. The arithmetic is in the comments.
+//
+// Noise: value noise at a lattice point is that cell's hash, toUnit(h) = (h >> 8) / 2^24,
+// and latticeHash(0, 0) = 0, so most cases sit at world xz = (0, 0) where every noise
+// lookup is exactly 0. The few other lattice cells used:
+//   latticeHash(1, 2) = 3724694931 -> 0.8672231
+//   latticeHash(4, 0) = 2788059268 -> 0.6491456
+//   latticeHash(0, 4) = 3745327908 -> 0.8720271
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "nodes/lattice_noise.hpp"
+#include "nodes/op_registry.hpp"
+#include "nodes/texture_image.hpp"
+#include "nodes/weather_shader_library.hpp"
+
+namespace wg {
+namespace {
+
+struct Env {
+  SurfacePoint surface;
+  FrameState frame;
+  const Image* terrainHeight = nullptr;
+};
+
+Value eval(std::string_view opName, std::vector<Value> inputs, const Env& env = {}) {
+  const OpDef* op = findOp(opName);
+  EXPECT_NE(op, nullptr) << opName;
+  if (!op) return {};
+  EXPECT_EQ(inputs.size(), op->inputs.size()) << opName << ": pass every input, defaults included";
+  EvalContext context;
+  context.surface = &env.surface;
+  context.frame = &env.frame;
+  context.terrainHeight = env.terrainHeight;
+  return op->eval(inputs.data(), context);
+}
+
+void expectValue(const Value& actual, const Value& expected, float tolerance = 1e-5f) {
+  ASSERT_EQ(actual.type, expected.type);
+  for (int i = 0; i < expected.width(); ++i) EXPECT_NEAR(actual.v[i], expected.v[i], tolerance) << "component " << i;
+}
+
+float unitHash(int x, int y) { return static_cast<float>(latticeHash(x, y) >> 8) / 16777216.0f; }
+
+Value s(float x) { return Value::scalar(x); }
+Value v2(float x, float y) { return Value::vec2(x, y); }
+Value v3(float x, float y, float z) { return Value::vec3(x, y, z); }
+Value v4(float x, float y, float z, float w) { return Value::vec4(x, y, z, w); }
+
+const Value kUp = v3(0, 1, 0);
+const Value kDown = v3(0, -1, 0);
+const Value kOrigin = v3(0, 0, 0);
+const Value kWeights = v4(2, 0.5f, 2, 0.5f);   // defaults: w1 sun, w2 wind, w3 height, w4 terrain
+const Value kShape = v4(-50, 50, 0.5f, 0);     // minHeight, maxHeight, inclination intensity
+const Value kAllTerms = v4(1, 1, 1, 1);        // inclination, sun, height, wind switched on
+// detailMask((0.5, 0.4, 0.2)) = 0.3*0.5 + 0.59*0.4 + 0.11*0.2 = 0.15 + 0.236 + 0.022 = 0.408
+const Value kDiffuse = v3(0.5f, 0.4f, 0.2f);
+
+TEST(WeatherNodes, EveryWeatherOpIsRegistered) {
+  for (const char* name :
+       {"weather_inclination", "weather_sun", "weather_wind", "weather_height", "weather_height_inverted",
+        "weather_displacement", "terrain_coord", "terrain_height", "weather_terrain_slope", "weather_terrain_orientation",
+        "weather_transition", "weather_prediction", "weather_wetness", "weather_wet_diffuse", "weather_wet_roughness",
+        "weather_wet_normal", "weather_detail_mask", "weather_snow_albedo", "weather_moss_albedo", "weather_ice_albedo",
+        "weather_frost_mask", "weather_puddle_mask", "tangent_to_world", "sky_exposure", "weather_levels",
+        "weather_conditions", "weather_snow_coverage", "weather_snow_offset", "weather_moss_coverage",
+        "weather_puddle_coverage", "weather_frost_coverage", "weather_hoarfrost_coverage"}) {
+    const OpDef* op = findOp(name);
+    ASSERT_NE(op, nullptr) << name;
+    EXPECT_NE(op->eval, nullptr) << name;
+    EXPECT_EQ(op->category, "weather") << name;
+  }
+}
+
+// Eq. 3.4: f_inc = Clamp(N.up + (Nd.up) * intensity)^3, Nd the normal-mapped world normal.
+TEST(WeatherNodes, Inclination) {
+  // Up-facing: Clamp(1 + 1 * 0.5) = 1 -> 1.
+  expectValue(eval("weather_inclination", {kUp, kUp, s(0.5f)}), s(1));
+  // Tilted (0.8, 0.6, 0), no bump: 0.6 + 0.6 * 0.5 = 0.9 -> 0.9^3 = 0.729.
+  expectValue(eval("weather_inclination", {v3(0.8f, 0.6f, 0), v3(0.8f, 0.6f, 0), s(0.5f)}), s(0.729f));
+  // Vertical face whose normal map bumps up to (0.6, 0.8, 0): 0 + 0.8 * 0.5 = 0.4 -> 0.064.
+  expectValue(eval("weather_inclination", {v3(1, 0, 0), v3(0.6f, 0.8f, 0), s(0.5f)}), s(0.064f));
+  // Downward: Clamp(-1 - 0.5) = 0.
+  expectValue(eval("weather_inclination", {kDown, kDown, s(0.5f)}), s(0));
+  // Intensity 0 ignores the normal map: 0.6^3 = 0.216.
+  expectValue(eval("weather_inclination", {v3(0.8f, 0.6f, 0), kUp, s(0)}), s(0.216f));
+}
+
+// Eq. 3.5 as read: Clamp(N . (-towardsSun) * Clamp(sunIntensity) + 1).
+TEST(WeatherNodes, SunFacing) {
+  Env env;
+  env.frame.sunDirection = {0, 1, 0};  // towards the sun: overhead
+  env.frame.sunIntensity = 0.8f;
+  // Facing the sun: -1 * 0.8 + 1 = 0.2.
+  expectValue(eval("weather_sun", {kUp}, env), s(0.2f));
+  // Facing away: 1 * 0.8 + 1 = 1.8 -> 1.
+  expectValue(eval("weather_sun", {kDown}, env), s(1));
+  // Sideways: 0 + 1 = 1.
+  expectValue(eval("weather_sun", {v3(1, 0, 0)}, env), s(1));
+  // Intensity clamps to 1: -1 * 1 + 1 = 0.
+  env.frame.sunIntensity = 2.f;
+  expectValue(eval("weather_sun", {kUp}, env), s(0));
+  // No sun: 1 everywhere.
+  env.frame.sunIntensity = 0.f;
+  expectValue(eval("weather_sun", {kUp}, env), s(1));
+  // A 30 degree sun, towards (cos 30, sin 30, 0) = (0.8660254, 0.5, 0), full strength:
+  // up-facing: -0.5 + 1 = 0.5; the sun-facing side (1, 0, 0): -0.8660254 + 1 = 0.1339746.
+  env.frame.sunDirection = {0.8660254f, 0.5f, 0};
+  env.frame.sunIntensity = 1.f;
+  expectValue(eval("weather_sun", {kUp}, env), s(0.5f));
+  expectValue(eval("weather_sun", {v3(1, 0, 0)}, env), s(0.1339746f));
+}
+
+// Eq. 3.6-3.7: f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x), f_pan(h, v) =
+// noise(0.25 * xz + (h, v) * time); f_w = Clamp(N . (d.x, 0, d.y) * f_wind + windIntensity).
+TEST(WeatherNodes, Wind) {
+  Env env;
+  env.frame.windDirection = {1, 0};  // blowing towards +x
+  env.frame.windIntensity = 0.2f;
+  env.frame.time = 0;
+  // At xz = (4, 8) the flow noise is read at (1, 2), a lattice point, for both phases:
+  // f_wind = 0.8672231 + 0.5 * 0.8672231 = 1.3008346.
+  const float flow = 1.5f * unitHash(1, 2);
+  EXPECT_NEAR(flow, 1.3008346f, 1e-6f);
+  // Leeward-tilted normal (0.6, 0.8, 0): 0.6 * 1.3008346 + 0.2 = 0.9805008.
+  expectValue(eval("weather_wind", {v3(0.6f, 0.8f, 0), v3(4, 0, 8)}, env), s(0.9805008f));
+  // Windward (-0.6, 0.8, 0): -0.7805008 + 0.2 < 0 -> 0; with intensity 1: 0.2194992.
+  expectValue(eval("weather_wind", {v3(-0.6f, 0.8f, 0), v3(4, 0, 8)}, env), s(0));
+  env.frame.windIntensity = 1.f;
+  expectValue(eval("weather_wind", {v3(-0.6f, 0.8f, 0), v3(4, 0, 8)}, env), s(0.2194992f));
+  // Up-facing: N . (1, 0, 0) = 0 -> Clamp(windIntensity) = 1.
+  expectValue(eval("weather_wind", {kUp, v3(4, 0, 8)}, env), s(1));
+  // Panning: at xz = (0, 0), time 4, the phases read (4, 0) and (0, 4):
+  // f_wind = 0.6491456 + 0.5 * 0.8720271 = 1.0851592; (0.6, 0.8, 0), intensity 0: 0.6510955.
+  env.frame.windIntensity = 0.f;
+  env.frame.time = 4.f;
+  EXPECT_NEAR(unitHash(4, 0) + 0.5f * unitHash(0, 4), 1.0851592f, 1e-6f);
+  expectValue(eval("weather_wind", {v3(0.6f, 0.8f, 0), kOrigin}, env), s(0.6510955f));
+  // Wind towards +z acts on z-facing sides; the phases now read (0, 4) and (4, 0):
+  // f_wind = 0.8720271 + 0.5 * 0.6491456 = 1.1965999; (0, 0.8, 0.6): 0.6 * 1.1965999 = 0.7179599.
+  env.frame.windDirection = {0, 1};
+  expectValue(eval("weather_wind", {v3(0, 0.8f, 0.6f), kOrigin}, env), s(0.7179599f));
+}
+
+// Eq. 3.8-3.9: Clamp((y - min) / (max - min)) and 1 - that.
+TEST(WeatherNodes, HeightAndInvertedHeight) {
+  expectValue(eval("weather_height", {v3(7, 0, 3), s(-50), s(50)}), s(0.5f));    // 50 / 100
+  expectValue(eval("weather_height", {v3(0, 25, 0), s(-50), s(50)}), s(0.75f));  // 75 / 100
+  expectValue(eval("weather_height", {v3(0, 100, 0), s(-50), s(50)}), s(1));     // 1.5 -> 1
+  expectValue(eval("weather_height", {v3(0, -60, 0), s(-50), s(50)}), s(0));     // -0.1 -> 0
+  // A degenerate range divides by 1e-3 m instead of 0: 0.0005 / 0.001 = 0.5.
+  expectValue(eval("weather_height", {v3(0, 0.0005f, 0), s(0), s(0)}), s(0.5f), 1e-3f);
+  expectValue(eval("weather_height_inverted", {v3(0, 25, 0), s(-50), s(50)}), s(0.25f));  // 1 - 0.75
+  expectValue(eval("weather_height_inverted", {v3(0, -60, 0), s(-50), s(50)}), s(1));
+}
+
+// Eq. 3.10: (Clamp(noise + 0.75) * progress * maxSnowHeight) * N.
+TEST(WeatherNodes, Displacement) {
+  // Clamp(0.1 + 0.75) = 0.85; 0.85 * 0.5 * 0.25 = 0.10625 along up.
+  expectValue(eval("weather_displacement", {s(0.1f), s(0.5f), s(0.25f), kUp}), v3(0, 0.10625f, 0));
+  // Clamp(0.5 + 0.75) = 1; 1 * 1 * 0.25 = 0.25 along (0.6, 0.8, 0) -> (0.15, 0.2, 0).
+  expectValue(eval("weather_displacement", {s(0.5f), s(1), s(0.25f), v3(0.6f, 0.8f, 0)}), v3(0.15f, 0.2f, 0));
+  // No progress, no offset.
+  expectValue(eval("weather_displacement", {s(0.5f), s(0), s(0.25f), kUp}), v3(0, 0, 0));
+}
+
+// Eq. 3.11: (world xz - region origin) * (1 / region size).
+TEST(WeatherNodes, TerrainCoord) {
+  Env env;
+  env.frame.terrainRegion = {10, -20, 0.01f, 0.02f};
+  // ((60 - 10) * 0.01, (30 + 20) * 0.02) = (0.5, 1.0); y does not matter.
+  expectValue(eval("terrain_coord", {v3(60, 5, 30)}, env), v2(0.5f, 1.0f));
+  expectValue(eval("terrain_coord", {v3(10, -99, -20)}, env), v2(0, 0));
+}
+
+// The shared height map: red channel, linear filtering, clamp to edge; 0 without a map.
+TEST(WeatherNodes, TerrainHeight) {
+  Env env;
+  expectValue(eval("terrain_height", {v2(0.3f, 0.7f)}, env), s(0));
+  // A 2 x 1 map with texels 0 and 255: texel centres at u = 0.25 and 0.75.
+  Image map = Image::blank(2, 1);
+  map.setTexel(0, 0, {0, 0, 0, 1});
+  map.setTexel(1, 0, {1, 0, 0, 1});
+  env.terrainHeight = &map;
+  expectValue(eval("terrain_height", {v2(0.25f, 0.5f)}, env), s(0));    // on texel 0
+  expectValue(eval("terrain_height", {v2(0.5f, 0.5f)}, env), s(0.5f));  // halfway: (0 + 1) / 2
+  expectValue(eval("terrain_height", {v2(0.75f, 0.5f)}, env), s(1));    // on texel 1
+  expectValue(eval("terrain_height", {v2(2.0f, 0.5f)}, env), s(1));     // clamped to the edge
+}
+
+// Eq. 3.12: (1, 0, I (hU - h0)) x (0, 1, I (hV - h0)).
+TEST(WeatherNodes, TerrainSlope) {
+  // a = (1, 0, 10 * 0.1) = (1, 0, 1), b = (0, 1, 10 * -0.1) = (0, 1, -1):
+  // a x b = (0 * -1 - 1 * 1, 1 * 0 - 1 * -1, 1 * 1 - 0 * 0) = (-1, 1, 1).
+  expectValue(eval("weather_terrain_slope", {s(0.2f), s(0.3f), s(0.1f), s(10)}), v3(-1, 1, 1));
+  // Flat: (1, 0, 0) x (0, 1, 0) = (0, 0, 1).
+  expectValue(eval("weather_terrain_slope", {s(0.4f), s(0.4f), s(0.4f), s(10)}), v3(0, 0, 1));
+}
+
+// Eq. 3.13: ((slope * (1, 1, 0)) . N) (TN . (0, 0, 1)) intensity, slope (u, v) -> world (x, z).
+TEST(WeatherNodes, TerrainOrientation) {
+  // Horizontal slope (-1, 0, 1) in world; N = (-0.6, 0, 0.8): 0.6 + 0.8 = 1.4; * 0.5 * 2 = 1.4.
+  expectValue(eval("weather_terrain_orientation", {v3(-1, 1, 1), v3(-0.6f, 0, 0.8f), s(0.5f), s(2)}), s(1.4f));
+  // Up-facing surfaces are unaffected: (-1, 0, 1) . (0, 1, 0) = 0.
+  expectValue(eval("weather_terrain_orientation", {v3(-1, 1, 1), kUp, s(1), s(1)}), s(0));
+  // A negative intensity flips the side: 1.4 * 0.5 * -2 = -1.4 (not clamped here).
+  expectValue(eval("weather_terrain_orientation", {v3(-1, 1, 1), v3(-0.6f, 0, 0.8f), s(0.5f), s(-2)}), s(-1.4f));
+}
+
+// Eq. 3.14: Clamp(noise - 1 + 3 p).
+TEST(WeatherNodes, Transition) {
+  expectValue(eval("weather_transition", {s(0.4f), s(0.3f)}), s(0.3f));  // 0.4 - 1 + 0.9
+  expectValue(eval("weather_transition", {s(0.4f), s(0)}), s(0));        // -0.6 -> 0
+  expectValue(eval("weather_transition", {s(0.4f), s(1)}), s(1));        // 2.4 -> 1
+  expectValue(eval("weather_transition", {s(0), s(1.0f / 3.0f)}), s(0)); // the last spot fills at p = 2/3
+  expectValue(eval("weather_transition", {s(0), s(2.0f / 3.0f)}), s(1));
+}
+
+// Eq. 3.1 as read: Clamp(inc * (w1 sun * w3 height + w4 terrain + w2 wind)).
+TEST(WeatherNodes, Prediction) {
+  // 2*0.5*2*0.5 = 1.0; + 0.5*0.2 = 0.1; + 0.5*0.4 = 0.2 -> 1.3; * 0.729 = 0.9477.
+  expectValue(eval("weather_prediction", {s(0.729f), s(0.5f), s(0.5f), s(0.2f), s(0.4f), kWeights}), s(0.9477f));
+  // Inclination gates wind and terrain: nothing on a downward face (f_inc = 0).
+  expectValue(eval("weather_prediction", {s(0), s(1), s(1), s(1), s(1), kWeights}), s(0));
+  // The default weights' design point: up-facing (inc 1), mid height (0.5), 30 degree sun
+  // (sun 0.5), no wind or terrain: 2 * 0.5 * 2 * 0.5 = 1 -> fully covered.
+  expectValue(eval("weather_prediction", {s(1), s(0.5f), s(0.5f), s(0), s(0), kWeights}), s(1));
+  // Clamped above: 1 * (2 * 1 * 2 * 1) = 4 -> 1.
+  expectValue(eval("weather_prediction", {s(1), s(1), s(1), s(0), s(0), kWeights}), s(1));
+  // Other weights: inc 0.5 * (1 * 0.4 * 1 * 0.5 + 2 * 0.1 + 0 * wind) = 0.5 * 0.4 = 0.2.
+  expectValue(eval("weather_prediction", {s(0.5f), s(0.4f), s(0.5f), s(0.1f), s(0.9f), v4(1, 0, 1, 2)}), s(0.2f));
+}
+
+// Eq. 3.15 as read: wetnessLevel * Clamp(exposure) * smoothstep(0, 1 C, T).
+TEST(WeatherNodes, Wetness) {
+  Env env;
+  env.frame.wetnessLevel = 0.6f;
+  env.frame.temperature = 10;
+  expectValue(eval("weather_wetness", {s(1)}, env), s(0.6f));
+  expectValue(eval("weather_wetness", {s(0.5f)}, env), s(0.3f));  // sheltered half
+  env.frame.temperature = 0.5f;                                      // smoothstep = 0.25 * 2 = 0.5
+  expectValue(eval("weather_wetness", {s(1)}, env), s(0.3f));
+  env.frame.temperature = 0.25f;  // 0.0625 * (3 - 0.5) = 0.15625; * 0.6 = 0.09375
+  expectValue(eval("weather_wetness", {s(1)}, env), s(0.09375f));
+  env.frame.temperature = -2;  // frozen: no liquid water
+  expectValue(eval("weather_wetness", {s(1)}, env), s(0));
+  env.frame.temperature = 10;
+  env.frame.wetnessLevel = 0;  // dry, even in rain: the level is what the shader reads
+  env.frame.precipitation = 1;
+  expectValue(eval("weather_wetness", {s(1)}, env), s(0));
+}
+
+// Eq. 3.16-3.17.
+TEST(WeatherNodes, WetDiffuseAndRoughness) {
+  // Lerp(1, 0.7, 0.5) = 0.85: (0.5, 0.4, 0.2) * 0.85 = (0.425, 0.34, 0.17).
+  expectValue(eval("weather_wet_diffuse", {kDiffuse, s(0.5f)}), v3(0.425f, 0.34f, 0.17f));
+  // Fully wet: 70 %.
+  expectValue(eval("weather_wet_diffuse", {v3(1, 0.5f, 0), s(1)}), v3(0.7f, 0.35f, 0));
+  expectValue(eval("weather_wet_diffuse", {kDiffuse, s(0)}), kDiffuse);
+  expectValue(eval("weather_wet_roughness", {s(0.8f), s(0.3f)}), s(0.5f));  // 0.8 - 0.3
+  expectValue(eval("weather_wet_roughness", {s(0.2f), s(0.5f)}), s(0));     // -0.3 -> 0
+}
+
+// Eq. 3.18 as read: N + pan * 2 * 0.25 * rain with one value-noise lookup n at
+// 2 * xz + (0.5, 0.01) * p * time giving both slopes, pan = (n - 0.5, fract(7 n) - 0.5),
+// and rain = smoothstep(0, 0.1, precipitation).
+TEST(WeatherNodes, WetNormal) {
+  Env env;
+  const Value flat = v3(0, 0, 1);
+  // No rain: unchanged, however wet.
+  env.frame.precipitation = 0;
+  expectValue(eval("weather_wet_normal", {flat, kOrigin, s(1)}, env), flat);
+  // Rain but p = 0: unchanged.
+  env.frame.precipitation = 1;
+  expectValue(eval("weather_wet_normal", {flat, kOrigin, s(0)}, env), flat);
+  // Precipitation 0.05 -> rain = smoothstep(0, 0.1, 0.05) = 0.5; scale 2 * 0.25 * 0.5 = 0.25.
+  // At xz = 0, time 0: n = noise(0, 0) = 0, pan = (-0.5, fract(0) - 0.5) = (-0.5, -0.5)
+  // -> (0, 0, 1) + (-0.125, -0.125, 0).
+  env.frame.precipitation = 0.05f;
+  expectValue(eval("weather_wet_normal", {flat, kOrigin, s(1)}, env), v3(-0.125f, -0.125f, 1));
+  // Full rain (scale 0.5), p = 0.5, time 4: uv = (0.5 * 0.5 * 4, 0.01 * 0.5 * 4) = (1, 0.02).
+  env.frame.precipitation = 1;
+  env.frame.time = 4;
+  float n = valueNoise(1.f, 0.02f);
+  float px = n - 0.5f, py = (7 * n - std::floor(7 * n)) - 0.5f;
+  expectValue(eval("weather_wet_normal", {v3(0.1f, 0.2f, 0.9f), kOrigin, s(0.5f)}, env),
+              v3(0.1f + px * 0.5f, 0.2f + py * 0.5f, 0.9f), 1e-4f);
+}
+
+// Eq. 3.19 with p = 1: Clamp((0.3, 0.59, 0.11) . diffuse).
+TEST(WeatherNodes, DetailMask) {
+  expectValue(eval("weather_detail_mask", {kDiffuse}), s(0.408f));
+  expectValue(eval("weather_detail_mask", {v3(1, 1, 1)}), s(1));  // 0.3 + 0.59 + 0.11
+  expectValue(eval("weather_detail_mask", {v3(2, 2, 2)}), s(1));  // clamped
+  expectValue(eval("weather_detail_mask", {v3(1, 0, 0)}), s(0.3f));
+}
+
+float reflectance(const Value& c) { return 0.3f * c.v[0] + 0.59f * c.v[1] + 0.11f * c.v[2]; }
+
+// Eq. 3.19 + Table 4.1: value = Lerp(low, high, Clamp(mask * spread)); albedo = tint /
+// reflectance(tint) * value, so the reflectance of the result is exactly the value.
+TEST(WeatherNodes, SnowMossIceAlbedo) {
+  // Snow, spread 2: 0.408 * 2 = 0.816; 0.9 + 0.05 * 0.816 = 0.9408. Tint (0.97, 0.985, 1),
+  // reflectance 0.291 + 0.58115 + 0.11 = 0.98215: (0.9291615, 0.9435300, 0.9578985).
+  expectValue(eval("weather_snow_albedo", {kDiffuse}), v3(0.9291615f, 0.9435300f, 0.9578985f));
+  EXPECT_NEAR(reflectance(eval("weather_snow_albedo", {kDiffuse})), 0.9408f, 1e-5f);
+  EXPECT_NEAR(reflectance(eval("weather_snow_albedo", {v3(0, 0, 0)})), 0.90f, 1e-5f);  // black: band low
+  EXPECT_NEAR(reflectance(eval("weather_snow_albedo", {v3(1, 1, 1)})), 0.95f, 1e-5f);  // white: band high
+  // Moss, spread 1.5: 0.408 * 1.5 = 0.612; 0.25 + 0.28 * 0.612 = 0.42136. Tint (0.45, 0.75, 0.2),
+  // reflectance 0.135 + 0.4425 + 0.022 = 0.5995: (0.3162836, 0.5271393, 0.1405705).
+  expectValue(eval("weather_moss_albedo", {kDiffuse}), v3(0.3162836f, 0.5271393f, 0.1405705f));
+  EXPECT_NEAR(reflectance(eval("weather_moss_albedo", {v3(0, 0, 0)})), 0.25f, 1e-5f);
+  EXPECT_NEAR(reflectance(eval("weather_moss_albedo", {v3(1, 1, 1)})), 0.53f, 1e-5f);
+  // Ice, spread 3: 0.408 * 3 = 1.224 -> 1 -> 0.7. Tint (0.85, 0.95, 1), reflectance
+  // 0.255 + 0.5605 + 0.11 = 0.9255: (0.6428957, 0.7185305, 0.7563479).
+  expectValue(eval("weather_ice_albedo", {kDiffuse}), v3(0.6428957f, 0.7185305f, 0.7563479f));
+  // Dark grey 0.1: 0.1 * 3 = 0.3; 0.5 + 0.2 * 0.3 = 0.56.
+  EXPECT_NEAR(reflectance(eval("weather_ice_albedo", {v3(0.1f, 0.1f, 0.1f)})), 0.56f, 1e-5f);
+  EXPECT_NEAR(reflectance(eval("weather_ice_albedo", {v3(0, 0, 0)})), 0.5f, 1e-5f);
+  // Whatever the input, the result stays in the measured band.
+  for (float g : {0.f, 0.05f, 0.2f, 0.5f, 0.9f, 1.f, 3.f}) {
+    float snow = reflectance(eval("weather_snow_albedo", {v3(g, g, g)}));
+    float moss = reflectance(eval("weather_moss_albedo", {v3(g, g, g)}));
+    float ice = reflectance(eval("weather_ice_albedo", {v3(g, g, g)}));
+    EXPECT_TRUE(snow >= 0.9f - 1e-5f && snow <= 0.95f + 1e-5f) << g << ": " << snow;
+    EXPECT_TRUE(moss >= 0.25f - 1e-5f && moss <= 0.53f + 1e-5f) << g << ": " << moss;
+    EXPECT_TRUE(ice >= 0.5f - 1e-5f && ice <= 0.7f + 1e-5f) << g << ": " << ice;
+  }
+}
+
+// Eq. 3.20 as read: (1 - F)^Lerp(0, 5, 1 - frost) * Clamp(10 frost).
+TEST(WeatherNodes, FrostMask) {
+  // F = 0.5, frost 0.5: exponent 2.5, 0.5^2.5 = 0.1767767; fade Clamp(5) = 1.
+  expectValue(eval("weather_frost_mask", {s(0.5f), s(0.5f)}), s(0.1767767f));
+  // Fully frozen: exponent 0 -> 1 everywhere, mid-stream too (base max(0, 1e-4)^0 = 1).
+  expectValue(eval("weather_frost_mask", {s(0.5f), s(1)}), s(1));
+  expectValue(eval("weather_frost_mask", {s(1), s(1)}), s(1));
+  // Liquid: the fade-in is 0, so even the banks (F = 0, base 1) have no ice.
+  expectValue(eval("weather_frost_mask", {s(0), s(0)}), s(0));
+  // Freezing starts at the banks: frost 0.05 -> exponent 4.75, fade 0.5: bank 1^4.75 * 0.5 = 0.5,
+  // mid-stream (1e-4)^4.75 * 0.5 ~ 0.
+  expectValue(eval("weather_frost_mask", {s(0), s(0.05f)}), s(0.5f));
+  expectValue(eval("weather_frost_mask", {s(1), s(0.05f)}), s(0));
+  // Half way across (F = 0.5) at frost 0.8: 0.5^1 = 0.5.
+  expectValue(eval("weather_frost_mask", {s(0.5f), s(0.8f)}), s(0.5f));
+}
+
+// Section 5.1.2: smoothstep(cos 8, cos 4, N.up) * smoothstep(0.45, 0.55, noise + level - 0.5).
+TEST(WeatherNodes, PuddleMask) {
+  // Flat, noise 0.5, level 0.5: 0.5 -> smoothstep = 0.5.
+  expectValue(eval("weather_puddle_mask", {kUp, s(0.5f), s(0.5f)}), s(0.5f));
+  expectValue(eval("weather_puddle_mask", {kUp, s(0.3f), s(0.5f)}), s(0));  // 0.3 < 0.45
+  expectValue(eval("weather_puddle_mask", {kUp, s(0.3f), s(0.9f)}), s(1));  // 0.7 > 0.55
+  // Tilted 10 degrees: cos 10 = 0.9848 < cos 8 = 0.9902681 -> 0.
+  const float d = 3.14159265f / 180.f;
+  expectValue(eval("weather_puddle_mask", {v3(std::sin(10 * d), std::cos(10 * d), 0), s(0.3f), s(0.9f)}), s(0));
+  // Tilted 6 degrees: t = (0.9945219 - 0.9902681) / (0.9975641 - 0.9902681) = 0.5830369;
+  // t^2 (3 - 2t) = 0.6234103.
+  expectValue(eval("weather_puddle_mask", {v3(std::sin(6 * d), std::cos(6 * d), 0), s(0.3f), s(0.9f)}), s(0.6234103f),
+              2e-4f);
+}
+
+// Tangent space -> world with the surface's orthonormal frame (b = cross(n, t) * w).
+TEST(WeatherNodes, TangentToWorld) {
+  Env env;
+  env.surface.worldNormal = {0, 1, 0};
+  env.surface.tangent = {1, 0, 0, 1};  // b = (0, 1, 0) x (1, 0, 0) = (0, 0, -1)
+  expectValue(eval("tangent_to_world", {v3(0, 0, 1)}, env), v3(0, 1, 0));
+  expectValue(eval("tangent_to_world", {v3(1, 0, 0)}, env), v3(1, 0, 0));
+  expectValue(eval("tangent_to_world", {v3(0, 1, 0)}, env), v3(0, 0, -1));
+  expectValue(eval("tangent_to_world", {v3(0.6f, 0, 0.8f)}, env), v3(0.6f, 0.8f, 0));
+  expectValue(eval("tangent_to_world", {v3(0, 0, 2)}, env), v3(0, 1, 0));  // normalised
+  env.surface.tangent = {1, 0, 0, -1};  // mirrored: b = (0, 0, 1)
+  expectValue(eval("tangent_to_world", {v3(0, 1, 0)}, env), v3(0, 0, 1));
+  env.surface.tangent = {1, 1, 0, 1};  // not orthogonal: Gram-Schmidt gives (1, 0, 0)
+  expectValue(eval("tangent_to_world", {v3(1, 0, 0)}, env), v3(1, 0, 0));
+}
+
+TEST(WeatherNodes, SkyExposureLevelsAndConditions) {
+  Env env;
+  env.surface.skyExposure = 0.25f;
+  expectValue(eval("sky_exposure", {v3(1, 2, 3)}, env), s(0.25f));
+  env.frame.snowLevel = 0.1f;
+  env.frame.wetnessLevel = 0.2f;
+  env.frame.mossLevel = 0.3f;
+  env.frame.frostLevel = 0.4f;
+  env.frame.temperature = -3;
+  env.frame.precipitation = 0.7f;
+  env.frame.windIntensity = 0.8f;
+  env.frame.sunIntensity = 0.9f;
+  Value levels = eval("weather_levels", {}, env);
+  expectValue(levels, v4(0.1f, 0.2f, 0.3f, 0.4f));
+  const OpDef* op = findOp("weather_levels");
+  expectValue(applyAccessor(levels, op->outputs[static_cast<std::size_t>(op->findOutput("moss"))].accessor), s(0.3f));
+  Value conditions = eval("weather_conditions", {}, env);
+  expectValue(conditions, v4(-3, 0.7f, 0.8f, 0.9f));
+  op = findOp("weather_conditions");
+  expectValue(applyAccessor(conditions, op->outputs[static_cast<std::size_t>(op->findOutput("precipitation"))].accessor),
+              s(0.7f));
+}
+
+// Snow: transition(0.5 noise(1.5 xz) + 0.5 (1 - detailMask), f_p * snowLevel * exposure).
+// At xz = 0 the noise is 0, so the transition noise is 0.5 * (1 - 0.408) = 0.296.
+TEST(WeatherNodes, SnowCoverage) {
+  Env env;
+  auto coverage = [&](const Value& n, const Value& nd, float exposure, const Value& terms = kAllTerms,
+                      const Value& position = kOrigin, float terrain = 0) {
+    return eval("weather_snow_coverage", {n, nd, position, kDiffuse, s(terrain), s(exposure), kWeights, kShape, terms}, env);
+  };
+  // Level 0: the early-out, however favourable everything else is.
+  env.frame.snowLevel = 0;
+  expectValue(coverage(kUp, kUp, 1, kAllTerms, kOrigin, 1), s(0));
+  // Full level: inc 1, sun 1 (no sun), height 0.5, wind Clamp(0 + 0) = 0, terrain 0:
+  // f_p = Clamp(1 * 2 * 1 * 2 * 0.5) = 1; transition(0.296, 1) = Clamp(0.296 + 2) = 1.
+  env.frame.snowLevel = 1;
+  expectValue(coverage(kUp, kUp, 1), s(1));
+  // Fully sheltered: level * exposure = 0 -> 0.
+  expectValue(coverage(kUp, kUp, 0), s(0));
+  // Half exposed: transition(0.296, 0.5) = 0.296 - 1 + 1.5 = 0.796.
+  expectValue(coverage(kUp, kUp, 0.5f), s(0.796f));
+  // Snow level 0.3: 0.296 - 1 + 0.9 = 0.196.
+  env.frame.snowLevel = 0.3f;
+  expectValue(coverage(kUp, kUp, 1), s(0.196f));
+  // Downward faces get nothing, even with full wind and terrain terms (inclination gates them).
+  env.frame.snowLevel = 1;
+  env.frame.windIntensity = 1;
+  expectValue(coverage(kDown, kDown, 1, kAllTerms, kOrigin, 1), s(0));
+  env.frame.windIntensity = 0;
+  // ...unless inclination is switched off (terms.x = 0): f_p = Clamp(2 * 1 * 2 * 0.5) = 1 -> 1.
+  expectValue(coverage(kDown, kDown, 1, v4(0, 1, 1, 1)), s(1));
+  // Sun from the +x horizon at full strength, snow level 0.3. Sun-facing (0.6, 0.8, 0): inc
+  // Clamp(0.8 + 0.4) = 1, sun Clamp(-0.6 + 1) = 0.4, f_p = 2 * 0.4 * 2 * 0.5 = 0.8;
+  // transition(0.296, 0.24) = 0.296 - 1 + 0.72 = 0.016. The shaded side (-0.6, 0.8, 0):
+  // sun 1, f_p 1 -> 0.196.
+  env.frame.sunDirection = {1, 0, 0};
+  env.frame.sunIntensity = 1;
+  env.frame.snowLevel = 0.3f;
+  expectValue(coverage(v3(0.6f, 0.8f, 0), v3(0.6f, 0.8f, 0), 1), s(0.016f));
+  expectValue(coverage(v3(-0.6f, 0.8f, 0), v3(-0.6f, 0.8f, 0), 1), s(0.196f));
+  // Switching the sun off (terms.y = 0) makes both sides alike.
+  expectValue(coverage(v3(0.6f, 0.8f, 0), v3(0.6f, 0.8f, 0), 1, v4(1, 0, 1, 1)), s(0.196f));
+}
+
+// Snow offset (vertex stage): eq. 3.10 with f_p (detail normal = geometric normal, no
+// terrain) * snowLevel * exposure and the coverage noise.
+TEST(WeatherNodes, SnowOffset) {
+  Env env;
+  auto offset = [&](const Value& n, float exposure, float maxSnowHeight) {
+    return eval("weather_snow_offset", {n, kOrigin, s(exposure), kWeights, kShape, kAllTerms, s(maxSnowHeight)}, env);
+  };
+  env.frame.snowLevel = 0;
+  expectValue(offset(kUp, 1, 0.25f), v3(0, 0, 0));
+  // Full: f_p = 1 (as above), noise 0: Clamp(0 + 0.75) * 1 * 0.25 = 0.1875 along up.
+  env.frame.snowLevel = 1;
+  expectValue(offset(kUp, 1, 0.25f), v3(0, 0.1875f, 0));
+  // Half the level (or half exposure): 0.09375; a 1 m max height: 0.75.
+  expectValue(offset(kUp, 0.5f, 0.25f), v3(0, 0.09375f, 0));
+  expectValue(offset(kUp, 1, 1), v3(0, 0.75f, 0));
+  expectValue(offset(kDown, 1, 0.25f), v3(0, 0, 0));  // f_p = 0 on downward faces
+}
+
+// Moss: transition(0.5 noise + 0.5 (1 - detailMask), Clamp(w1 sun w3 (1 - height)) *
+// (0.5 + 0.5 N.up) * mossLevel). The moss noise reads position + (17.3, 0, 9.1), so at
+// xz = (-17.3, -9.1) it is noise(0, 0) = 0 and the transition noise is again 0.296.
+TEST(WeatherNodes, MossCoverage) {
+  Env env;
+  const Value at = v3(-17.3f, 0, -9.1f);
+  auto coverage = [&](const Value& n, const Value& position) {
+    return eval("weather_moss_coverage", {n, position, kDiffuse, kWeights, kShape}, env);
+  };
+  env.frame.mossLevel = 0;
+  expectValue(coverage(kUp, at), s(0));
+  // Full level, up-facing, y = 0: sun 1, low 0.5, facing 1: Clamp(2 * 1 * 2 * 0.5) * 1 = 1 -> 1.
+  env.frame.mossLevel = 1;
+  expectValue(coverage(kUp, at), s(1));
+  // Level 0.3: 0.296 - 1 + 0.9 = 0.196.
+  env.frame.mossLevel = 0.3f;
+  expectValue(coverage(kUp, at), s(0.196f));
+  env.frame.mossLevel = 1;
+  // Overhangs: facing 0.5 - 0.5 = 0 -> transition(0.296, 0) = 0.
+  expectValue(coverage(kDown, at), s(0));
+  // High ground (y = 50 = maxHeight): low = 0 -> 0.
+  expectValue(coverage(kUp, v3(-17.3f, 50, -9.1f)), s(0));
+  // Full sun from +x: the sun side (1, 0, 0) gets sun 0 -> 0; the shade side (-1, 0, 0)
+  // sun Clamp(1 + 1) = 1, facing 0.5: 1 * 0.5 = 0.5 -> 0.296 - 1 + 1.5 = 0.796.
+  env.frame.sunDirection = {1, 0, 0};
+  env.frame.sunIntensity = 1;
+  expectValue(coverage(v3(1, 0, 0), at), s(0));
+  expectValue(coverage(v3(-1, 0, 0), at), s(0.796f));
+}
+
+// Puddles: puddleMask(N, noise(0.35 xz), puddleLevel * exposure); noise(0, 0) = 0.
+TEST(WeatherNodes, PuddleCoverage) {
+  Env env;
+  env.frame.puddleLevel = 0;
+  expectValue(eval("weather_puddle_coverage", {kUp, kOrigin, s(1)}, env), s(0));
+  // Full level on flat ground: smoothstep(0.45, 0.55, 0 + 1 - 0.5) = 0.5.
+  env.frame.puddleLevel = 1;
+  expectValue(eval("weather_puddle_coverage", {kUp, kOrigin, s(1)}, env), s(0.5f));
+  // Exposure 0.6 -> level 0.6: 0.1 < 0.45 -> 0. Exposure 0 -> the early-out.
+  expectValue(eval("weather_puddle_coverage", {kUp, kOrigin, s(0.6f)}, env), s(0));
+  expectValue(eval("weather_puddle_coverage", {kUp, kOrigin, s(0)}, env), s(0));
+  // A 10 degree slope never holds water.
+  const float d = 3.14159265f / 180.f;
+  expectValue(eval("weather_puddle_coverage", {v3(std::sin(10 * d), std::cos(10 * d), 0), kOrigin, s(1)}, env), s(0));
+  // Elsewhere the shape follows the noise: at xz = (4, 8) it reads noise(1.4, 2.8).
+  float n = valueNoise(4 * 0.35f, 8 * 0.35f);
+  float x = std::clamp((n + 1 - 0.5f - 0.45f) / 0.1f, 0.f, 1.f);
+  expectValue(eval("weather_puddle_coverage", {kUp, v3(4, 0, 8), s(1)}, env), s(x * x * (3 - 2 * x)));
+}
+
+// Ice: the frost mask of eq. 3.20 with frame_frostLevel.
+TEST(WeatherNodes, FrostCoverage) {
+  Env env;
+  env.frame.frostLevel = 0;
+  expectValue(eval("weather_frost_coverage", {s(0)}, env), s(0));  // liquid, even at the banks
+  env.frame.frostLevel = 1;
+  expectValue(eval("weather_frost_coverage", {s(0.5f)}, env), s(1));  // whole river
+  expectValue(eval("weather_frost_coverage", {s(1)}, env), s(1));
+  env.frame.frostLevel = 0.5f;
+  expectValue(eval("weather_frost_coverage", {s(0.5f)}, env), s(0.1767767f));  // 0.5^2.5
+}
+
+// Hoarfrost: transition(noise(1.5 xz), frostLevel * exposure).
+TEST(WeatherNodes, HoarfrostCoverage) {
+  Env env;
+  env.frame.frostLevel = 0;
+  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(1)}, env), s(0));
+  env.frame.frostLevel = 1;
+  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(1)}, env), s(1));    // 0 - 1 + 3 -> 1
+  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(0)}, env), s(0));    // sheltered
+  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(0.4f)}, env), s(0.2f));  // -1 + 1.2
+  env.frame.frostLevel = 0.4f;
+  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(1)}, env), s(0.2f));
+}
+
+// The GLSL and HLSL library texts must define the same functions: a function added to
+// one language only would compile for one target and fail for the other.
+std::set<std::string> definedFunctions(std::string_view text) {
+  // A definition starts a line: "<type> wg_name(". Calls are indented or follow
+  // "return", "=", or another call.
+  static const std::regex kDefinition(R"(^([A-Za-z_][A-Za-z0-9_]*)\s+\b(wg_[a-z0-9_]+)\s*\()");
+  std::set<std::string> names;
+  std::istringstream lines{std::string(text)};
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::smatch m;
+    if (std::regex_search(line, m, kDefinition) && m[1].str() != "return") names.insert(m[2].str());
+  }
+  return names;
+}
+
+TEST(WeatherNodes, GlslAndHlslLibrariesDefineTheSameFunctions) {
+  auto glsl = definedFunctions(kWeatherLibrary.glsl);
+  auto hlsl = definedFunctions(kWeatherLibrary.hlsl);
+  EXPECT_GE(glsl.size(), 30u);  // the library as written defines 38
+  EXPECT_EQ(glsl, hlsl);
+  // Every weather op's template calls a function the library defines (or a sampler).
+  for (const OpDef* op : allOps()) {
+    if (op->libraries.empty() || op->libraries.front() != &kWeatherLibrary) continue;
+    std::string code(op->glsl);
+    static const std::regex kCall(R"(\b(wg_[a-z0-9_]+)\s*\()");
+    for (auto it = std::sregex_iterator(code.begin(), code.end(), kCall); it != std::sregex_iterator(); ++it)
+      EXPECT_TRUE(glsl.count((*it)[1].str())) << op->name << " calls " << (*it)[1].str();
+  }
+}
+
+}  // namespace
+}  // namespace wg
