@@ -7,5 +7,7 @@ enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitInter
 
 int runCompileCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
+int runEvalCommand(int argc, char** argv);
+int runRenderCommand(int argc, char** argv);
 
 }  // namespace wg

@@ -7,10 +7,11 @@
 namespace wg::weather {
 
 namespace {
-// Sky exposure: an occluder within 2 cm above is the surface itself (open sky); one
-// 30 cm or more above shelters the point completely.
-constexpr float kShelterClearance = 0.02f;
-constexpr float kShelterFull = 0.3f;
+// Sky exposure: an occluder within 10 cm above is the surface itself (the map's
+// bilinear error on sloped ground stays below that); one 50 cm or more above shelters
+// the point completely.
+constexpr float kShelterClearance = 0.1f;
+constexpr float kShelterFull = 0.5f;
 // Eq. 3.10: the displacement noise is brightened so it never opens holes.
 constexpr float kNoiseBrightening = 0.75f;
 // Eq. 3.12: the height map is shifted by 0.05 texture units to measure slope.

@@ -143,13 +143,13 @@ vec3 wg_tangent_to_world(vec3 n, vec3 normal, vec4 tangent) {
 }
 // The sky-exposure map holds, per texel of skyExposureRegion, the world height of the
 // highest surface seen from above. A point is open to the sky when nothing is more
-// than 2 cm above it and sheltered under anything 30 cm above; outside the region,
+// than 10 cm above it and sheltered under anything 50 cm above; outside the region,
 // everything is open sky.
 vec2 wg_sky_exposure_uv(vec3 p) { return (vec2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw; }
 float wg_exposure_from_map(vec3 p, float occluderHeight) {
   vec2 uv = wg_sky_exposure_uv(p);
   bool inside = frame_skyExposureRegion.z > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
-  return inside ? 1.0 - smoothstep(p.y + 0.02, p.y + 0.3, occluderHeight) : 1.0;
+  return inside ? 1.0 - smoothstep(p.y + 0.1, p.y + 0.5, occluderHeight) : 1.0;
 }
 // Eq. 3.11: world position to height-map coordinates.
 vec2 wg_terrain_coord(vec3 p) { return (vec2(p.x, p.z) - frame_terrainRegion.xy) * frame_terrainRegion.zw; }
@@ -287,13 +287,13 @@ float3 wg_tangent_to_world(float3 n, float3 normal, float4 tangent) {
 }
 // The sky-exposure map holds, per texel of skyExposureRegion, the world height of the
 // highest surface seen from above. A point is open to the sky when nothing is more
-// than 2 cm above it and sheltered under anything 30 cm above; outside the region,
+// than 10 cm above it and sheltered under anything 50 cm above; outside the region,
 // everything is open sky.
 float2 wg_sky_exposure_uv(float3 p) { return (float2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw; }
 float wg_exposure_from_map(float3 p, float occluderHeight) {
   float2 uv = wg_sky_exposure_uv(p);
   bool inside = frame_skyExposureRegion.z > 0.0 && all(uv >= (float2)0.0) && all(uv <= (float2)1.0);
-  return inside ? 1.0 - smoothstep(p.y + 0.02, p.y + 0.3, occluderHeight) : 1.0;
+  return inside ? 1.0 - smoothstep(p.y + 0.1, p.y + 0.5, occluderHeight) : 1.0;
 }
 // Eq. 3.11: world position to height-map coordinates.
 float2 wg_terrain_coord(float3 p) { return (float2(p.x, p.z) - frame_terrainRegion.xy) * frame_terrainRegion.zw; }

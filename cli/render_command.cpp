@@ -1,0 +1,261 @@
+// weathergen render: draws a validation scene with the emitted shaders on Vulkan
+// (lavapipe by default) and writes a PNG, or for a timeline a frame strip and a
+// labelled contact sheet.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "cli/command_line.hpp"
+#include "cli/commands.hpp"
+#include "cli/eval_inputs.hpp"
+#include "compiler/debug_views.hpp"
+#include "compiler/literal.hpp"
+#include "compiler/weather_config.hpp"
+#include "runtime/display_image.hpp"
+#include "runtime/image/contact_sheet.hpp"
+#include "runtime/image/png_file.hpp"
+#include "runtime/scene_renderer.hpp"
+#include "runtime/weather/weather_timeline.hpp"
+
+namespace wg {
+
+namespace {
+
+constexpr const char* kRenderUsage = R"(Usage: weathergen render --scene NAME -o OUT.png [options]
+
+Options:
+  --scene NAME              valley, rocks, river or road
+  --camera NAME             a camera preset of the scene (default: its first)
+  --weather k=v,...         weather state, as 'weathergen eval --help' lists it
+                            (temperature, precipitation, snowLevel, wetnessLevel, ...)
+  --timeline FILE           scripted weather (runtime/timelines/seasons.json): writes
+                            OUT.png as a labelled contact sheet, one frame per stage,
+                            and OUT.strip.png as a frame strip
+  --step SECONDS            simulation step for --timeline (default 300)
+  --weather-preset NAME     replace every material's preset (none for a baseline)
+  --backend glsl|hlsl       which emitted SPIR-V to draw with (default glsl)
+  --size WxH                image size (default 960x540)
+  --aov NAME                lit, albedo, roughness, normal, snow, wet, moss, frost,
+                            ice, puddle or density (default lit)
+  --device NAME             Vulkan device: cpu, gpu, integrated, discrete or a name
+                            (default: the CPU device, lavapipe)
+  --validation              enable the Vulkan validation layers; any message fails
+  --no-shadows              draw without the sun shadow map
+  --graphs DIR              where the bundled graphs live (default: the source tree's)
+  -q, --quiet               no progress output
+)";
+
+int usageError(const std::string& message) {
+  std::fprintf(stderr, "weathergen: error WG9001: %s\n  hint: run 'weathergen render --help' for usage\n", message.c_str());
+  return kExitUsage;
+}
+
+WeatherState weatherFromFrame(const FrameState& f) {
+  WeatherState s;
+  s.conditions.temperature = f.temperature;
+  s.conditions.precipitation = f.precipitation;
+  s.conditions.windDirection = f.windDirection;
+  s.conditions.windIntensity = f.windIntensity;
+  s.conditions.sunDirection = f.sunDirection;
+  s.conditions.sunIntensity = f.sunIntensity;
+  s.time = f.time;
+  s.levels.snow = f.snowLevel;
+  s.levels.wetness = f.wetnessLevel;
+  s.levels.moss = f.mossLevel;
+  s.levels.frost = f.frostLevel;
+  s.levels.puddles = f.puddleLevel;
+  return s;
+}
+
+std::string formatFixed(double x, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+  return buf;
+}
+
+}  // namespace
+
+int runRenderCommand(int argc, char** argv) {
+  CommandLine cl(argc, argv, 2);
+  std::string sceneName, camera, output, timelinePath, aov = "lit", device, graphsDir = WG_DEFAULT_GRAPHS_DIR;
+  std::optional<std::string> preset;
+  std::vector<std::string> weatherLists;
+  RenderRequest request;
+  double step = 300.0;
+  bool validation = false, quiet = false;
+  while (!cl.done()) {
+    std::string error;
+    if (cl.flag("-h") || cl.flag("--help")) {
+      std::fputs(kRenderUsage, stdout);
+      return kExitOk;
+    }
+    if (cl.flag("--validation")) { validation = true; continue; }
+    if (cl.flag("--no-shadows")) { request.shadows = false; continue; }
+    if (cl.flag("-q") || cl.flag("--quiet")) { quiet = true; continue; }
+    auto value = [&](const char* name, std::string& out) {
+      if (auto v = cl.valueFor(name, error)) {
+        out = *v;
+        return true;
+      }
+      return false;
+    };
+    std::string v;
+    if (value("--scene", sceneName) || value("--camera", camera) || value("-o", output) || value("--output", output) ||
+        value("--timeline", timelinePath) || value("--aov", aov) || value("--device", device) || value("--graphs", graphsDir))
+      continue;
+    if (value("--weather", v)) { weatherLists.push_back(v); continue; }
+    if (value("--weather-preset", v)) {
+      if (!weatherPreset(v)) return usageError("unknown weather preset '" + quoteUserText(v) + "'");
+      preset = v;
+      continue;
+    }
+    if (value("--backend", v)) {
+      if (v != "glsl" && v != "hlsl") return usageError("--backend takes glsl or hlsl");
+      request.backend = v == "glsl" ? ShaderLanguage::Glsl : ShaderLanguage::Hlsl;
+      continue;
+    }
+    if (value("--size", v)) {
+      unsigned w = 0, h = 0;
+      constexpr unsigned kMaxSide = 8192;
+      if (std::sscanf(v.c_str(), "%ux%u", &w, &h) != 2 || w == 0 || h == 0 || w > kMaxSide || h > kMaxSide)
+        return usageError("--size takes WxH, each from 1 to 8192 (e.g. 1920x1080)");
+      request.width = w;
+      request.height = h;
+      continue;
+    }
+    if (value("--step", v)) {
+      char* end = nullptr;
+      step = std::strtod(v.c_str(), &end);
+      if (*end || !(step > 0.0) || !std::isfinite(step)) return usageError("--step takes a positive number of seconds");
+      continue;
+    }
+    if (!error.empty()) return usageError(error);
+    return usageError("unknown option '" + quoteUserText(cl.peek()) + "'");
+  }
+  if (sceneName.empty()) return usageError("no scene; pass --scene NAME (valley, rocks, river or road)");
+  if (output.empty()) return usageError("no output; pass -o OUT.png");
+  if (!timelinePath.empty() && !weatherLists.empty()) return usageError("--weather and --timeline exclude each other");
+  auto scene = scene::makeScene(sceneName);
+  if (!scene) {
+    std::string names;
+    for (auto n : scene::sceneNames()) names += (names.empty() ? "" : ", ") + std::string(n);
+    return usageError("unknown scene '" + quoteUserText(sceneName) + "' (scenes: " + names + ")");
+  }
+  if (!camera.empty()) {
+    bool found = false;
+    std::string names;
+    for (const auto& c : scene->cameras) {
+      found = found || c.name == camera;
+      names += (names.empty() ? "" : ", ") + c.name;
+    }
+    if (!found) return usageError("scene '" + sceneName + "' has no camera '" + quoteUserText(camera) + "' (cameras: " + names + ")");
+  }
+  request.camera = camera;
+  request.weatherPreset = preset;
+  bool foundAov = false;
+  for (const auto& view : kDebugViews)
+    if (view.name == aov) {
+      request.debugView = view.id;
+      foundAov = true;
+    }
+  if (!foundAov) return usageError("unknown --aov '" + quoteUserText(aov) + "'");
+
+  // The weather: eval's names and checks; the sun comes from the scene unless given.
+  EvalInputs inputs = defaultEvalInputs();
+  inputs.frame.sunDirection = {scene->towardsSun.x, scene->towardsSun.y, scene->towardsSun.z};
+  std::set<std::string> seen;
+  for (const auto& list : weatherLists)
+    if (std::string e = applyEvalInputList(list, EvalInputGroup::Weather, inputs, seen); !e.empty()) return usageError(e);
+  if (std::string e = finishEvalInputs(inputs); !e.empty()) return usageError(e);
+  request.weather = weatherFromFrame(inputs.frame);
+
+  std::optional<WeatherTimeline> timeline;
+  if (!timelinePath.empty()) {
+    std::ifstream in(timelinePath);
+    if (!in) return usageError("cannot read timeline '" + quoteUserText(timelinePath) + "'");
+    auto json = nlohmann::json::parse(in, nullptr, false);
+    std::string error = json.is_discarded() ? "malformed JSON" : "";
+    if (error.empty()) timeline = parseWeatherTimeline(json, error);
+    if (!timeline) return usageError("timeline " + quoteUserText(timelinePath) + ": " + error);
+  }
+
+  bool progress = !quiet && ::isatty(STDERR_FILENO);
+  try {
+    std::string error;
+    auto ctx = vk::Context::create({device, validation}, error);
+    if (!ctx) {
+      std::fprintf(stderr, "weathergen: error: %s\n", error.c_str());
+      return kExitInternal;
+    }
+    if (progress) std::fprintf(stderr, "render: %s on %s\n", sceneName.c_str(), ctx->deviceName().c_str());
+    SceneRenderer renderer(*ctx, std::move(*scene), graphsDir);
+    auto checkValidation = [&]() {
+      const auto& messages = ctx->validationMessages();
+      if (messages.empty()) return true;
+      constexpr std::size_t kShown = 5;  // the first few tell the story; the rest repeat
+      for (std::size_t i = 0; i < messages.size() && i < kShown; ++i)
+        std::fprintf(stderr, "vulkan validation %s\n", messages[i].c_str());
+      std::fprintf(stderr, "weathergen: error: %zu Vulkan validation message(s)\n", messages.size());
+      return false;
+    };
+    if (!timeline) {
+      RenderedFrame frame = renderer.render(request);
+      if (!checkValidation()) return kExitInternal;
+      if (std::string e = image::writePng(output, toDisplayImage(frame)); !e.empty()) return usageError(e);
+      if (progress) std::fprintf(stderr, "render: wrote %s (%ux%u)\n", output.c_str(), frame.width, frame.height);
+      return kExitOk;
+    }
+    // One frame per stage: the state at the end of each stage (the last is held for
+    // as long as the stage before it, so its weather has time to act).
+    const auto& keys = timeline->keys;
+    double lastHold = keys.size() > 1 ? keys.back().time - keys[keys.size() - 2].time : 6 * 3600.0;
+    double end = keys.back().time + lastHold;
+    WeatherState start = request.weather;
+    start.time = keys.front().time;
+    start.levels = {};
+    auto states = simulateTimeline(*timeline, start, step, end - keys.front().time);
+    std::vector<image::LabelledFrame> frames;
+    std::vector<Image> strip;
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      double stageEnd = k + 1 < keys.size() ? keys[k + 1].time : end;
+      std::size_t index = std::min(states.size() - 1, static_cast<std::size_t>(std::llround((stageEnd - keys.front().time) / step)));
+      RenderRequest stageRequest = request;
+      stageRequest.weather = states[index];
+      stageRequest.weather.conditions.sunDirection = request.weather.conditions.sunDirection;
+      stageRequest.weather.conditions.sunIntensity = request.weather.conditions.sunIntensity;
+      // Show the stage's own conditions (not the next keyframe's) with its levels.
+      WeatherConditions during = timeline->at(std::max(keys[k].time, stageEnd - step));
+      stageRequest.weather.conditions.temperature = during.temperature;
+      stageRequest.weather.conditions.precipitation = during.precipitation;
+      if (progress)
+        std::fprintf(stderr, "render: [%zu/%zu] %s\n", k + 1, keys.size(), keys[k].label.empty() ? "stage" : keys[k].label.c_str());
+      RenderedFrame frame = renderer.render(stageRequest);
+      if (!checkValidation()) return kExitInternal;
+      Image img = toDisplayImage(frame);
+      const auto& w = stageRequest.weather;
+      frames.push_back({img,
+                        {(keys[k].label.empty() ? "stage " + std::to_string(k + 1) : keys[k].label) + "   t = " +
+                             formatFixed(w.time / 3600.0, 1) + " h",
+                         "T = " + formatFixed(w.conditions.temperature, 1) + " C   P = " + formatFixed(w.conditions.precipitation, 2),
+                         "snow " + formatFixed(w.levels.snow, 2) + "  wet " + formatFixed(w.levels.wetness, 2) + "  moss " +
+                             formatFixed(w.levels.moss, 2) + "  frost " + formatFixed(w.levels.frost, 2)}});
+      strip.push_back(std::move(img));
+    }
+    std::string title = "weathergen  " + sceneName + "  (" + std::string(languageName(request.backend)) + ", " + aov + ")";
+    constexpr int kSheetColumns = 3;
+    if (std::string e = image::writePng(output, image::contactSheet(title, frames, kSheetColumns)); !e.empty()) return usageError(e);
+    std::filesystem::path stripPath = std::filesystem::path(output).replace_extension(".strip.png");
+    if (std::string e = image::writePng(stripPath.string(), image::frameStrip(strip)); !e.empty()) return usageError(e);
+    if (progress) std::fprintf(stderr, "render: wrote %s and %s\n", output.c_str(), stripPath.string().c_str());
+    return kExitOk;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "weathergen: error: %s\n", e.what());
+    return kExitInternal;
+  }
+}
+
+}  // namespace wg

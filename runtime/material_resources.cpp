@@ -1,0 +1,111 @@
+#include "runtime/material_resources.hpp"
+
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+#include "nodes/image_file.hpp"
+#include "nodes/texture_generators.hpp"
+
+namespace wg {
+
+VkSampler createSampler(vk::Context& ctx, std::string_view wrap, std::string_view filter) {
+  VkSamplerAddressMode mode = wrap == "clamp"    ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE
+                              : wrap == "mirror" ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
+                                                 : VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  VkFilter f = filter == "nearest" ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = f;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = mode;
+  info.maxLod = 0.f;  // one level: the CPU evaluator samples level 0 too
+  VkSampler sampler;
+  vk::check(vkCreateSampler(ctx.device(), &info, nullptr, &sampler), "vkCreateSampler");
+  return sampler;
+}
+
+namespace {
+
+Image textureImage(const vk::ReflectedTexture& t, const std::string& graphPath) {
+  const auto& source = t.source;
+  if (source.value("kind", "") == "file") {
+    std::string path = (std::filesystem::path(graphPath).parent_path() / source.at("file").get<std::string>()).string();
+    std::string error;
+    auto image = loadImageFile(path, error);
+    if (!image) throw std::runtime_error("texture '" + t.name + "': " + error);
+    return *image;
+  }
+  const GeneratorSpec* spec = findTextureGenerator(source.at("generator").get<std::string>());
+  if (!spec) throw std::runtime_error("texture '" + t.name + "': unknown generator");
+  return generateTexture(*spec, source.at("seed").get<std::uint32_t>(), source.at("size").get<int>(),
+                         source.value("options", nlohmann::json::object()));
+}
+
+// The parameter block with every member at its reflected default.
+std::vector<unsigned char> parameterBytes(const vk::ReflectedBlock& block) {
+  std::vector<unsigned char> bytes(block.size, 0);
+  for (const auto& m : block.members) {
+    const auto& d = m.defaultValue;
+    if (d.is_boolean()) {
+      std::uint32_t v = d.get<bool>() ? 1u : 0u;
+      std::memcpy(bytes.data() + m.offset, &v, sizeof v);
+    } else if (d.is_number()) {
+      float v = d.get<float>();
+      std::memcpy(bytes.data() + m.offset, &v, sizeof v);
+    } else if (d.is_array()) {
+      for (std::size_t i = 0; i < d.size(); ++i) {
+        float v = d[i].get<float>();
+        std::memcpy(bytes.data() + m.offset + 4 * i, &v, sizeof v);
+      }
+    }
+  }
+  return bytes;
+}
+
+}  // namespace
+
+MaterialResources::MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options)
+    : ctx_(ctx) {
+  CompileResult result = compileMaterialFile(graphPath, options);
+  if (!result.material) {
+    std::string message = "cannot compile " + graphPath + ":\n";
+    for (const auto& d : result.diagnostics.items()) message += formatDiagnosticText(d);
+    throw std::runtime_error(message);
+  }
+  compiled_ = std::move(*result.material);
+  reflection_ = vk::parseReflection(compiled_.reflectionJson);
+  if (!reflection_.material.members.empty()) {
+    auto bytes = parameterBytes(reflection_.material);
+    parameters_ = std::make_unique<vk::Buffer>(ctx, bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    parameters_->write(bytes.data(), bytes.size());
+  }
+  for (const auto& t : reflection_.textures) {
+    Image pixels = textureImage(t, graphPath);
+    vk::Image2D image(ctx, static_cast<std::uint32_t>(pixels.width), static_cast<std::uint32_t>(pixels.height),
+                      VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    image.upload(ctx, pixels.rgba.data(), pixels.rgba.size());
+    textures_.push_back({&t, std::move(image), createSampler(ctx, t.wrap, t.filter)});
+  }
+}
+
+MaterialResources::~MaterialResources() {
+  for (auto& t : textures_) vkDestroySampler(ctx_.device(), t.sampler, nullptr);
+}
+
+std::size_t MaterialResources::textureBytes() const {
+  std::size_t n = 0;
+  for (const auto& t : textures_) n += t.image.byteSize();
+  return n;
+}
+
+vk::MaterialPipeline& MaterialResources::pipeline(ShaderLanguage backend, VkRenderPass colourPass, VkRenderPass depthPass) {
+  auto& slot = pipelines_[backend];
+  if (!slot) {
+    const auto& vert = compiled_.stage(backend, ShaderStage::Vertex).spirv;
+    const auto& frag = compiled_.stage(backend, ShaderStage::Fragment).spirv;
+    slot = std::make_unique<vk::MaterialPipeline>(ctx_, reflection_, vert, frag, colourPass, depthPass);
+  }
+  return *slot;
+}
+
+}  // namespace wg

@@ -1,0 +1,49 @@
+// Everything one material needs on the GPU: its compiled shaders (both languages),
+// reflection, parameter block filled with the reflected defaults, textures made from
+// the reflected sources, samplers, and a pipeline per backend.
+#pragma once
+#include <map>
+#include <memory>
+#include <string>
+
+#include "compiler/material_compiler.hpp"
+#include "runtime/vulkan/gpu_image.hpp"
+#include "runtime/vulkan/material_pipeline.hpp"
+
+namespace wg {
+
+class MaterialResources {
+ public:
+  // Compiles graphPath (throws std::runtime_error with the diagnostics on failure).
+  MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options);
+  ~MaterialResources();
+  MaterialResources(const MaterialResources&) = delete;
+  MaterialResources& operator=(const MaterialResources&) = delete;
+
+  // Built on first use for each backend.
+  vk::MaterialPipeline& pipeline(ShaderLanguage backend, VkRenderPass colourPass, VkRenderPass depthPass);
+  const vk::MaterialReflection& reflection() const { return reflection_; }
+  const CompiledMaterial& compiled() const { return compiled_; }
+  const vk::Buffer* parameterBuffer() const { return parameters_.get(); }
+
+  struct BoundTexture {
+    const vk::ReflectedTexture* reflected;
+    vk::Image2D image;
+    VkSampler sampler;
+  };
+  const std::vector<BoundTexture>& textures() const { return textures_; }
+  std::size_t textureBytes() const;
+
+ private:
+  vk::Context& ctx_;
+  CompiledMaterial compiled_;
+  vk::MaterialReflection reflection_;
+  std::unique_ptr<vk::Buffer> parameters_;
+  std::vector<BoundTexture> textures_;
+  std::map<ShaderLanguage, std::unique_ptr<vk::MaterialPipeline>> pipelines_;
+};
+
+// A sampler for a reflected wrap/filter pair.
+VkSampler createSampler(vk::Context& ctx, std::string_view wrap, std::string_view filter);
+
+}  // namespace wg

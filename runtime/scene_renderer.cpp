@@ -1,0 +1,574 @@
+#include "runtime/scene_renderer.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
+#include <stdexcept>
+
+#include "runtime/frame_uniforms.hpp"
+
+namespace wg {
+
+namespace {
+// Lighting constants of the validation scenes (linear radiance).
+constexpr glm::vec3 kSunColor{3.2f, 3.05f, 2.8f};  // a clear midday sun against the tone curve
+constexpr glm::vec3 kSkyColor{0.45f, 0.55f, 0.72f};
+constexpr float kAmbientIntensity = 0.8f;
+constexpr float kToneExposure = 1.f;
+constexpr float kNearPlane = 0.1f, kFarPlane = 600.f;
+// Extra height above and below the scene for the top-down exposure camera (metres).
+constexpr float kExposureMargin = 1.f;
+
+glm::mat4 flipY(glm::mat4 projection) {
+  projection[1][1] *= -1.f;  // Vulkan's clip y points down
+  return projection;
+}
+
+struct PassKind {
+  enum { Exposure, Shadow, Colour };
+};
+}  // namespace
+
+struct SceneRenderer::Object {
+  const scene::SceneObject* source = nullptr;
+  vk::Buffer vertices, indices;
+  std::uint32_t indexCount = 0;
+  std::uint32_t stride = 0;
+};
+
+SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory)
+    : ctx_(ctx), scene_(std::move(scene)), graphsDirectory_(std::move(graphsDirectory)) {
+  createPasses();
+  linearClamp_ = createSampler(ctx_, "clamp", "linear");
+  nearestClamp_ = createSampler(ctx_, "clamp", "nearest");
+  // 1x1 stand-ins: "nothing above" for heights, "fully lit" for shadows, bound while
+  // the real maps are being drawn.
+  float lowest = -1e6f, lit = 1.f;
+  placeholderHeight_ = vk::Image2D(ctx_, 1, 1, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  placeholderHeight_.upload(ctx_, &lowest, sizeof lowest);
+  placeholderShadow_ = vk::Image2D(ctx_, 1, 1, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  placeholderShadow_.upload(ctx_, &lit, sizeof lit);
+  shadowMap_ = vk::Image2D(ctx_, kShadowResolution, kShadowResolution, vk::kDepthFormat,
+                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+  uploadTerrain();
+  VkQueryPoolCreateInfo query{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  query.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  query.queryCount = 2;
+  vk::check(vkCreateQueryPool(ctx_.device(), &query, nullptr, &timestamps_), "vkCreateQueryPool");
+  buildExposureMap();
+}
+
+SceneRenderer::~SceneRenderer() {
+  VkDevice d = ctx_.device();
+  vkDeviceWaitIdle(d);
+  for (auto fb : framebuffers_) vkDestroyFramebuffer(d, fb, nullptr);
+  for (auto pool : pools_) vkDestroyDescriptorPool(d, pool, nullptr);
+  vkDestroyQueryPool(d, timestamps_, nullptr);
+  vkDestroySampler(d, linearClamp_, nullptr);
+  vkDestroySampler(d, nearestClamp_, nullptr);
+  vkDestroyRenderPass(d, colourPass_, nullptr);
+  vkDestroyRenderPass(d, depthPass_, nullptr);
+}
+
+VkSampler SceneRenderer::mapSampler(std::string_view mapName) const {
+  return mapName == "sunShadow" ? nearestClamp_ : linearClamp_;
+}
+
+void SceneRenderer::createPasses() {
+  // Colour pass: RGBA16F colour kept for read-back, depth discarded.
+  VkAttachmentDescription colour{};
+  colour.format = vk::kColourFormat;
+  colour.samples = VK_SAMPLE_COUNT_1_BIT;
+  colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  colour.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  colour.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkAttachmentDescription depth = colour;
+  depth.format = vk::kDepthFormat;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &colourRef;
+  subpass.pDepthStencilAttachment = &depthRef;
+  VkAttachmentDescription attachments[] = {colour, depth};
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 2;
+  info.pAttachments = attachments;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  vk::check(vkCreateRenderPass(ctx_.device(), &info, nullptr, &colourPass_), "vkCreateRenderPass");
+
+  // Depth-only pass (shadow and sky-exposure maps): stored and left shader-readable.
+  VkAttachmentDescription depthOnly = depth;
+  depthOnly.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  depthOnly.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  VkAttachmentReference depthOnlyRef{0, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription depthSubpass{};
+  depthSubpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  depthSubpass.pDepthStencilAttachment = &depthOnlyRef;
+  // The colour pass samples the map afterwards.
+  VkSubpassDependency after{};
+  after.srcSubpass = 0;
+  after.dstSubpass = VK_SUBPASS_EXTERNAL;
+  after.srcStageMask = VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  after.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+  after.srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  after.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+  VkRenderPassCreateInfo depthInfo{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  depthInfo.attachmentCount = 1;
+  depthInfo.pAttachments = &depthOnly;
+  depthInfo.subpassCount = 1;
+  depthInfo.pSubpasses = &depthSubpass;
+  depthInfo.dependencyCount = 1;
+  depthInfo.pDependencies = &after;
+  vk::check(vkCreateRenderPass(ctx_.device(), &depthInfo, nullptr, &depthPass_), "vkCreateRenderPass");
+}
+
+VkFramebuffer SceneRenderer::framebuffer(VkRenderPass pass, std::vector<VkImageView> views, std::uint32_t w, std::uint32_t h) {
+  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  info.renderPass = pass;
+  info.attachmentCount = static_cast<std::uint32_t>(views.size());
+  info.pAttachments = views.data();
+  info.width = w;
+  info.height = h;
+  info.layers = 1;
+  VkFramebuffer fb;
+  vk::check(vkCreateFramebuffer(ctx_.device(), &info, nullptr, &fb), "vkCreateFramebuffer");
+  framebuffers_.push_back(fb);
+  return fb;
+}
+
+void SceneRenderer::uploadTerrain() {
+  int n = scene_.terrainHeightResolution;
+  if (n <= 0 || scene_.terrainHeights.size() != static_cast<std::size_t>(n) * n) {
+    float flat = 0.f;  // no terrain map: eq. 3.12's slope is zero
+    terrainHeight_ = vk::Image2D(ctx_, 1, 1, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    terrainHeight_.upload(ctx_, &flat, sizeof flat);
+    return;
+  }
+  terrainHeight_ = vk::Image2D(ctx_, static_cast<std::uint32_t>(n), static_cast<std::uint32_t>(n), VK_FORMAT_R32_SFLOAT,
+                               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  terrainHeight_.upload(ctx_, scene_.terrainHeights.data(), scene_.terrainHeights.size() * sizeof(float));
+}
+
+MaterialResources& SceneRenderer::material(const std::string& stem, const std::optional<std::string>& preset) {
+  std::string key = stem + "|" + preset.value_or("");
+  auto& slot = materials_[key];
+  if (!slot) {
+    CompileOptions options;
+    options.weatherPreset = preset;
+    slot = std::make_unique<MaterialResources>(ctx_, graphsDirectory_ + "/" + stem + ".json", options);
+  }
+  return *slot;
+}
+
+glm::mat4 SceneRenderer::viewProjection(const std::string& camera, std::uint32_t width, std::uint32_t height) const {
+  const scene::CameraPreset* preset = scene_.cameras.empty() ? nullptr : &scene_.cameras.front();
+  for (const auto& c : scene_.cameras)
+    if (c.name == camera) preset = &c;
+  if (!preset) throw std::runtime_error("scene '" + scene_.name + "' has no cameras");
+  glm::mat4 view = glm::lookAt(preset->eye, preset->target, glm::vec3(0.f, 1.f, 0.f));
+  glm::mat4 projection = glm::perspective(glm::radians(preset->fovYDegrees), float(width) / float(height), kNearPlane, kFarPlane);
+  return flipY(projection) * view;
+}
+
+std::size_t SceneRenderer::gpuMemoryBytes() const {
+  std::size_t n = terrainHeight_.byteSize() + exposureMap_.byteSize() + shadowMap_.byteSize();
+  for (const auto& o : objects_) n += o->vertices.size() + o->indices.size();
+  for (const auto& [key, m] : materials_) n += m->textureBytes();
+  return n;
+}
+
+namespace {
+
+// Interleaves a mesh into the material's reflected vertex format.
+std::vector<float> packVertices(const scene::Mesh& mesh, const vk::VertexLayout& layout) {
+  std::vector<float> out;
+  out.reserve(mesh.positions.size() * layout.stride / sizeof(float));
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    for (const auto& name : layout.names) {
+      if (name == "position") out.insert(out.end(), {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z});
+      else if (name == "normal") out.insert(out.end(), {mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z});
+      else if (name == "tangent")
+        out.insert(out.end(), {mesh.tangents[i].x, mesh.tangents[i].y, mesh.tangents[i].z, mesh.tangents[i].w});
+      else if (name == "texcoord") out.insert(out.end(), {mesh.texcoords[i].x, mesh.texcoords[i].y});
+      else if (name == "color")
+        out.insert(out.end(), {mesh.colors[i].r, mesh.colors[i].g, mesh.colors[i].b, mesh.colors[i].a});
+      else throw std::runtime_error("reflection names an unknown vertex input '" + name + "'");
+    }
+  }
+  return out;
+}
+
+struct DescriptorWriter {
+  std::vector<VkWriteDescriptorSet> writes;
+  std::vector<std::unique_ptr<VkDescriptorImageInfo>> images;
+  std::vector<std::unique_ptr<VkDescriptorBufferInfo>> buffers;
+
+  void buffer(VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize range) {
+    buffers.push_back(std::make_unique<VkDescriptorBufferInfo>(VkDescriptorBufferInfo{buffer, 0, range}));
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set;
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = type;
+    w.pBufferInfo = buffers.back().get();
+    writes.push_back(w);
+  }
+  void image(VkDescriptorSet set, std::uint32_t binding, VkImageView view) {
+    images.push_back(std::make_unique<VkDescriptorImageInfo>(
+        VkDescriptorImageInfo{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}));
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set;
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    w.pImageInfo = images.back().get();
+    writes.push_back(w);
+  }
+  void sampler(VkDescriptorSet set, std::uint32_t binding, VkSampler sampler) {
+    images.push_back(std::make_unique<VkDescriptorImageInfo>(VkDescriptorImageInfo{sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED}));
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set;
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_SAMPLER;
+    w.pImageInfo = images.back().get();
+    writes.push_back(w);
+  }
+};
+
+}  // namespace
+
+namespace {
+// What one depth or colour pass draws with.
+struct PassSetup {
+  int kind;
+  glm::mat4 viewProjection;
+  glm::vec3 eye;
+  VkImageView exposureView, shadowView;
+  bool onlySkyOccluders;
+};
+}  // namespace
+
+RenderedFrame SceneRenderer::render(const RenderRequest& request) {
+  ctx_.clearValidationMessages();
+  // Materials and meshes for this request's preset and backend.
+  std::vector<MaterialResources*> mats;
+  for (const auto& o : scene_.objects) mats.push_back(&material(o.graph, request.weatherPreset));
+  if (objects_.empty()) {
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      auto& src = scene_.objects[i];
+      auto obj = std::make_unique<Object>();
+      obj->source = &src;
+      auto layout = vk::vertexLayoutFrom(mats[i]->reflection());
+      auto packed = packVertices(src.mesh, layout);
+      obj->stride = layout.stride;
+      obj->vertices = vk::Buffer(ctx_, packed.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+      obj->vertices.write(packed.data(), packed.size() * sizeof(float));
+      obj->indices = vk::Buffer(ctx_, src.mesh.indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+      obj->indices.write(src.mesh.indices.data(), src.mesh.indices.size() * sizeof(std::uint32_t));
+      obj->indexCount = static_cast<std::uint32_t>(src.mesh.indices.size());
+      objects_.push_back(std::move(obj));
+    }
+  }
+
+  // Sun shadow camera: orthographic over the scene's bounds, looking along the light.
+  glm::vec3 towardsSun = glm::normalize(glm::vec3(request.weather.conditions.sunDirection[0],
+                                                  request.weather.conditions.sunDirection[1],
+                                                  request.weather.conditions.sunDirection[2]));
+  glm::vec3 centre = 0.5f * (scene_.boundsMin + scene_.boundsMax);
+  float radius = 0.5f * glm::length(scene_.boundsMax - scene_.boundsMin);
+  glm::vec3 up = std::abs(towardsSun.y) > 0.99f ? glm::vec3(0.f, 0.f, 1.f) : glm::vec3(0.f, 1.f, 0.f);
+  glm::mat4 lightView = glm::lookAt(centre + towardsSun * (2.f * radius), centre, up);
+  glm::mat4 light = flipY(glm::ortho(-radius, radius, -radius, radius, 0.01f, 4.f * radius)) * lightView;
+
+  const scene::CameraPreset* camera = &scene_.cameras.front();
+  for (const auto& c : scene_.cameras)
+    if (c.name == request.camera) camera = &c;
+  std::vector<PassSetup> passes;
+  if (request.shadows) passes.push_back({PassKind::Shadow, light, camera->eye, exposureMap_.view(), placeholderShadow_.view(), false});
+  passes.push_back({PassKind::Colour, viewProjection(request.camera, request.width, request.height), camera->eye,
+                    exposureMap_.view(), request.shadows ? shadowMap_.view() : placeholderShadow_.view(), false});
+
+  RenderedFrame frame;
+  frame.width = request.width;
+  frame.height = request.height;
+  vk::Image2D colour(ctx_, request.width, request.height, vk::kColourFormat,
+                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  vk::Image2D depth(ctx_, request.width, request.height, vk::kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+  VkFramebuffer colourTarget = framebuffer(colourPass_, {colour.view(), depth.view()}, request.width, request.height);
+  VkFramebuffer shadowTarget = framebuffer(depthPass_, {shadowMap_.view()}, kShadowResolution, kShadowResolution);
+
+  // Frame data: one dynamic slice per (pass, object).
+  const vk::ReflectedBlock& frameBlock = mats.front()->reflection().frame;
+  VkDeviceSize alignment = ctx_.properties().limits.minUniformBufferOffsetAlignment;
+  VkDeviceSize slice = (frameBlock.size + alignment - 1) / alignment * alignment;
+  vk::Buffer frameBuffer(ctx_, slice * passes.size() * objects_.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  const auto& w = request.weather;
+  for (std::size_t p = 0; p < passes.size(); ++p)
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+      FrameUniforms f(frameBlock);
+      glm::mat4 model = objects_[i]->source->model;
+      f.set("model", model);
+      f.set("viewProjection", passes[p].viewProjection);
+      f.set("normalMatrix", glm::transpose(glm::inverse(model)));
+      f.set("lightViewProjection", light);
+      f.set("skyExposureRegion", exposureRegion_);
+      f.set("terrainRegion", scene_.terrainRegion);
+      f.set("cameraPosition", passes[p].eye);
+      f.set("time", static_cast<float>(w.time));
+      f.set("sunDirection", towardsSun);
+      f.set("sunIntensity", w.conditions.sunIntensity);
+      f.set("sunColor", kSunColor);
+      f.set("ambientIntensity", kAmbientIntensity);
+      f.set("skyColor", kSkyColor);
+      f.set("temperature", w.conditions.temperature);
+      f.set("windDirection", glm::vec2(w.conditions.windDirection[0], w.conditions.windDirection[1]));
+      f.set("windIntensity", w.conditions.windIntensity);
+      f.set("precipitation", w.conditions.precipitation);
+      f.set("snowLevel", w.levels.snow);
+      f.set("wetnessLevel", w.levels.wetness);
+      f.set("mossLevel", w.levels.moss);
+      f.set("frostLevel", w.levels.frost);
+      f.set("puddleLevel", w.levels.puddles);
+      f.set("exposure", kToneExposure);
+      f.set("debugView", request.debugView);
+      f.set("terrainHeightScale", scene_.terrainHeightScale);
+      f.set("shadowMapTexel", request.shadows ? 1.f / float(kShadowResolution) : 0.f);
+      frameBuffer.write(f.bytes().data(), f.bytes().size(), slice * (p * objects_.size() + i));
+    }
+
+  // Descriptor sets: set 0 and set 1 per (pass, object).
+  std::size_t setCount = 2 * passes.size() * objects_.size();
+  std::uint32_t imageDescriptors = 0;
+  for (auto* m : mats) imageDescriptors += static_cast<std::uint32_t>(m->reflection().textures.size() + m->reflection().weatherMaps.size());
+  imageDescriptors = (imageDescriptors + 1) * static_cast<std::uint32_t>(passes.size());
+  VkDescriptorPoolSize sizes[] = {
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, static_cast<std::uint32_t>(setCount)},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, static_cast<std::uint32_t>(setCount)},
+      {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, imageDescriptors},
+      {VK_DESCRIPTOR_TYPE_SAMPLER, imageDescriptors},
+  };
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = static_cast<std::uint32_t>(setCount);
+  poolInfo.poolSizeCount = 4;
+  poolInfo.pPoolSizes = sizes;
+  VkDescriptorPool pool;
+  vk::check(vkCreateDescriptorPool(ctx_.device(), &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+  pools_.push_back(pool);
+
+  DescriptorWriter writer;
+  std::vector<std::array<VkDescriptorSet, 2>> sets(passes.size() * objects_.size());
+  for (std::size_t p = 0; p < passes.size(); ++p)
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+      auto& pipeline = mats[i]->pipeline(request.backend, colourPass_, depthPass_);
+      VkDescriptorSetLayout layouts[2] = {pipeline.setLayout(0), pipeline.setLayout(1)};
+      VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+      alloc.descriptorPool = pool;
+      alloc.descriptorSetCount = 2;
+      alloc.pSetLayouts = layouts;
+      auto& pair = sets[p * objects_.size() + i];
+      vk::check(vkAllocateDescriptorSets(ctx_.device(), &alloc, pair.data()), "vkAllocateDescriptorSets");
+      const auto& refl = mats[i]->reflection();
+      writer.buffer(pair[0], refl.frame.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBuffer.handle(), frameBlock.size);
+      for (const auto& map : refl.weatherMaps) {
+        VkImageView view = map.name == "terrainHeight" ? terrainHeight_.view()
+                           : map.name == "skyExposure" ? passes[p].exposureView
+                                                       : passes[p].shadowView;
+        writer.image(pair[0], map.binding, view);
+        writer.sampler(pair[0], map.samplerBinding, mapSampler(map.name));
+      }
+      if (const vk::Buffer* params = mats[i]->parameterBuffer())
+        writer.buffer(pair[1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);
+      for (const auto& t : mats[i]->textures()) {
+        writer.image(pair[1], t.reflected->binding, t.image.view());
+        writer.sampler(pair[1], t.reflected->samplerBinding, t.sampler);
+      }
+    }
+  vkUpdateDescriptorSets(ctx_.device(), static_cast<std::uint32_t>(writer.writes.size()), writer.writes.data(), 0, nullptr);
+
+  ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+    vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
+    for (std::size_t p = 0; p < passes.size(); ++p) {
+      bool colourPass = passes[p].kind == PassKind::Colour;
+      std::uint32_t w = colourPass ? request.width : kShadowResolution;
+      std::uint32_t h = colourPass ? request.height : kShadowResolution;
+      VkClearValue clears[2];
+      clears[0].color = {{kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.f}};
+      clears[1].depthStencil = {1.f, 0};
+      VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+      begin.renderPass = colourPass ? colourPass_ : depthPass_;
+      begin.framebuffer = colourPass ? colourTarget : shadowTarget;
+      begin.renderArea = {{0, 0}, {w, h}};
+      begin.clearValueCount = colourPass ? 2 : 1;
+      begin.pClearValues = colourPass ? clears : &clears[1];
+      if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
+      vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+      VkViewport viewport{0.f, 0.f, float(w), float(h), 0.f, 1.f};
+      VkRect2D scissor{{0, 0}, {w, h}};
+      vkCmdSetViewport(cmd, 0, 1, &viewport);
+      vkCmdSetScissor(cmd, 0, 1, &scissor);
+      for (std::size_t i = 0; i < objects_.size(); ++i) {
+        if (!colourPass && !objects_[i]->source->castsShadow) continue;
+        auto& pipeline = mats[i]->pipeline(request.backend, colourPass_, depthPass_);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, colourPass ? pipeline.colourPipeline() : pipeline.depthPipeline());
+        auto offset = static_cast<std::uint32_t>(slice * (p * objects_.size() + i));
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 2,
+                                sets[p * objects_.size() + i].data(), 1, &offset);
+        VkDeviceSize zero = 0;
+        VkBuffer vb = objects_[i]->vertices.handle();
+        vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &zero);
+        vkCmdBindIndexBuffer(cmd, objects_[i]->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(cmd, objects_[i]->indexCount, 1, 0, 0, 0);
+      }
+      vkCmdEndRenderPass(cmd);
+      if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+    }
+  });
+
+  std::uint64_t ticks[2] = {0, 0};
+  if (vkGetQueryPoolResults(ctx_.device(), timestamps_, 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),
+                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS && ticks[1] > ticks[0])
+    frame.gpuMilliseconds = double(ticks[1] - ticks[0]) * ctx_.properties().limits.timestampPeriod * 1e-6;
+
+  auto raw = colour.download(ctx_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  frame.rgba.resize(std::size_t(request.width) * request.height * 4);
+  const auto* halves = reinterpret_cast<const std::uint16_t*>(raw.data());
+  for (std::size_t k = 0; k < frame.rgba.size(); ++k) frame.rgba[k] = glm::unpackHalf1x16(halves[k]);
+
+  // Per-render objects go now; the pool and framebuffers are not reused.
+  vkDestroyDescriptorPool(ctx_.device(), pool, nullptr);
+  pools_.pop_back();
+  for (auto fb : {colourTarget, shadowTarget}) {
+    vkDestroyFramebuffer(ctx_.device(), fb, nullptr);
+    framebuffers_.erase(std::find(framebuffers_.begin(), framebuffers_.end(), fb));
+  }
+  return frame;
+}
+
+void SceneRenderer::buildExposureMap() {
+  // A top-down orthographic depth map of everything that keeps rain off (clip x, y
+  // follow world x, z exactly as wg_sky_exposure_uv does; depth is height from the top).
+  glm::vec3 lo = scene_.boundsMin - glm::vec3(kExposureMargin), hi = scene_.boundsMax + glm::vec3(kExposureMargin);
+  float sizeX = hi.x - lo.x, sizeZ = hi.z - lo.z, top = hi.y, bottom = lo.y;
+  glm::mat4 topDown(0.f);
+  topDown[0][0] = 2.f / sizeX;
+  topDown[3][0] = -2.f * lo.x / sizeX - 1.f;
+  topDown[2][1] = 2.f / sizeZ;
+  topDown[3][1] = -2.f * lo.z / sizeZ - 1.f;
+  topDown[1][2] = -1.f / (top - bottom);
+  topDown[3][2] = top / (top - bottom);
+  topDown[3][3] = 1.f;
+  exposureRegion_ = glm::vec4(lo.x, lo.z, 1.f / sizeX, 1.f / sizeZ);
+
+  // Draw with unweathered materials: the map holds the scene's own geometry.
+  RenderRequest request;
+  request.weatherPreset = "none";
+  request.shadows = false;
+  std::vector<MaterialResources*> mats;
+  for (const auto& o : scene_.objects) mats.push_back(&material(o.graph, request.weatherPreset));
+  vk::Image2D depth(ctx_, kExposureResolution, kExposureResolution, vk::kDepthFormat,
+                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  VkFramebuffer target = framebuffer(depthPass_, {depth.view()}, kExposureResolution, kExposureResolution);
+  const vk::ReflectedBlock& frameBlock = mats.front()->reflection().frame;
+  VkDeviceSize alignment = ctx_.properties().limits.minUniformBufferOffsetAlignment;
+  VkDeviceSize slice = (frameBlock.size + alignment - 1) / alignment * alignment;
+  std::vector<std::size_t> drawn;
+  for (std::size_t i = 0; i < scene_.objects.size(); ++i)
+    if (scene_.objects[i].occludesSky) drawn.push_back(i);
+  vk::Buffer frameBuffer(ctx_, slice * std::max<std::size_t>(drawn.size(), 1), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  std::vector<vk::Buffer> vertexBuffers, indexBuffers;
+  VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 64}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 64},
+                                  {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 512}, {VK_DESCRIPTOR_TYPE_SAMPLER, 512}};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = static_cast<std::uint32_t>(2 * drawn.size() + 2);
+  poolInfo.poolSizeCount = 4;
+  poolInfo.pPoolSizes = sizes;
+  VkDescriptorPool pool;
+  vk::check(vkCreateDescriptorPool(ctx_.device(), &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+  DescriptorWriter writer;
+  std::vector<std::array<VkDescriptorSet, 2>> sets(drawn.size());
+  for (std::size_t k = 0; k < drawn.size(); ++k) {
+    std::size_t i = drawn[k];
+    FrameUniforms f(frameBlock);
+    glm::mat4 model = scene_.objects[i].model;
+    f.set("model", model);
+    f.set("viewProjection", topDown);
+    f.set("normalMatrix", glm::transpose(glm::inverse(model)));
+    frameBuffer.write(f.bytes().data(), f.bytes().size(), slice * k);
+    auto layout = vk::vertexLayoutFrom(mats[i]->reflection());
+    auto packed = packVertices(scene_.objects[i].mesh, layout);
+    vertexBuffers.emplace_back(ctx_, packed.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    vertexBuffers.back().write(packed.data(), packed.size() * sizeof(float));
+    const auto& indices = scene_.objects[i].mesh.indices;
+    indexBuffers.emplace_back(ctx_, indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    indexBuffers.back().write(indices.data(), indices.size() * sizeof(std::uint32_t));
+    auto& pipeline = mats[i]->pipeline(ShaderLanguage::Glsl, colourPass_, depthPass_);
+    VkDescriptorSetLayout layouts[2] = {pipeline.setLayout(0), pipeline.setLayout(1)};
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = pool;
+    alloc.descriptorSetCount = 2;
+    alloc.pSetLayouts = layouts;
+    vk::check(vkAllocateDescriptorSets(ctx_.device(), &alloc, sets[k].data()), "vkAllocateDescriptorSets");
+    const auto& refl = mats[i]->reflection();
+    writer.buffer(sets[k][0], refl.frame.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBuffer.handle(), frameBlock.size);
+    for (const auto& map : refl.weatherMaps) {
+      writer.image(sets[k][0], map.binding, map.name == "terrainHeight" ? terrainHeight_.view()
+                                            : map.name == "skyExposure"   ? placeholderHeight_.view()
+                                                                          : placeholderShadow_.view());
+      writer.sampler(sets[k][0], map.samplerBinding, mapSampler(map.name));
+    }
+    if (const vk::Buffer* params = mats[i]->parameterBuffer())
+      writer.buffer(sets[k][1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);
+    for (const auto& t : mats[i]->textures()) {
+      writer.image(sets[k][1], t.reflected->binding, t.image.view());
+      writer.sampler(sets[k][1], t.reflected->samplerBinding, t.sampler);
+    }
+  }
+  vkUpdateDescriptorSets(ctx_.device(), static_cast<std::uint32_t>(writer.writes.size()), writer.writes.data(), 0, nullptr);
+  ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+    VkClearValue clear;
+    clear.depthStencil = {1.f, 0};
+    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    begin.renderPass = depthPass_;
+    begin.framebuffer = target;
+    begin.renderArea = {{0, 0}, {kExposureResolution, kExposureResolution}};
+    begin.clearValueCount = 1;
+    begin.pClearValues = &clear;
+    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    VkViewport viewport{0.f, 0.f, float(kExposureResolution), float(kExposureResolution), 0.f, 1.f};
+    VkRect2D scissor{{0, 0}, {kExposureResolution, kExposureResolution}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    for (std::size_t k = 0; k < drawn.size(); ++k) {
+      auto& pipeline = mats[drawn[k]]->pipeline(ShaderLanguage::Glsl, colourPass_, depthPass_);
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.depthPipeline());
+      auto offset = static_cast<std::uint32_t>(slice * k);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 2, sets[k].data(), 1, &offset);
+      VkDeviceSize zero = 0;
+      VkBuffer vb = vertexBuffers[k].handle();
+      vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &zero);
+      vkCmdBindIndexBuffer(cmd, indexBuffers[k].handle(), 0, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(scene_.objects[drawn[k]].mesh.indices.size()), 1, 0, 0, 0);
+    }
+    vkCmdEndRenderPass(cmd);
+  });
+  auto raw = depth.download(ctx_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  exposureHeights_.resize(std::size_t(kExposureResolution) * kExposureResolution);
+  const auto* depths = reinterpret_cast<const float*>(raw.data());
+  for (std::size_t k = 0; k < exposureHeights_.size(); ++k) exposureHeights_[k] = top - depths[k] * (top - bottom);
+  exposureMap_ = vk::Image2D(ctx_, kExposureResolution, kExposureResolution, VK_FORMAT_R32_SFLOAT,
+                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  exposureMap_.upload(ctx_, exposureHeights_.data(), exposureHeights_.size() * sizeof(float));
+  vkDestroyDescriptorPool(ctx_.device(), pool, nullptr);
+  vkDestroyFramebuffer(ctx_.device(), target, nullptr);
+  framebuffers_.erase(std::find(framebuffers_.begin(), framebuffers_.end(), target));
+}
+
+}  // namespace wg

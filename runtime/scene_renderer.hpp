@@ -1,0 +1,79 @@
+// Renders a validation scene with exactly the shaders the compiler emitted: a
+// top-down sky-exposure map (once), a sun shadow map, then the lit colour or an AOV.
+// Layouts, uniforms and vertex formats all come from the materials' reflection.
+#pragma once
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runtime/material_resources.hpp"
+#include "runtime/scene/scene.hpp"
+#include "runtime/weather/weather_state.hpp"
+
+namespace wg {
+
+struct RenderRequest {
+  std::string camera;  // a preset of the scene; "" takes the first
+  std::uint32_t width = 960, height = 540;
+  ShaderLanguage backend = ShaderLanguage::Glsl;
+  std::uint32_t debugView = 0;  // compiler/debug_views.hpp: 0 lit, 1 albedo, ...
+  WeatherState weather;
+  std::optional<std::string> weatherPreset;  // replaces every material's preset ("none" for baselines)
+  bool shadows = true;
+};
+
+struct RenderedFrame {
+  std::uint32_t width = 0, height = 0;
+  std::vector<float> rgba;       // linear, unclamped (read back from RGBA16F)
+  double gpuMilliseconds = 0.0;  // the colour pass, from timestamp queries; 0 if unsupported
+  std::vector<float> worldPosition;  // xyz per pixel, when requested through renderGeometry
+};
+
+class SceneRenderer {
+ public:
+  SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory);
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer&) = delete;
+  SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+  RenderedFrame render(const RenderRequest& request);
+
+  const scene::Scene& scene() const { return scene_; }
+  // The occluder heights the sky-exposure pass produced (metres), for tests.
+  const std::vector<float>& exposureHeights() const { return exposureHeights_; }
+  std::uint32_t exposureResolution() const { return kExposureResolution; }
+  glm::vec4 exposureRegion() const { return exposureRegion_; }
+  glm::mat4 viewProjection(const std::string& camera, std::uint32_t width, std::uint32_t height) const;
+  std::size_t gpuMemoryBytes() const;
+
+  static constexpr std::uint32_t kExposureResolution = 512;
+  static constexpr std::uint32_t kShadowResolution = 2048;
+
+ private:
+  struct Object;
+  struct MaterialSet;
+  MaterialResources& material(const std::string& stem, const std::optional<std::string>& preset);
+  void createPasses();
+  void buildExposureMap();
+  void uploadTerrain();
+  VkFramebuffer framebuffer(VkRenderPass pass, std::vector<VkImageView> views, std::uint32_t w, std::uint32_t h);
+
+  vk::Context& ctx_;
+  scene::Scene scene_;
+  std::string graphsDirectory_;
+  VkRenderPass colourPass_ = VK_NULL_HANDLE, depthPass_ = VK_NULL_HANDLE;
+  std::map<std::string, std::unique_ptr<MaterialResources>> materials_;  // by stem + preset
+  std::vector<std::unique_ptr<Object>> objects_;
+  vk::Image2D terrainHeight_, exposureMap_, shadowMap_, placeholderHeight_, placeholderShadow_;
+  VkSampler linearClamp_ = VK_NULL_HANDLE;
+  VkSampler nearestClamp_ = VK_NULL_HANDLE;  // depth formats need not be filterable; PCF filters
+  VkSampler mapSampler(std::string_view mapName) const;
+  std::vector<float> exposureHeights_;
+  glm::vec4 exposureRegion_{0.f};
+  VkQueryPool timestamps_ = VK_NULL_HANDLE;
+  std::vector<VkFramebuffer> framebuffers_;
+  std::vector<VkDescriptorPool> pools_;
+};
+
+}  // namespace wg

@@ -1,0 +1,48 @@
+// A device image with one view: textures, render targets, depth and shadow maps.
+#pragma once
+#include <vector>
+
+#include "runtime/vulkan/gpu_buffer.hpp"
+
+namespace wg::vk {
+
+class Image2D {
+ public:
+  Image2D() = default;
+  Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage);
+  ~Image2D();
+  Image2D(Image2D&& other) noexcept;
+  Image2D& operator=(Image2D&& other) noexcept;
+  Image2D(const Image2D&) = delete;
+  Image2D& operator=(const Image2D&) = delete;
+
+  VkImage handle() const { return image_; }
+  VkImageView view() const { return view_; }
+  VkFormat format() const { return format_; }
+  std::uint32_t width() const { return width_; }
+  std::uint32_t height() const { return height_; }
+  bool isDepth() const;
+  VkDeviceSize byteSize() const;
+
+  // Uploads tightly packed texels and leaves the image shader-readable.
+  void upload(Context& ctx, const void* texels, VkDeviceSize bytes);
+  // Reads the whole image back (the image must be in `layout`).
+  std::vector<unsigned char> download(Context& ctx, VkImageLayout layout);
+
+  static void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                         VkImageLayout to);
+
+ private:
+  void release();
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+  VkFormat format_ = VK_FORMAT_UNDEFINED;
+  std::uint32_t width_ = 0, height_ = 0;
+};
+
+// Bytes per texel of the formats the runtime uses.
+std::uint32_t texelSize(VkFormat format);
+
+}  // namespace wg::vk

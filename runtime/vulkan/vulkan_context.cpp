@@ -1,0 +1,209 @@
+#include "runtime/vulkan/vulkan_context.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+namespace wg::vk {
+
+void check(VkResult result, const char* what) {
+  if (result != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed (VkResult " + std::to_string(result) + ")");
+}
+
+namespace {
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool hasLayer(const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+VkInstance createInstance(bool validation, std::string& error) {
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "weathergen";
+  app.apiVersion = VK_API_VERSION_1_1;
+  std::vector<const char*> layers, extensions;
+  if (validation) {
+    if (!hasLayer(kValidationLayer)) {
+      error = "the Vulkan validation layers are not installed (Debian package vulkan-validationlayers)";
+      return VK_NULL_HANDLE;
+    }
+    layers.push_back(kValidationLayer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  }
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  VkInstance instance = VK_NULL_HANDLE;
+  if (vkCreateInstance(&info, nullptr, &instance) != VK_SUCCESS) {
+    error = "no Vulkan 1.1 instance (is a driver installed? Debian: mesa-vulkan-drivers)";
+    return VK_NULL_HANDLE;
+  }
+  return instance;
+}
+
+bool matches(const VkPhysicalDeviceProperties& p, const std::string& selector) {
+  if (selector.empty()) return true;
+  std::string s = lower(selector);
+  if (s == "cpu") return p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (s == "integrated") return p.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;
+  if (s == "discrete") return p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+  if (s == "gpu") return p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU || p.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;
+  return lower(p.deviceName).find(s) != std::string::npos;
+}
+}  // namespace
+
+VKAPI_ATTR VkBool32 VKAPI_CALL Context::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                  VkDebugUtilsMessageTypeFlagsEXT,
+                                                  const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+  auto* self = static_cast<Context*>(user);
+  if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT)
+    self->messages_.push_back(std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error: " : "warning: ") +
+                              (data->pMessage ? data->pMessage : ""));
+  return VK_FALSE;
+}
+
+std::vector<std::string> Context::listDevices(std::string& error) {
+  std::vector<std::string> names;
+  VkInstance instance = createInstance(false, error);
+  if (!instance) return names;
+  std::uint32_t count = 0;
+  vkEnumeratePhysicalDevices(instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(instance, &count, devices.data());
+  for (auto d : devices) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(d, &p);
+    names.emplace_back(p.deviceName);
+  }
+  vkDestroyInstance(instance, nullptr);
+  return names;
+}
+
+std::unique_ptr<Context> Context::create(const ContextOptions& options, std::string& error) {
+  std::unique_ptr<Context> ctx(new Context());
+  ctx->instance_ = createInstance(options.validation, error);
+  if (!ctx->instance_) return nullptr;
+  if (options.validation) {
+    auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(ctx->instance_, "vkCreateDebugUtilsMessengerEXT"));
+    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    info.pfnUserCallback = onMessage;
+    info.pUserData = ctx.get();
+    if (!createMessenger || createMessenger(ctx->instance_, &info, nullptr, &ctx->messenger_) != VK_SUCCESS) {
+      error = "cannot attach to the validation layers";
+      return nullptr;
+    }
+  }
+  std::uint32_t count = 0;
+  vkEnumeratePhysicalDevices(ctx->instance_, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(ctx->instance_, &count, devices.data());
+  // With no selector, prefer a CPU device: results then match CI's lavapipe.
+  std::stable_sort(devices.begin(), devices.end(), [](VkPhysicalDevice a, VkPhysicalDevice b) {
+    VkPhysicalDeviceProperties pa, pb;
+    vkGetPhysicalDeviceProperties(a, &pa);
+    vkGetPhysicalDeviceProperties(b, &pb);
+    return (pa.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) > (pb.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);
+  });
+  std::string available;
+  for (auto d : devices) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(d, &p);
+    available += (available.empty() ? "" : ", ") + std::string(p.deviceName);
+    if (ctx->physical_ || p.apiVersion < VK_API_VERSION_1_1 || !matches(p, options.device)) continue;
+    std::uint32_t families = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(d, &families, nullptr);
+    std::vector<VkQueueFamilyProperties> props(families);
+    vkGetPhysicalDeviceQueueFamilyProperties(d, &families, props.data());
+    for (std::uint32_t i = 0; i < families; ++i)
+      if (props[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
+        ctx->physical_ = d;
+        ctx->queueFamily_ = i;
+        ctx->properties_ = p;
+        break;
+      }
+  }
+  if (!ctx->physical_) {
+    error = "no Vulkan 1.1 device matches '" + options.device + "' (available: " + (available.empty() ? "none" : available) + ")";
+    return nullptr;
+  }
+  vkGetPhysicalDeviceMemoryProperties(ctx->physical_, &ctx->memory_);
+  float priority = 1.f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = ctx->queueFamily_;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+  VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  deviceInfo.queueCreateInfoCount = 1;
+  deviceInfo.pQueueCreateInfos = &queueInfo;
+  if (vkCreateDevice(ctx->physical_, &deviceInfo, nullptr, &ctx->device_) != VK_SUCCESS) {
+    error = "cannot create a logical device on " + ctx->deviceName();
+    return nullptr;
+  }
+  vkGetDeviceQueue(ctx->device_, ctx->queueFamily_, 0, &ctx->queue_);
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.queueFamilyIndex = ctx->queueFamily_;
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  check(vkCreateCommandPool(ctx->device_, &poolInfo, nullptr, &ctx->commandPool_), "vkCreateCommandPool");
+  return ctx;
+}
+
+Context::~Context() {
+  if (device_) {
+    vkDeviceWaitIdle(device_);
+    if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
+    vkDestroyDevice(device_, nullptr);
+  }
+  if (messenger_) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy) destroy(instance_, messenger_, nullptr);
+  }
+  if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags flags) const {
+  for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i)
+    if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & flags) == flags) return i;
+  return UINT32_MAX;
+}
+
+VkCommandBuffer Context::beginOneTime() {
+  VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  info.commandPool = commandPool_;
+  info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  info.commandBufferCount = 1;
+  VkCommandBuffer cmd;
+  check(vkAllocateCommandBuffers(device_, &info, &cmd), "vkAllocateCommandBuffers");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+  return cmd;
+}
+
+void Context::endOneTime(VkCommandBuffer cmd) {
+  check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  check(vkQueueSubmit(queue_, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
+  check(vkQueueWaitIdle(queue_), "vkQueueWaitIdle");
+  vkFreeCommandBuffers(device_, commandPool_, 1, &cmd);
+}
+
+}  // namespace wg::vk

@@ -1,0 +1,77 @@
+// A headless Vulkan 1.1 device: instance, physical-device choice, one graphics queue,
+// a command pool, and (optionally) the validation layers with every message counted.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace wg::vk {
+
+struct ContextOptions {
+  // "" picks the first device, preferring a CPU device (lavapipe) for reproducibility;
+  // "cpu", "integrated", "discrete" pick by type; anything else matches the name.
+  std::string device;
+  bool validation = false;
+};
+
+class Context {
+ public:
+  // Returns null and sets error when no usable device exists.
+  static std::unique_ptr<Context> create(const ContextOptions& options, std::string& error);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkInstance instance() const { return instance_; }
+  VkPhysicalDevice physicalDevice() const { return physical_; }
+  VkDevice device() const { return device_; }
+  VkQueue queue() const { return queue_; }
+  std::uint32_t queueFamily() const { return queueFamily_; }
+  VkCommandPool commandPool() const { return commandPool_; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  std::string deviceName() const { return properties_.deviceName; }
+  bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+
+  // Validation messages (warnings and errors) seen so far.
+  const std::vector<std::string>& validationMessages() const { return messages_; }
+  void clearValidationMessages() { messages_.clear(); }
+
+  // Memory type with all of `flags` among `typeBits`; UINT32_MAX when none.
+  std::uint32_t findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags flags) const;
+
+  // Records commands into a fresh command buffer, submits and waits.
+  template <typename Record>
+  void submitAndWait(Record&& record) {
+    VkCommandBuffer cmd = beginOneTime();
+    record(cmd);
+    endOneTime(cmd);
+  }
+
+  static std::vector<std::string> listDevices(std::string& error);
+
+ private:
+  Context() = default;
+  VkCommandBuffer beginOneTime();
+  void endOneTime(VkCommandBuffer cmd);
+  static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                  VkDebugUtilsMessageTypeFlagsEXT types,
+                                                  const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  std::uint32_t queueFamily_ = 0;
+  VkCommandPool commandPool_ = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties properties_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+  std::vector<std::string> messages_;
+};
+
+// Throws std::runtime_error naming the call when a Vulkan call fails.
+void check(VkResult result, const char* what);
+
+}  // namespace wg::vk
