@@ -12,6 +12,8 @@ namespace {
 // the point completely.
 constexpr float kShelterClearance = 0.1f;
 constexpr float kShelterFull = 0.5f;
+// Eq. 3.4 gate: faces within this much of vertical (as n.up, about 6 degrees) fade in.
+constexpr float kFacingRamp = 0.1f;
 // Eq. 3.10: the displacement noise is brightened so it never opens holes.
 constexpr float kNoiseBrightening = 0.75f;
 // Eq. 3.12: the height map is shifted by 0.05 texture units to measure slope.
@@ -72,7 +74,10 @@ float lerp(float a, float b, float p) { return a * (1.f - p) + b * p; }
 
 float inclination(glm::vec3 normal, glm::vec3 detailNormal, float intensity) {
   float c = clamp01(glm::dot(normal, kUp) + glm::dot(detailNormal, kUp) * intensity);
-  return c * c * c;
+  // The geometric normal gates the normal-map term: an up-facing detail facet on an
+  // overhang must not hold snow ("weather affects the top more than the sides").
+  float facing = clamp01(glm::dot(normal, kUp) / kFacingRamp);
+  return c * c * c * facing;
 }
 
 float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float sunIntensity) {

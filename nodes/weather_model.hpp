@@ -37,7 +37,8 @@ float reflectance(glm::vec3 albedo);  // dot(kDetailWeights, albedo)
 
 float clamp01(float x);                      // eq. 3.2
 float lerp(float a, float b, float p);       // eq. 3.3
-// Eq. 3.4: Clamp(N.up + (Nd.up) * intensity)^3, Nd the normal-mapped world normal.
+// Eq. 3.4: Clamp(N.up + (Nd.up) * intensity)^3, Nd the normal-mapped world normal,
+// times Clamp(N.up / 0.1) so undersides never hold snow whatever the normal map does.
 float inclination(glm::vec3 normal, glm::vec3 detailNormal, float intensity);
 // Eq. 3.5: Clamp(N . sunTravel * sunIntensity + 1): sun-facing sides lose cover.
 float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float sunIntensity);

@@ -14,10 +14,12 @@ const ShaderLibrary kWeatherLibrary = {
 float wg_clamp01(float x) { return clamp(x, 0.0, 1.0); }  // eq. 3.2
 float wg_lerp(float a, float b, float p) { return a * (1.0 - p) + b * p; }  // eq. 3.3
 float wg_reflectance(vec3 c) { return dot(vec3(0.3, 0.59, 0.11), c); }
-// Eq. 3.4: geometric and normal-mapped world normals against up, cubed.
+// Eq. 3.4: geometric and normal-mapped world normals against up, cubed, gated by the
+// geometric normal (a reading: see docs/weather-model.md).
 float wg_inclination(vec3 n, vec3 nd, float intensity) {
   float c = wg_clamp01(dot(n, vec3(0.0, 1.0, 0.0)) + dot(nd, vec3(0.0, 1.0, 0.0)) * intensity);
-  return c * c * c;
+  // The geometric normal gates the normal-map term: overhangs never hold snow.
+  return c * c * c * wg_clamp01(dot(n, vec3(0.0, 1.0, 0.0)) / 0.1);
 }
 // Eq. 3.5: sun-facing sides lose cover, the more the stronger the sun.
 float wg_sun_facing(vec3 n, vec3 towardsSun, float intensity) {
@@ -158,10 +160,12 @@ vec2 wg_terrain_coord(vec3 p) { return (vec2(p.x, p.z) - frame_terrainRegion.xy)
 float wg_clamp01(float x) { return clamp(x, 0.0, 1.0); }  // eq. 3.2
 float wg_lerp(float a, float b, float p) { return a * (1.0 - p) + b * p; }  // eq. 3.3
 float wg_reflectance(float3 c) { return dot(float3(0.3, 0.59, 0.11), c); }
-// Eq. 3.4: geometric and normal-mapped world normals against up, cubed.
+// Eq. 3.4: geometric and normal-mapped world normals against up, cubed, gated by the
+// geometric normal (a reading: see docs/weather-model.md).
 float wg_inclination(float3 n, float3 nd, float intensity) {
   float c = wg_clamp01(dot(n, float3(0.0, 1.0, 0.0)) + dot(nd, float3(0.0, 1.0, 0.0)) * intensity);
-  return c * c * c;
+  // The geometric normal gates the normal-map term: overhangs never hold snow.
+  return c * c * c * wg_clamp01(dot(n, float3(0.0, 1.0, 0.0)) / 0.1);
 }
 // Eq. 3.5: sun-facing sides lose cover, the more the stronger the sun.
 float wg_sun_facing(float3 n, float3 towardsSun, float intensity) {

@@ -87,8 +87,12 @@ TEST(WeatherNodes, Inclination) {
   expectValue(eval("weather_inclination", {kUp, kUp, s(0.5f)}), s(1));
   // Tilted (0.8, 0.6, 0), no bump: 0.6 + 0.6 * 0.5 = 0.9 -> 0.9^3 = 0.729.
   expectValue(eval("weather_inclination", {v3(0.8f, 0.6f, 0), v3(0.8f, 0.6f, 0), s(0.5f)}), s(0.729f));
-  // Vertical face whose normal map bumps up to (0.6, 0.8, 0): 0 + 0.8 * 0.5 = 0.4 -> 0.064.
-  expectValue(eval("weather_inclination", {v3(1, 0, 0), v3(0.6f, 0.8f, 0), s(0.5f)}), s(0.064f));
+  // Vertical face whose normal map bumps up to (0.6, 0.8, 0): 0 + 0.8 * 0.5 = 0.4 -> 0.064,
+  // but the geometric gate Clamp(N.up / 0.1) = 0 keeps it bare.
+  expectValue(eval("weather_inclination", {v3(1, 0, 0), v3(0.6f, 0.8f, 0), s(0.5f)}), s(0));
+  // Nearly vertical, n = (0.99749, 0.05, 0): Clamp(0.05 + 0.8 * 0.5)^3 = 0.45^3 = 0.091125,
+  // gate 0.05 / 0.1 = 0.5 -> 0.0455625.
+  expectValue(eval("weather_inclination", {v3(0.99749f, 0.05f, 0), v3(0.6f, 0.8f, 0), s(0.5f)}), s(0.0455625f));
   // Downward: Clamp(-1 - 0.5) = 0.
   expectValue(eval("weather_inclination", {kDown, kDown, s(0.5f)}), s(0));
   // Intensity 0 ignores the normal map: 0.6^3 = 0.216.
