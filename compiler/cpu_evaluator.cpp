@@ -134,7 +134,7 @@ EvalResult CpuEvaluator::evaluate(const EvalInputs& in) const {
   context.textures = &textures_;
   context.parameters = &parameters;
   context.frame = &in.frame;
-  context.terrainHeight = nullptr;  // no height map bound: flat terrain
+  context.terrainHeight = in.terrainHeight;
 
   // Vertex stage first: its offset moves the position the fragment stage reads.
   const SurfacePoint vertex = vertexSurface(in.surface);
@@ -144,7 +144,7 @@ EvalResult CpuEvaluator::evaluate(const EvalInputs& in) const {
   const Value offset = operandValue(graph_.output(offsetField.field), values).convertedTo(offsetField.type);
 
   // Nodes both stages use are recomputed with the fragment stage's inputs.
-  const SurfacePoint fragment = fragmentSurface(vertex, offset);
+  const SurfacePoint fragment = fragmentSurface(vertex, in.positionIsDisplaced ? Value::vec3(0.f, 0.f, 0.f) : offset);
   context.surface = &fragment;
   evaluateStage(fragmentNodes_, context, values);
 

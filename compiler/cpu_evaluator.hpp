@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "compiler/ir.hpp"
+#include "nodes/height_field.hpp"
 #include "nodes/texture_sampling.hpp"
 
 namespace wg {
@@ -22,6 +23,11 @@ struct EvalInputs {
   // Material parameters by name (as in the reflection's material block), overriding
   // their defaults.
   std::map<std::string, Value, std::less<>> parameters;
+  // The shared terrain height map the GPU samples (eq. 3.11-3.12); null: flat terrain.
+  const HeightField* terrainHeight = nullptr;
+  // The position already includes the vertex stage's offset, as a GPU read-back of the
+  // fragment stage's world position does: the fragment stage then reads it unchanged.
+  bool positionIsDisplaced = false;
 };
 
 struct EvalResult {

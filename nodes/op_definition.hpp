@@ -59,14 +59,14 @@ struct FrameState {
 };
 
 struct TextureSampler;  // nodes/texture_sampling.hpp
-struct Image;           // nodes/texture_image.hpp
+struct HeightField;     // nodes/height_field.hpp
 
 struct EvalContext {
   const SurfacePoint* surface = nullptr;
   const TextureSampler* textures = nullptr;  // null while constant folding
   const std::vector<Value>* parameters = nullptr;
   const FrameState* frame = nullptr;
-  const Image* terrainHeight = nullptr;  // null: flat terrain
+  const HeightField* terrainHeight = nullptr;  // null: flat terrain
   // Node-level settings (resolved by the compiler).
   std::string_view text;  // swizzle channels
   int parameterIndex = -1;

@@ -3,6 +3,7 @@
 // and shader code in nodes/weather_shader_library.cpp; each op names its equation.
 #include <glm/glm.hpp>
 
+#include "nodes/height_field.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/texture_image.hpp"
 #include "nodes/texture_sampling.hpp"
@@ -105,8 +106,7 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                              "{@sampleFn}(sampler2D(wg_terrain_height_map, wg_terrain_height_sampler), {uv}{@lodArg}).r",
                              [](const Value* in, const EvalContext& c) {
                                if (!c.terrainHeight) return Value::scalar(0.f);
-                               return Value::scalar(
-                                   sampleImage(*c.terrainHeight, in[0].v[0], in[0].v[1], TextureWrap::Clamp, TextureFilter::Linear).x());
+                               return Value::scalar(c.terrainHeight->sample(in[0].v[0], in[0].v[1]));
                              },
                              V);
     height.hlsl = "wg_terrain_height_map.{@sampleFn}(wg_terrain_height_sampler, {uv}{@lodArg}).r";

@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "nodes/lattice_noise.hpp"
+#include "nodes/weather_model.hpp"
 #include "runtime/scene/shapes.hpp"
 
 namespace wg::scene {
@@ -199,6 +200,48 @@ float sectionStart(const RoadLayout& road, int k) {
   return s;
 }
 constexpr int kRoadRampSection = 1, kRoadShelterSection = 2, kRoadCamberSection = 4, kRoadFlatStart = 0;
+// Road probes keep this far from section ends, the road's edges and the roof's edges.
+constexpr float kProbeMargin = 2.f;
+constexpr float kProbeRoofMargin = 3.f;
+
+// Where puddles form first on a stretch of road, by the weather model's own puddle
+// coverage on level ground: the spot that stays covered, a probe-radius round it, at
+// the most of a ladder of low puddle levels. A flat-road probe there is wet as soon as
+// any puddle forms (not on a blob's edge), and a sheltered one tests the shelter, not
+// the noise.
+constexpr float kProbeSearchStep = 0.5f;
+constexpr float kProbeSpotRadius = 0.75f;
+constexpr int kProbePuddleLevels = 10;
+constexpr float kProbePuddleLevelStep = 0.05f;
+glm::vec2 wettestSpot(const RoadLayout& road, float alongFrom, float alongTo, float acrossFrom, float acrossTo) {
+  const std::array<glm::vec2, 5> around = {
+      {{0.f, 0.f}, {kProbeSpotRadius, 0.f}, {-kProbeSpotRadius, 0.f}, {0.f, kProbeSpotRadius}, {0.f, -kProbeSpotRadius}}};
+  glm::vec2 best(alongFrom, acrossFrom);
+  float bestScore = -1.f;
+  for (float s = alongFrom; s <= alongTo; s += kProbeSearchStep) {
+    for (float t = acrossFrom; t <= acrossTo; t += kProbeSearchStep) {
+      float score = 0.f;
+      for (int k = 1; k <= kProbePuddleLevels; ++k) {
+        FrameState frame;
+        frame.puddleLevel = kProbePuddleLevelStep * static_cast<float>(k);
+        float covered = 1.f;
+        for (glm::vec2 o : around)
+          covered = std::min(covered, weather::puddleCoverage(frame, kUp, road.surfacePoint(s + o.x, t + o.y), 1.f));
+        score += covered;
+      }
+      if (score > bestScore) bestScore = score, best = {s, t};
+    }
+  }
+  return best;
+}
+
+// The wettest spot of the first flat stretch, clear of its ends and the road's edges.
+glm::vec2 flatRoadSpot(const RoadLayout& road) {
+  float from = sectionStart(road, kRoadFlatStart) + kProbeMargin;
+  float to = sectionStart(road, kRoadFlatStart) + road.sections[kRoadFlatStart].length - kProbeMargin;
+  float edge = 0.5f * road.width - kProbeMargin;
+  return wettestSpot(road, from, to, -edge, edge);
+}
 
 // Triangles of `mesh` whose centroid satisfies `keep`, as a compact mesh.
 template <typename Pred>
@@ -538,10 +581,16 @@ Scene valley() {
   b.camera("rocks", rockCentre + glm::vec3(0.f, 8.f, -22.f), rockCentre, 50.f);
 
   // Probes.
-  b.probeOnTop("shelter-road", "sheltered", "road", shelterX, kRoadZ);
+  glm::vec2 dry = wettestSpot(road, shelterX - road.start.x - 0.5f * kShelterSize.x + kProbeRoofMargin,
+                              shelterX - road.start.x + 0.5f * kShelterSize.x - kProbeRoofMargin,
+                              kShelterZ - 0.5f * kShelterSize.y + kProbeRoofMargin - kRoadZ,
+                              0.5f * kRoadWidth - kProbeMargin + 1.f);
+  glm::vec3 dryPoint = road.surfacePoint(dry.x, dry.y);
+  b.probeOnTop("shelter-road", "sheltered", "road", dryPoint.x, dryPoint.z);
   b.probeOnTop("shelter-ground", "sheltered", "terrain", shelterX, kRoadZ + 0.5f * kRoadWidth + 2.f);
   b.probeOnTop("roof-top", "open", "shelter", shelterX, kShelterZ);
-  b.probeOnTop("flat-road", "flat-road", "road", road.start.x + sectionMiddle(road, kRoadFlatStart), kRoadZ);
+  glm::vec3 wet = road.surfacePoint(flatRoadSpot(road).x, flatRoadSpot(road).y);
+  b.probeOnTop("flat-road", "flat-road", "road", wet.x, wet.z);
   b.probeOnTop("sloped-road", "sloped-road", "road", road.start.x + sectionMiddle(road, kRoadRampSection), kRoadZ);
   b.probeOnTop("cambered-road", "sloped-road", "road", road.start.x + sectionMiddle(road, kRoadCamberSection),
                kRoadZ - 0.25f * kRoadWidth);
@@ -653,10 +702,15 @@ Scene roadScene() {
   b.camera("under-shelter", {shelterStart + 4.f, base.y + 1.6f, 1.5f},
            {shelterStart + 30.f, base.y + 0.3f, 0.f}, 60.f);
 
-  b.probeOnTop("under-shelter", "sheltered", "road", shelterX, 0.f);
+  glm::vec2 dry = wettestSpot(road, shelterX - road.start.x - 0.5f * kShelterSize.x + kProbeRoofMargin,
+                              shelterX - road.start.x + 0.5f * kShelterSize.x - kProbeRoofMargin,
+                              kShelterZ - 0.5f * kShelterSize.y + kProbeRoofMargin, 0.5f * kRoadWidth - kProbeMargin + 1.f);
+  glm::vec3 dryPoint = road.surfacePoint(dry.x, dry.y);
+  b.probeOnTop("under-shelter", "sheltered", "road", dryPoint.x, dryPoint.z);
   b.probeOnTop("shelter-ground", "sheltered", "terrain", shelterX, 0.5f * kRoadWidth + 2.f);
   b.probeOnTop("roof-top", "open", "shelter", shelterX, kShelterZ);
-  b.probeOnTop("flat-road", "flat-road", "road", road.start.x + sectionMiddle(road, kRoadFlatStart), 0.f);
+  glm::vec3 wet = road.surfacePoint(flatRoadSpot(road).x, flatRoadSpot(road).y);
+  b.probeOnTop("flat-road", "flat-road", "road", wet.x, wet.z);
   b.probeOnTop("sloped-road", "sloped-road", "road", road.start.x + sectionMiddle(road, kRoadRampSection), 0.f);
   b.probeOnTop("cambered-road", "sloped-road", "road", road.start.x + sectionMiddle(road, kRoadCamberSection),
                -0.25f * kRoadWidth);

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "nodes/height_field.hpp"
 #include "nodes/lattice_noise.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/texture_image.hpp"
@@ -29,7 +30,7 @@ namespace {
 struct Env {
   SurfacePoint surface;
   FrameState frame;
-  const Image* terrainHeight = nullptr;
+  const HeightField* terrainHeight = nullptr;
 };
 
 Value eval(std::string_view opName, std::vector<Value> inputs, const Env& env = {}) {
@@ -186,14 +187,12 @@ TEST(WeatherNodes, TerrainCoord) {
   expectValue(eval("terrain_coord", {v3(10, -99, -20)}, env), v2(0, 0));
 }
 
-// The shared height map: red channel, linear filtering, clamp to edge; 0 without a map.
+// The shared height map: float heights, linear filtering, clamp to edge; 0 without a map.
 TEST(WeatherNodes, TerrainHeight) {
   Env env;
   expectValue(eval("terrain_height", {v2(0.3f, 0.7f)}, env), s(0));
-  // A 2 x 1 map with texels 0 and 255: texel centres at u = 0.25 and 0.75.
-  Image map = Image::blank(2, 1);
-  map.setTexel(0, 0, {0, 0, 0, 1});
-  map.setTexel(1, 0, {1, 0, 0, 1});
+  // A 2 x 2 map whose columns hold 0 and 1: texel centres at u = 0.25 and 0.75.
+  HeightField map{2, {0.f, 1.f, 0.f, 1.f}};
   env.terrainHeight = &map;
   expectValue(eval("terrain_height", {v2(0.25f, 0.5f)}, env), s(0));    // on texel 0
   expectValue(eval("terrain_height", {v2(0.5f, 0.5f)}, env), s(0.5f));  // halfway: (0 + 1) / 2
