@@ -19,6 +19,7 @@
 #include "runtime/image/contact_sheet.hpp"
 #include "runtime/image/png_file.hpp"
 #include "runtime/scene_renderer.hpp"
+#include "runtime/timeline_renderer.hpp"
 #include "runtime/weather/weather_timeline.hpp"
 
 namespace wg {
@@ -36,6 +37,7 @@ Options:
                             OUT.png as a labelled contact sheet, one frame per stage,
                             and OUT.strip.png as a frame strip
   --step SECONDS            simulation step for --timeline (default 300)
+  --frames DIR              with --timeline: also write each stage as DIR/SCENE-NN-LABEL.png
   --weather-preset NAME     replace every material's preset (none for a baseline)
   --backend glsl|hlsl       which emitted SPIR-V to draw with (default glsl)
   --size WxH                image size (default 960x540)
@@ -71,17 +73,12 @@ WeatherState weatherFromFrame(const FrameState& f) {
   return s;
 }
 
-std::string formatFixed(double x, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
-  return buf;
-}
 
 }  // namespace
 
 int runRenderCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2);
-  std::string sceneName, camera, output, timelinePath, aov = "lit", device, graphsDir = WG_DEFAULT_GRAPHS_DIR;
+  std::string sceneName, camera, output, timelinePath, aov = "lit", device, graphsDir = WG_DEFAULT_GRAPHS_DIR, framesDir;
   std::optional<std::string> preset;
   std::vector<std::string> weatherLists;
   RenderRequest request;
@@ -105,7 +102,7 @@ int runRenderCommand(int argc, char** argv) {
     };
     std::string v;
     if (value("--scene", sceneName) || value("--camera", camera) || value("-o", output) || value("--output", output) ||
-        value("--timeline", timelinePath) || value("--aov", aov) || value("--device", device) || value("--graphs", graphsDir))
+        value("--timeline", timelinePath) || value("--aov", aov) || value("--device", device) || value("--graphs", graphsDir) || value("--frames", framesDir))
       continue;
     if (value("--weather", v)) { weatherLists.push_back(v); continue; }
     if (value("--weather-preset", v)) {
@@ -209,40 +206,20 @@ int runRenderCommand(int argc, char** argv) {
       if (progress) std::fprintf(stderr, "render: wrote %s (%ux%u)\n", output.c_str(), frame.width, frame.height);
       return kExitOk;
     }
-    // One frame per stage: the state at the end of each stage (the last is held for
-    // as long as the stage before it, so its weather has time to act).
-    const auto& keys = timeline->keys;
-    double lastHold = keys.size() > 1 ? keys.back().time - keys[keys.size() - 2].time : 6 * 3600.0;
-    double end = keys.back().time + lastHold;
-    WeatherState start = request.weather;
-    start.time = keys.front().time;
-    start.levels = {};
-    auto states = simulateTimeline(*timeline, start, step, end - keys.front().time);
+    auto stages = renderTimeline(renderer, *timeline, request, step, [&](std::size_t i, std::size_t n, const std::string& label) {
+      if (progress) std::fprintf(stderr, "render: [%zu/%zu] %s\n", i, n, label.c_str());
+    });
+    if (!checkValidation()) return kExitInternal;
     std::vector<image::LabelledFrame> frames;
     std::vector<Image> strip;
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-      double stageEnd = k + 1 < keys.size() ? keys[k + 1].time : end;
-      std::size_t index = std::min(states.size() - 1, static_cast<std::size_t>(std::llround((stageEnd - keys.front().time) / step)));
-      RenderRequest stageRequest = request;
-      stageRequest.weather = states[index];
-      stageRequest.weather.conditions.sunDirection = request.weather.conditions.sunDirection;
-      stageRequest.weather.conditions.sunIntensity = request.weather.conditions.sunIntensity;
-      // Show the stage's own conditions (not the next keyframe's) with its levels.
-      WeatherConditions during = timeline->at(std::max(keys[k].time, stageEnd - step));
-      stageRequest.weather.conditions.temperature = during.temperature;
-      stageRequest.weather.conditions.precipitation = during.precipitation;
-      if (progress)
-        std::fprintf(stderr, "render: [%zu/%zu] %s\n", k + 1, keys.size(), keys[k].label.empty() ? "stage" : keys[k].label.c_str());
-      RenderedFrame frame = renderer.render(stageRequest);
-      if (!checkValidation()) return kExitInternal;
-      Image img = toDisplayImage(frame);
-      const auto& w = stageRequest.weather;
-      frames.push_back({img,
-                        {(keys[k].label.empty() ? "stage " + std::to_string(k + 1) : keys[k].label) + "   t = " +
-                             formatFixed(w.time / 3600.0, 1) + " h",
-                         "T = " + formatFixed(w.conditions.temperature, 1) + " C   P = " + formatFixed(w.conditions.precipitation, 2),
-                         "snow " + formatFixed(w.levels.snow, 2) + "  wet " + formatFixed(w.levels.wetness, 2) + "  moss " +
-                             formatFixed(w.levels.moss, 2) + "  frost " + formatFixed(w.levels.frost, 2)}});
+    for (const auto& stage : stages) {
+      Image img = toDisplayImage(stage.frame);
+      if (!framesDir.empty()) {
+        std::filesystem::create_directories(framesDir);
+        std::string path = (std::filesystem::path(framesDir) / (sceneName + "-" + stage.slug + ".png")).string();
+        if (std::string e = image::writePng(path, img); !e.empty()) return usageError(e);
+      }
+      frames.push_back({img, stage.lines});
       strip.push_back(std::move(img));
     }
     std::string title = "weathergen  " + sceneName + "  (" + std::string(languageName(request.backend)) + ", " + aov + ")";

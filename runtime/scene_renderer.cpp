@@ -1,7 +1,7 @@
 #include "runtime/scene_renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/packing.hpp>
+#include <cstring>
 #include <stdexcept>
 
 #include "runtime/frame_uniforms.hpp"
@@ -439,8 +439,7 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
 
   auto raw = colour.download(ctx_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
   frame.rgba.resize(std::size_t(request.width) * request.height * 4);
-  const auto* halves = reinterpret_cast<const std::uint16_t*>(raw.data());
-  for (std::size_t k = 0; k < frame.rgba.size(); ++k) frame.rgba[k] = glm::unpackHalf1x16(halves[k]);
+  std::memcpy(frame.rgba.data(), raw.data(), frame.rgba.size() * sizeof(float));
 
   // Per-render objects go now; the pool and framebuffers are not reused.
   vkDestroyDescriptorPool(ctx_.device(), pool, nullptr);

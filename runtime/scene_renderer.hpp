@@ -25,9 +25,8 @@ struct RenderRequest {
 
 struct RenderedFrame {
   std::uint32_t width = 0, height = 0;
-  std::vector<float> rgba;       // linear, unclamped (read back from RGBA16F)
+  std::vector<float> rgba;       // linear, unclamped (read back from RGBA32F)
   double gpuMilliseconds = 0.0;  // the colour pass, from timestamp queries; 0 if unsupported
-  std::vector<float> worldPosition;  // xyz per pixel, when requested through renderGeometry
 };
 
 class SceneRenderer {

@@ -48,7 +48,7 @@ class MaterialPipeline {
 };
 
 // Formats of the renderer's attachments.
-inline constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // AOVs read back unclamped
+inline constexpr VkFormat kColourFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // AOVs read back unclamped, exactly
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 }  // namespace wg::vk

@@ -1,0 +1,29 @@
+// Renders a scripted weather timeline: one frame per stage (a run of keyframes sharing
+// a label, i.e. held conditions), at the state the weather simulation reaches by the
+// end of that stage. The CLI, the gallery and the
+// reference-image tests all go through here, so they draw the same frames.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "runtime/scene_renderer.hpp"
+#include "runtime/weather/weather_timeline.hpp"
+
+namespace wg {
+
+struct TimelineFrame {
+  std::string label;               // the stage's keyframe label, or "stage N"
+  std::string slug;                // label made file-name safe ("thaw-with-rain")
+  WeatherState state;              // what was rendered
+  std::vector<std::string> lines;  // the contact sheet's caption
+  RenderedFrame frame;
+};
+
+// `step` is the simulation step in seconds. A last stage of a single keyframe is held
+// as long as the gap before it, so its weather has time to act. onFrame (optional)
+// reports progress.
+std::vector<TimelineFrame> renderTimeline(SceneRenderer& renderer, const WeatherTimeline& timeline,
+                                          const RenderRequest& base, double step,
+                                          const std::function<void(std::size_t, std::size_t, const std::string&)>& onFrame = {});
+
+}  // namespace wg
