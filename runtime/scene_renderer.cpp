@@ -400,7 +400,10 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
       std::uint32_t w = colourPass ? request.width : kShadowResolution;
       std::uint32_t h = colourPass ? request.height : kShadowResolution;
       VkClearValue clears[2];
-      clears[0].color = {{kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.f}};
+      // AOVs clear to alpha 0, which no surface writes, so read-backs can tell sky
+      // from surface.
+      if (request.debugView == 0) clears[0].color = {{kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.f}};
+      else clears[0].color = {{0.f, 0.f, 0.f, 0.f}};
       clears[1].depthStencil = {1.f, 0};
       VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
       begin.renderPass = colourPass ? colourPass_ : depthPass_;
@@ -416,6 +419,7 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
       vkCmdSetScissor(cmd, 0, 1, &scissor);
       for (std::size_t i = 0; i < objects_.size(); ++i) {
         if (!colourPass && !objects_[i]->source->castsShadow) continue;
+        if (colourPass && !request.onlyObject.empty() && objects_[i]->source->name != request.onlyObject) continue;
         auto& pipeline = mats[i]->pipeline(request.backend, colourPass_, depthPass_);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, colourPass ? pipeline.colourPipeline() : pipeline.depthPipeline());
         auto offset = static_cast<std::uint32_t>(slice * (p * objects_.size() + i));

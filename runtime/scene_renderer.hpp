@@ -21,6 +21,9 @@ struct RenderRequest {
   WeatherState weather;
   std::optional<std::string> weatherPreset;  // replaces every material's preset ("none" for baselines)
   bool shadows = true;
+  // Draw only this object (the others still cast shadows and shelter from the sky);
+  // "" draws all. Lets tests know which material covers a pixel.
+  std::string onlyObject;
 };
 
 struct RenderedFrame {
