@@ -110,7 +110,7 @@ class HlslSyntax final : public ShaderSyntax {
              "  float2 wg_texcoord = in_texcoord;\n"
              "  float4 wg_vertexColor = in_color;\n";
       out += s.body;
-      out += "  wg_worldPosition += " + s.results[static_cast<int>(PbrField::WorldPositionOffset)] + ";\n";
+      out += "  wg_worldPosition += wg_offset;\n";
       out += "  VSOutput wg_out;\n"
              "  wg_out.v_worldPosition = wg_worldPosition;\n"
              "  wg_out.v_worldNormal = wg_worldNormal;\n"
@@ -128,23 +128,18 @@ class HlslSyntax final : public ShaderSyntax {
              "  float2 wg_texcoord = wg_in.v_texcoord;\n"
              "  float4 wg_vertexColor = wg_in.v_color;\n";
       out += s.body;
-      auto r = [&](PbrField f) { return s.results[static_cast<int>(f)]; };
-      out += "  float3 wg_baseColor = " + r(PbrField::BaseColor) + ";\n";
-      out += "  float wg_metallic = " + r(PbrField::Metallic) + ";\n";
-      out += "  float wg_roughness = " + r(PbrField::Roughness) + ";\n";
-      out += "  float wg_specular = " + r(PbrField::Specular) + ";\n";
-      out += "  float3 wg_normal = " + r(PbrField::Normal) + ";\n";
-      out += "  float wg_occlusion = " + r(PbrField::AmbientOcclusion) + ";\n";
-      out += "  float3 wg_emissive = " + r(PbrField::Emissive) + ";\n";
-      if (s.alphaTested)
-        out += "  if (" + r(PbrField::Opacity) + " < " + formatFloat(s.alphaCutoff) + ") discard;\n";
+      if (s.alphaTested) out += "  if (wg_opacity < " + formatFloat(s.alphaCutoff) + ") discard;\n";
       out += "  float3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
              "  float3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
              "  float3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
              "  float3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
-      for (const auto& view : s.debugViews)
-        out += "  if (frame_debugView == " + std::to_string(view.id) + "u) wg_color = " + view.expression + ";\n";
-      out += "  return float4(wg_color, 1.0);\n";
+      out += "  float wg_alpha = 1.0;\n";
+      for (const auto& view : s.debugViews) {
+        out += "  if (frame_debugView == " + std::to_string(view.id) + "u) ";
+        if (view.alpha.empty()) out += "wg_color = " + view.expression + ";\n";
+        else out += "{ wg_color = " + view.expression + "; wg_alpha = " + view.alpha + "; }\n";
+      }
+      out += "  return float4(wg_color, wg_alpha);\n";
     }
     out += "}\n";
     return out;

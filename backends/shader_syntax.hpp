@@ -19,6 +19,7 @@ struct DebugView {
   std::uint32_t id;
   std::string_view name;
   std::string expression;  // vec3, in the target language
+  std::string alpha;       // float; empty: 1
 };
 
 // Everything a stage needs besides its language-specific frame.
@@ -27,8 +28,10 @@ struct StageSource {
   const MaterialInterface* interface = nullptr;
   std::string banner;  // first comment line: generator and content hash
   std::vector<const ShaderLibrary*> libraries;  // dependency order
-  std::string body;  // node statements, indented
-  std::array<std::string, kPbrFieldCount> results;  // expression per PBR field for this stage
+  // Node statements, then the locals the frame reads: wg_baseColor, wg_metallic,
+  // wg_roughness, wg_specular, wg_normal, wg_occlusion, wg_emissive, wg_opacity and the
+  // wg_coverage_* terms (fragment), or wg_offset (vertex).
+  std::string body;
   bool alphaTested = false;
   float alphaCutoff = 0.5f;
   std::vector<DebugView> debugViews;

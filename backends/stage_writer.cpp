@@ -16,7 +16,9 @@ namespace {
 constexpr std::string_view kFrameLocals[] = {
     "wg_worldPosition", "wg_worldNormal", "wg_worldTangent", "wg_tangentAxis", "wg_texcoord", "wg_vertexColor",
     "wg_baseColor", "wg_metallic", "wg_roughness", "wg_specular", "wg_normal", "wg_occlusion", "wg_emissive",
-    "wg_bitangent", "wg_N", "wg_V", "wg_color", "wg_in", "wg_out", "wg_frontFacing", "wg_clipPosition", "out_color",
+    "wg_bitangent", "wg_N", "wg_V", "wg_color", "wg_alpha", "wg_opacity", "wg_offset",
+    "wg_coverage_snow", "wg_coverage_wet", "wg_coverage_moss", "wg_coverage_frost", "wg_coverage_ice",
+    "wg_coverage_puddle", "wg_coverage_density", "wg_in", "wg_out", "wg_frontFacing", "wg_clipPosition", "out_color",
     "main", "VSInput", "VSOutput", "PSInput"};
 
 // A typical emitted statement's length, to size the body once.
@@ -37,43 +39,98 @@ class StageWriter {
     markNeeded();
     collectLibraries(source.libraries);
     source.body.reserve(graph_.nodes.size() * kBytesPerStatement);
-    for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
-      if (needed_[i]) emitNode(i, source.body);
-    for (const auto& info : pbrFields())
-      if (info.stage == stage_) source.results[static_cast<int>(info.field)] = operandExpression(graph_.output(info.field), info.type);
+    emitBody(source.body);
     source.alphaTested = graph_.alphaTested;
     source.alphaCutoff = graph_.alphaCutoff;
     if (stage_ == ShaderStage::Fragment) {
       for (const auto& view : kDebugViews) {
         std::string expression;
         if (view.coverage)
-          expression = syntax_.splat(ValueType::Vec3, operandExpression(graph_.coverage(*view.coverage), ValueType::Float));
+          expression = syntax_.splat(ValueType::Vec3, coverageLocal(*view.coverage));
         else if (view.name == "albedo")
           expression = "wg_baseColor";
         else if (view.name == "roughness")
           expression = syntax_.splat(ValueType::Vec3, "wg_roughness");
         else if (view.name == "normal")
           expression = "(wg_N * 0.5 + 0.5)";
+        else if (view.name == "position")
+          expression = "wg_worldPosition";
+        else if (view.name == "geometricNormal")
+          expression = "wg_worldNormal";
+        else if (view.name == "texcoord")
+          expression = std::string(syntax_.typeName(ValueType::Vec3)) + "(wg_texcoord, 0.0)";
+        else if (view.name == "tangent")
+          expression = "wg_worldTangent.xyz";
         else
           continue;  // "lit" is the default colour
-        source.debugViews.push_back({view.id, view.name, std::move(expression)});
+        source.debugViews.push_back({view.id, view.name, std::move(expression),
+                                     view.name == "tangent" ? "wg_worldTangent.w" : ""});
       }
     }
     return syntax_.assemble(source);
   }
 
  private:
+  // The stage's roots: its PBR fields (and, in the fragment stage, the coverage terms),
+  // as output slots.
+  std::vector<std::size_t> stageSlots() const {
+    std::vector<std::size_t> slots;
+    for (const auto& info : pbrFields())
+      if (info.stage == stage_) slots.push_back(static_cast<std::size_t>(info.field));
+    if (stage_ == ShaderStage::Fragment)
+      for (std::size_t t = 0; t < kCoverageCount; ++t) slots.push_back(kPbrFieldCount + t);
+    return slots;
+  }
+
+  static std::string coverageLocal(CoverageTerm term) {
+    return "wg_coverage_" + std::string(coverageTerms()[static_cast<std::size_t>(term)].name);
+  }
+
+  // The local each output slot lands in; the stage frames read these names.
+  static std::string slotLocal(std::size_t slot) {
+    static constexpr std::string_view kFieldLocals[kPbrFieldCount] = {
+        "wg_baseColor", "wg_metallic", "wg_roughness", "wg_specular", "wg_normal",
+        "wg_occlusion", "wg_emissive", "wg_opacity", "wg_offset"};
+    if (slot < kPbrFieldCount) return std::string(kFieldLocals[slot]);
+    return coverageLocal(static_cast<CoverageTerm>(slot - kPbrFieldCount));
+  }
+  static ValueType slotType(std::size_t slot) {
+    return slot < kPbrFieldCount ? pbrFields()[slot].type : ValueType::Float;
+  }
+
+  // Unguarded nodes, the result locals at their unweathered values, then one uniform
+  // branch that runs the weather nodes and rebinds the results while any weather
+  // level is above 0: with no weather, the weather costs that one branch.
+  void emitBody(std::string& body) {
+    for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
+      if (needed_[i] && !graph_.nodes[i].weather) emitNode(i, body, "  ");
+    const auto slots = stageSlots();
+    for (std::size_t slot : slots) {
+      const Operand& base = graph_.weatherGuarded ? graph_.unweathered[slot] : graph_.outputs[slot];
+      body += "  ";
+      body += syntax_.typeName(slotType(slot));
+      body += " " + slotLocal(slot) + " = " + operandExpression(base, slotType(slot)) + ";\n";
+    }
+    bool anyGuarded = false;
+    for (std::size_t i = 0; i < graph_.nodes.size(); ++i) anyGuarded = anyGuarded || (needed_[i] && graph_.nodes[i].weather);
+    if (!graph_.weatherGuarded || !anyGuarded) return;
+    body += "  if (frame_snowLevel + frame_wetnessLevel + frame_mossLevel + frame_frostLevel + frame_puddleLevel > 0.0) {\n";
+    for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
+      if (needed_[i] && graph_.nodes[i].weather) emitNode(i, body, "    ");
+    for (std::size_t slot : slots)
+      if (!(graph_.outputs[slot] == graph_.unweathered[slot]))
+        body += "    " + slotLocal(slot) + " = " + operandExpression(graph_.outputs[slot], slotType(slot)) + ";\n";
+    body += "  }\n";
+  }
+
   void markNeeded() {
     needed_.assign(graph_.nodes.size(), false);
-    for (const auto& info : pbrFields()) {
-      const Operand& o = graph_.output(info.field);
-      if (info.stage == stage_ && o.kind == Operand::Kind::Node) needed_[o.node] = true;
-    }
-    if (stage_ == ShaderStage::Fragment)
-      for (const auto& info : coverageTerms()) {
-        const Operand& o = graph_.coverage(info.term);
-        if (o.kind == Operand::Kind::Node) needed_[o.node] = true;
+    for (std::size_t slot : stageSlots()) {
+      for (const Operand* o : {&graph_.outputs[slot], &graph_.unweathered[slot]}) {
+        if (o == &graph_.unweathered[slot] && !graph_.weatherGuarded) continue;
+        if (o->kind == Operand::Kind::Node) needed_[o->node] = true;
       }
+    }
     for (std::size_t i = graph_.nodes.size(); i-- > 0;)
       if (needed_[i])
         for (const auto& o : graph_.nodes[i].inputs)
@@ -134,11 +191,11 @@ class StageWriter {
     return "/*unknown symbol*/";
   }
 
-  void emitNode(std::size_t index, std::string& body) {
+  void emitNode(std::size_t index, std::string& body, std::string_view indent) {
     const IrNode& node = graph_.nodes[index];
     const OpDef& op = *node.op;
     std::string_view code = op.code(syntax_.language() == ShaderLanguage::Hlsl);
-    body += "  ";
+    body += indent;
     body += syntax_.typeName(node.valueType);
     body += ' ';
     body += names_[index];

@@ -9,5 +9,6 @@ int runCompileCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
 int runEvalCommand(int argc, char** argv);
 int runRenderCommand(int argc, char** argv);
+int runBenchRenderCommand(int argc, char** argv);
 
 }  // namespace wg

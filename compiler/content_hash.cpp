@@ -54,7 +54,7 @@ std::string contentHash(const IrGraph& graph) {
     h.add(static_cast<std::uint64_t>(node.valueType));
     for (const auto& o : node.inputs) addOperand(h, o);
   }
-  for (const auto& o : graph.outputs) addOperand(h, o);
+  graph.forEachRoot([&](const Operand& o) { addOperand(h, o); });
   for (const auto& p : graph.parameters) {
     h.add(p.name);
     h.add(p.label);

@@ -17,7 +17,9 @@ struct DebugViewInfo {
   std::optional<CoverageTerm> coverage;  // set for coverage views
 };
 
-inline constexpr std::array<DebugViewInfo, 11> kDebugViews = {{
+// Views 11-14 carry the fragment stage's surface inputs (unclamped, for read-back
+// into the CPU evaluator); the tangent's handedness goes in alpha.
+inline constexpr std::array<DebugViewInfo, 15> kDebugViews = {{
     {0, "lit", std::nullopt},
     {1, "albedo", std::nullopt},
     {2, "roughness", std::nullopt},
@@ -29,6 +31,10 @@ inline constexpr std::array<DebugViewInfo, 11> kDebugViews = {{
     {8, "ice", CoverageTerm::Ice},
     {9, "puddle", CoverageTerm::Puddle},
     {10, "density", CoverageTerm::Density},
+    {11, "position", std::nullopt},
+    {12, "geometricNormal", std::nullopt},
+    {13, "texcoord", std::nullopt},
+    {14, "tangent", std::nullopt},
 }};
 
 }  // namespace wg

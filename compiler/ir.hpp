@@ -36,6 +36,7 @@ struct IrNode {
   std::string text;                    // swizzle channels
   int parameter = -1;                  // op "parameter": index into IrGraph::parameters
   std::string debugName;               // the source node id, for diagnostics only
+  bool weather = false;                // added by weather-inject: runs only while weather is active
 
   ValueType outputType(std::size_t output) const;
 };
@@ -62,6 +63,24 @@ struct IrGraph {
   float alphaCutoff = 0.5f;
   bool alphaTested = false;  // opacity was given
   WeatherConfig weather;  // what the weather-inject pass adds; preset "none" adds nothing
+  // The bindings as they were before weather-inject. Shaders use them while every
+  // weather level is 0 and run the weather nodes only otherwise (one uniform branch).
+  std::array<Operand, kIrOutputCount> unweathered;
+  bool weatherGuarded = false;
+
+  // Every root: the outputs, then (with weather) the unweathered bindings.
+  template <typename F>
+  void forEachRoot(F&& f) {
+    for (auto& o : outputs) f(o);
+    if (weatherGuarded)
+      for (auto& o : unweathered) f(o);
+  }
+  template <typename F>
+  void forEachRoot(F&& f) const {
+    for (const auto& o : outputs) f(o);
+    if (weatherGuarded)
+      for (const auto& o : unweathered) f(o);
+  }
 
   Operand& output(PbrField field) { return outputs[static_cast<std::size_t>(field)]; }
   const Operand& output(PbrField field) const { return outputs[static_cast<std::size_t>(field)]; }

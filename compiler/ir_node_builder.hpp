@@ -11,7 +11,9 @@ namespace wg {
 
 class IrNodeBuilder {
  public:
-  explicit IrNodeBuilder(IrGraph& graph) : graph_(graph) {}
+  // weatherNodes: mark every added node as weather (shaders run it only while weather
+  // is active), as the weather-inject pass needs.
+  IrNodeBuilder(IrGraph& graph, bool weatherNodes) : graph_(graph), weatherNodes_(weatherNodes) {}
 
   // A node of `op` with the given inputs; unspecified ports take their defaults.
   // Throws std::logic_error on a misuse (unknown op or port, missing required input):
@@ -26,6 +28,7 @@ class IrNodeBuilder {
 
  private:
   IrGraph& graph_;
+  bool weatherNodes_;
 };
 
 }  // namespace wg

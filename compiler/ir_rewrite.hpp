@@ -14,7 +14,7 @@ template <typename F>
 void forEachOperand(IrGraph& graph, F&& f) {
   for (auto& node : graph.nodes)
     for (auto& operand : node.inputs) f(operand);
-  for (auto& operand : graph.outputs) f(operand);
+  graph.forEachRoot(f);
 }
 
 // Keeps the nodes listed in `order` (old indices, already topologically sorted),

@@ -63,7 +63,8 @@ float wg_wet_roughness(float r, float p) { return wg_clamp01(r - p); }  // eq. 3
 // Eq. 3.18: a panning ripple added to the tangent-space normal while it rains.
 vec3 wg_wet_normal(vec3 n, vec2 xz, float p, float precipitation, float t) {
   float rain = smoothstep(0.0, 0.1, precipitation);
-  if (p <= 0.0 || rain <= 0.0) return n;
+  if (rain <= 0.0) return n;  // uniform: no rain, no flowing water
+  if (p <= 0.0) return n;
   vec2 uv = xz * 2.0 + vec2(0.5, 0.01) * p * t;
   float noise = wg_value_noise(uv);
   vec2 pan = vec2(noise - 0.5, fract(noise * 7.0) - 0.5);
@@ -102,6 +103,7 @@ float wg_shaped_prediction(vec3 n, vec3 nd, vec3 p, float terrain, vec4 w, vec4 
 // Each effect returns at once while its level is 0: one uniform branch.
 float wg_snow_coverage(vec3 n, vec3 nd, vec3 p, vec3 diffuse, float terrain, float exposure, vec4 w, vec4 shape,
                        vec4 terms) {
+  if (frame_snowLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
   if (level <= 0.0) return 0.0;
   float fp = wg_shaped_prediction(n, nd, p, terrain, w, shape, terms);
@@ -109,6 +111,7 @@ float wg_snow_coverage(vec3 n, vec3 nd, vec3 p, vec3 diffuse, float terrain, flo
   return wg_transition(noise, fp * level);
 }
 vec3 wg_snow_offset(vec3 n, vec3 p, float exposure, vec4 w, vec4 shape, vec4 terms, float maxSnowHeight) {
+  if (frame_snowLevel <= 0.0) return vec3(0.0);  // uniform: the whole effect is skipped
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
   if (level <= 0.0) return vec3(0.0);
   float fp = wg_shaped_prediction(n, n, p, 0.0, w, shape, terms);
@@ -125,6 +128,7 @@ float wg_moss_coverage(vec3 n, vec3 p, vec3 diffuse, vec4 w, vec4 shape) {
   return wg_transition(noise, predicted * level);
 }
 float wg_puddle_coverage(vec3 n, vec3 p, float exposure) {
+  if (frame_puddleLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
   float level = wg_clamp01(frame_puddleLevel) * wg_clamp01(exposure);
   if (level <= 0.0) return 0.0;
   return wg_puddle_mask(n, wg_value_noise(vec2(p.x * 0.35, p.z * 0.35)), level);
@@ -134,6 +138,7 @@ float wg_frost_coverage(float frostMap) {
   return wg_frost_mask(frostMap, frame_frostLevel);
 }
 float wg_hoarfrost_coverage(vec3 p, float exposure) {
+  if (frame_frostLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
   float level = wg_clamp01(frame_frostLevel) * wg_clamp01(exposure);
   if (level <= 0.0) return 0.0;
   return wg_transition(wg_coverage_noise(p), level);
@@ -209,7 +214,8 @@ float wg_wet_roughness(float r, float p) { return wg_clamp01(r - p); }  // eq. 3
 // Eq. 3.18: a panning ripple added to the tangent-space normal while it rains.
 float3 wg_wet_normal(float3 n, float2 xz, float p, float precipitation, float t) {
   float rain = smoothstep(0.0, 0.1, precipitation);
-  if (p <= 0.0 || rain <= 0.0) return n;
+  if (rain <= 0.0) return n;  // uniform: no rain, no flowing water
+  if (p <= 0.0) return n;
   float2 uv = xz * 2.0 + float2(0.5, 0.01) * p * t;
   float noise = wg_value_noise(uv);
   float2 pan = float2(noise - 0.5, frac(noise * 7.0) - 0.5);
@@ -248,6 +254,7 @@ float wg_shaped_prediction(float3 n, float3 nd, float3 p, float terrain, float4 
 // Each effect returns at once while its level is 0: one uniform branch.
 float wg_snow_coverage(float3 n, float3 nd, float3 p, float3 diffuse, float terrain, float exposure, float4 w, float4 shape,
                        float4 terms) {
+  if (frame_snowLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
   if (level <= 0.0) return 0.0;
   float fp = wg_shaped_prediction(n, nd, p, terrain, w, shape, terms);
@@ -255,6 +262,7 @@ float wg_snow_coverage(float3 n, float3 nd, float3 p, float3 diffuse, float terr
   return wg_transition(noise, fp * level);
 }
 float3 wg_snow_offset(float3 n, float3 p, float exposure, float4 w, float4 shape, float4 terms, float maxSnowHeight) {
+  if (frame_snowLevel <= 0.0) return (float3)0.0;  // uniform: the whole effect is skipped
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
   if (level <= 0.0) return (float3)0.0;
   float fp = wg_shaped_prediction(n, n, p, 0.0, w, shape, terms);
@@ -271,6 +279,7 @@ float wg_moss_coverage(float3 n, float3 p, float3 diffuse, float4 w, float4 shap
   return wg_transition(noise, predicted * level);
 }
 float wg_puddle_coverage(float3 n, float3 p, float exposure) {
+  if (frame_puddleLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
   float level = wg_clamp01(frame_puddleLevel) * wg_clamp01(exposure);
   if (level <= 0.0) return 0.0;
   return wg_puddle_mask(n, wg_value_noise(float2(p.x * 0.35, p.z * 0.35)), level);
@@ -280,6 +289,7 @@ float wg_frost_coverage(float frostMap) {
   return wg_frost_mask(frostMap, frame_frostLevel);
 }
 float wg_hoarfrost_coverage(float3 p, float exposure) {
+  if (frame_frostLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
   float level = wg_clamp01(frame_frostLevel) * wg_clamp01(exposure);
   if (level <= 0.0) return 0.0;
   return wg_transition(wg_coverage_noise(p), level);

@@ -259,8 +259,12 @@ struct PassSetup {
 RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   ctx_.clearValidationMessages();
   // Materials and meshes for this request's preset and backend.
+  const WeatherLevels& levels = request.weather.levels;
+  bool neutral = levels.snow <= 0.f && levels.wetness <= 0.f && levels.moss <= 0.f && levels.frost <= 0.f && levels.puddles <= 0.f;
+  std::optional<std::string> preset = request.weatherPreset;
+  if (!preset && neutral && request.unweatheredVariantWhenNeutral) preset = "none";
   std::vector<MaterialResources*> mats;
-  for (const auto& o : scene_.objects) mats.push_back(&material(o.graph, request.weatherPreset));
+  for (const auto& o : scene_.objects) mats.push_back(&material(o.graph, preset));
   if (objects_.empty()) {
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       auto& src = scene_.objects[i];

@@ -24,6 +24,10 @@ struct RenderRequest {
   // Draw only this object (the others still cast shadows and shelter from the sky);
   // "" draws all. Lets tests know which material covers a pixel.
   std::string onlyObject;
+  // While every weather level is 0 the weathered and unweathered shaders give the same
+  // image; bind the unweathered variant then. GPUs skip the weather with one uniform
+  // branch anyway, but lavapipe runs both sides of every branch under a mask.
+  bool unweatheredVariantWhenNeutral = true;
 };
 
 struct RenderedFrame {

@@ -66,7 +66,7 @@ void simplifyAlgebra(IrGraph& graph) {
       replaced[i] = *result;  // a narrower operand would change the users' types: keep the node
     }
   }
-  for (auto& operand : graph.outputs) substitute(operand);
+  graph.forEachRoot(substitute);
 }
 
 }  // namespace wg

@@ -40,10 +40,14 @@ void eliminateCommonSubexpressions(IrGraph& graph) {
     key += '|' + node.text + '|' + std::to_string(node.parameter) + '|' + std::to_string(static_cast<int>(node.valueType)) + '|';
     for (const auto& operand : node.inputs) appendOperandKey(key, operand);
     auto [it, inserted] = seen.emplace(key, i);
+    // A weather node may reuse an unguarded one (computed anyway), never the reverse:
+    // the weather nodes only run inside the weather branch.
+    if (!inserted && graph.nodes[it->second].weather && !node.weather) it->second = i;
     canonical[i] = it->second;
   }
-  for (auto& operand : graph.outputs)
+  graph.forEachRoot([&](Operand& operand) {
     if (operand.kind == Operand::Kind::Node) operand.node = canonical[operand.node];
+  });
   // The merged duplicates are now unreferenced; dead-node-elim removes them.
 }
 

@@ -35,7 +35,7 @@ void foldConstants(IrGraph& graph) {
     Value result = node.op->eval(inputs.data(), context);
     if (result.allFinite()) folded[i] = result;
   }
-  for (auto& operand : graph.outputs) substitute(operand);
+  graph.forEachRoot(substitute);
 }
 
 }  // namespace wg

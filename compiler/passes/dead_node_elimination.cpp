@@ -7,8 +7,9 @@ namespace wg {
 
 void eliminateDeadNodes(IrGraph& graph) {
   std::vector<bool> live(graph.nodes.size(), false);
-  for (const auto& operand : graph.outputs)
+  graph.forEachRoot([&](const Operand& operand) {
     if (operand.kind == Operand::Kind::Node) live[operand.node] = true;
+  });
   for (std::size_t i = graph.nodes.size(); i-- > 0;) {
     if (!live[i]) continue;
     for (const auto& operand : graph.nodes[i].inputs)

@@ -11,7 +11,9 @@ void orderTopologically(IrGraph& graph) {
   std::vector<std::uint32_t> order;
   order.reserve(graph.nodes.size());
   std::vector<std::pair<std::uint32_t, std::size_t>> stack;
-  for (const auto& root : graph.outputs) {
+  std::vector<Operand> roots;
+  graph.forEachRoot([&](const Operand& o) { roots.push_back(o); });
+  for (const auto& root : roots) {
     if (root.kind != Operand::Kind::Node || visited[root.node]) continue;
     visited[root.node] = true;
     stack.push_back({root.node, 0});

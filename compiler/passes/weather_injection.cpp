@@ -57,7 +57,7 @@ std::vector<int> addParameters(IrGraph& g) {
 
 class WeatherInjector {
  public:
-  explicit WeatherInjector(IrGraph& g) : g_(g), b_(g), cfg_(g.weather) {}
+  explicit WeatherInjector(IrGraph& g) : g_(g), b_(g, /*weatherNodes=*/true), cfg_(g.weather) {}
 
   void run() {
     const WeatherEffects& e = cfg_.effects;
@@ -212,6 +212,8 @@ class WeatherInjector {
 
 void injectWeather(IrGraph& graph) {
   if (!graph.weather.active()) return;
+  graph.unweathered = graph.outputs;
+  graph.weatherGuarded = true;
   WeatherInjector(graph).run();
 }
 
