@@ -53,7 +53,7 @@ class GlslSyntax final : public ShaderSyntax {
     // The frame block is the same for every material: format it once.
     static const std::string kFrameBlockText = [&] {
       std::string text;
-      appendBlock(text, mi.frame);
+      appendBlock(text, *mi.frame);
       return text;
     }();
     out += kFrameBlockText;

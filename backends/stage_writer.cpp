@@ -232,6 +232,7 @@ class StageWriter {
 
 std::vector<std::string> nameNodes(const IrGraph& graph, const MaterialInterface& interface) {
   IdentifierScope scope = interface.globals;
+  scope.expectMore(graph.nodes.size() + std::size(kFrameLocals));
   for (auto name : kFrameLocals) scope.reserve(name);
   std::vector<std::string> names;
   names.reserve(graph.nodes.size());

@@ -44,7 +44,7 @@ constexpr std::array<FrameField, 26> kFrameFields = {{
 UniformBlock makeFrameBlock();
 }  // namespace
 
-UniformBlock frameBlock() {
+const UniformBlock& frameBlock() {
   static const UniformBlock kBlock = makeFrameBlock();  // immutable; shared by every compile
   return kBlock;
 }

@@ -17,6 +17,8 @@ class IdentifierScope {
   std::string make(std::string_view hint);
   // Marks a fixed internal name as taken (it must already be valid).
   void reserve(std::string_view name);
+  // Room for `count` more names without rehashing (large graphs name every node).
+  void expectMore(std::size_t count) { used_.reserve(used_.size() + count); }
 
   static std::string sanitize(std::string_view hint);
   static bool isReserved(std::string_view name);

@@ -28,7 +28,6 @@ Operand IrNodeBuilder::add(std::string_view opName, std::initializer_list<std::p
   if (!op) throw std::logic_error("IrNodeBuilder: unknown op " + std::string(opName));
   IrNode node;
   node.op = op;
-  node.debugName = "weather." + std::string(opName);
   node.weather = weatherNodes_;
   for (const auto& [port, operand] : inputs)
     if (!op->findInput(port)) throw std::logic_error("IrNodeBuilder: " + std::string(opName) + " has no port " + std::string(port));
@@ -62,7 +61,6 @@ Operand IrNodeBuilder::parameter(int index) {
   node.op = findOp("parameter");
   node.parameter = index;
   node.valueType = graph_.parameters[static_cast<std::size_t>(index)].type;
-  node.debugName = "weather.parameter";
   node.weather = weatherNodes_;
   graph_.nodes.push_back(std::move(node));
   auto at = static_cast<std::uint32_t>(graph_.nodes.size() - 1);

@@ -261,6 +261,34 @@ std::string plainParseMessage(std::string what) {
   return what;
 }
 
+// nlohmann's own DOM builder, also hashing each object's keys: nlohmann keeps only the
+// last of two equal keys, silently. A hash match sends the text to the exact scanner,
+// which confirms and locates the duplicate, so a collision cannot cause a false error.
+class DuplicateAwareBuilder : public nlohmann::detail::json_sax_dom_parser<nlohmann::json> {
+ public:
+  explicit DuplicateAwareBuilder(nlohmann::json& root) : json_sax_dom_parser(root, /*allow_exceptions=*/true) {}
+  bool start_object(std::size_t size) {
+    keys_.emplace_back();
+    return json_sax_dom_parser::start_object(size);
+  }
+  bool end_object() {
+    keys_.pop_back();
+    return json_sax_dom_parser::end_object();
+  }
+  bool key(std::string& value) {
+    auto& keys = keys_.back();
+    std::size_t hash = std::hash<std::string>{}(value);
+    if (std::find(keys.begin(), keys.end(), hash) != keys.end()) duplicate_ = true;
+    else keys.push_back(hash);
+    return json_sax_dom_parser::key(value);
+  }
+  bool sawDuplicateHash() const { return duplicate_; }
+
+ private:
+  std::vector<std::vector<std::size_t>> keys_;
+  bool duplicate_ = false;
+};
+
 }  // namespace
 
 JsonDocument::JsonDocument(std::string file, std::string text, nlohmann::json root)
@@ -308,27 +336,10 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
                        {"the JSON nesting depth", std::to_string(depth), std::to_string(limits.maxDepth)});
     return std::nullopt;
   }
-  // Duplicate keys are detected during the parse (nlohmann would silently keep the
-  // last); only when one is found does the text scanner run, to locate it.
-  std::vector<std::vector<std::string>> keysPerObject;
-  bool anyDuplicate = false;
-  nlohmann::json::parser_callback_t onEvent = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    using Event = nlohmann::json::parse_event_t;
-    if (event == Event::object_start) {
-      keysPerObject.emplace_back();
-    } else if (event == Event::object_end) {
-      keysPerObject.pop_back();
-    } else if (event == Event::key && !keysPerObject.empty()) {
-      auto& keys = keysPerObject.back();
-      const auto& key = parsed.get_ref<const std::string&>();
-      if (std::find(keys.begin(), keys.end(), key) != keys.end()) anyDuplicate = true;
-      else keys.push_back(key);
-    }
-    return true;
-  };
   nlohmann::json root;
+  DuplicateAwareBuilder builder(root);
   try {
-    root = nlohmann::json::parse(text, onEvent);
+    nlohmann::json::sax_parse(text, &builder);
   } catch (const nlohmann::json::parse_error& e) {
     auto [line, column] = lineColumnOfByte(text, e.byte > 0 ? e.byte - 1 : 0);
     diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column}, {plainParseMessage(e.what())});
@@ -346,7 +357,7 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
     diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {plainParseMessage(e.what())});
     return std::nullopt;
   }
-  if (!anyDuplicate) return JsonDocument(std::move(file), std::move(text), std::move(root));
+  if (!builder.sawDuplicateHash()) return JsonDocument(std::move(file), std::move(text), std::move(root));
   bool duplicate = false;
   TextScanner scanner{text};
   scanner.scan([](const std::string&, int, int) {}, [](const std::string&, int, int) {},

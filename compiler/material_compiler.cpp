@@ -53,7 +53,7 @@ std::string stageLabel(const CompiledStage& s) {
 // The SPIR-V must carry exactly the offsets the reflection publishes.
 std::string checkBlockOffsets(const SpirvWords& words, const MaterialInterface& mi) {
   for (const auto& reflected : reflectUniformBlocks(words)) {
-    const UniformBlock* block = reflected.set == mi.frame.set && reflected.binding == mi.frame.binding ? &mi.frame
+    const UniformBlock* block = reflected.set == mi.frame->set && reflected.binding == mi.frame->binding ? mi.frame
                                 : reflected.set == mi.material.set && reflected.binding == mi.material.binding
                                     ? &mi.material
                                     : nullptr;

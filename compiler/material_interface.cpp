@@ -50,9 +50,9 @@ void layoutStd140(UniformBlock& block) {
 
 MaterialInterface buildMaterialInterface(const IrGraph& graph) {
   MaterialInterface mi;
-  mi.frame = frameBlock();
-  for (const auto& m : mi.frame.members) mi.globals.reserve(m.identifier);
-  mi.globals.reserve(mi.frame.identifier);
+  mi.frame = &frameBlock();
+  for (const auto& m : mi.frame->members) mi.globals.reserve(m.identifier);
+  mi.globals.reserve(mi.frame->identifier);
 
   mi.material.name = "Material";
   mi.material.identifier = "MaterialBlock";

@@ -48,7 +48,7 @@ struct StageVariable {
 };
 
 struct MaterialInterface {
-  UniformBlock frame;
+  const UniformBlock* frame = nullptr;  // the shared frame block (frameBlock()); never copied
   UniformBlock material;  // empty members: the block is not emitted
   std::vector<TextureBinding> textures;
   // Shared weather maps (set 0) that some op of this material samples; their
@@ -65,6 +65,6 @@ void layoutStd140(UniformBlock& block);
 MaterialInterface buildMaterialInterface(const IrGraph& graph);
 
 // The frame and weather block every material shares (set 0, binding 0).
-UniformBlock frameBlock();
+const UniformBlock& frameBlock();
 
 }  // namespace wg

@@ -98,7 +98,7 @@ std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& m
       {"weather", weatherJson(graph)},
       {"alphaTested", graph.alphaTested},
       {"alphaCutoff", graph.alphaCutoff},
-      {"blocks", Json::array({blockJson(mi.frame, nullptr), blockJson(mi.material, &graph)})},
+      {"blocks", Json::array({blockJson(*mi.frame, nullptr), blockJson(mi.material, &graph)})},
       {"textures", std::move(textures)},
       {"vertexInputs", stageVariablesJson(mi.vertexInputs)},
       {"varyings", stageVariablesJson(mi.varyings)},

@@ -1,9 +1,23 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and compile every bundled graph into out/.
+# The main job: set up, build, compile every bundled graph into out/materials, and
+# render the gallery into out/gallery (every scene, every weather stage, both backends).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/bootstrap.sh
 scripts/build.sh
-rm -rf out/materials
+rm -rf out/materials out/gallery
 build/weathergen compile graphs/*.json -o out/materials --target all
 echo "main: wrote $(ls out/materials | wc -l) files for $(ls graphs/*.json | wc -l) materials to out/materials"
+mkdir -p out/gallery
+for scene in valley rocks river road; do
+  for backend in glsl hlsl; do
+    build/weathergen render --scene "$scene" --backend "$backend" --timeline runtime/timelines/seasons.json \
+      --size 640x360 --frames "out/gallery/frames-$backend" -o "out/gallery/$scene-$backend.png"
+  done
+  # The weather's coverage terms for the same stages, as the AOVs show them.
+  for aov in snow wet moss ice puddle; do
+    build/weathergen render --scene "$scene" --aov "$aov" --timeline runtime/timelines/seasons.json \
+      --size 320x180 -o "out/gallery/$scene-$aov.png" -q
+  done
+done
+echo "main: gallery in out/gallery ($(ls out/gallery/*.png | wc -l) contact sheets and strips; start with out/gallery/valley-glsl.png)"
