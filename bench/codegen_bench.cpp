@@ -11,9 +11,10 @@ namespace {
 
 // The codegen target: load + validate + passes + GLSL and HLSL for both
 // stages; no glslang and no reflection JSON (BM_CompileNoSpirv adds that).
-void codegen(benchmark::State& state, const wg::bench::BundledGraph& graph, bool reflection) {
+void codegen(benchmark::State& state, const wg::bench::BundledGraph& graph, bool reflection, bool weather) {
   const std::string text = wg::bench::readText(graph.path);
-  const wg::CompileOptions options{.emitSpirv = false, .emitReflection = reflection};
+  wg::CompileOptions options{.emitSpirv = false, .emitReflection = reflection};
+  if (!weather) options.weatherPreset = "none";
   auto first = wg::compileMaterialText(graph.path, text, options);
   if (!first.material) {
     state.SkipWithError(("does not compile: " + graph.path).c_str());
@@ -36,8 +37,12 @@ void codegen(benchmark::State& state, const wg::bench::BundledGraph& graph, bool
 const bool registered = [] {
   for (const auto& graph : wg::bench::bundledGraphs())
   {
-    benchmark::RegisterBenchmark(("BM_Codegen/" + graph.stem).c_str(), codegen, graph, false)->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(("BM_CompileNoSpirv/" + graph.stem).c_str(), codegen, graph, true)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("BM_Codegen/" + graph.stem).c_str(), codegen, graph, false, true)->Unit(benchmark::kMicrosecond);
+    // The material alone: its weather preset replaced by "none".
+    benchmark::RegisterBenchmark(("BM_CodegenNoWeather/" + graph.stem).c_str(), codegen, graph, false, false)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("BM_CompileNoSpirv/" + graph.stem).c_str(), codegen, graph, true, true)
+        ->Unit(benchmark::kMicrosecond);
   }
   return true;
 }();
