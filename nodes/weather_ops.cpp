@@ -15,7 +15,6 @@ namespace wg {
 namespace {
 using namespace weather;
 
-glm::vec2 v2(const Value& v) { return {v.v[0], v.v[1]}; }
 glm::vec3 v3(const Value& v) { return {v.v[0], v.v[1], v.v[2]}; }
 glm::vec4 v4(const Value& v) { return {v.v[0], v.v[1], v.v[2], v.v[3]}; }
 Value out3(glm::vec3 v) { return Value::vec3(v.x, v.y, v.z); }

@@ -52,7 +52,7 @@ std::vector<TimelineFrame> renderTimeline(SceneRenderer& renderer, const Weather
     const auto& [first, last] = runs[r];
     TimelineFrame out;
     out.label = keys[first].label.empty() ? "stage " + std::to_string(r + 1) : keys[first].label;
-    char index[8];
+    char index[24];  // room for any size_t, so the format cannot truncate
     std::snprintf(index, sizeof index, "%02zu", r + 1);
     out.slug = std::string(index) + "-" + slugOf(out.label);
     double stageEnd = last > first ? keys[last].time : (r + 1 < runs.size() ? keys[runs[r + 1].first].time : end);

@@ -32,7 +32,7 @@ SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage langua
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
   shader.setEntryPoint("main");
-  auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl : 0));
+  auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? static_cast<int>(EShMsgReadHlsl) : 0));
   SpirvCompileResult result;
   if (!shader.parse(GetDefaultResources(), kGlslVersion, false, messages)) {
     result.log = shader.getInfoLog();

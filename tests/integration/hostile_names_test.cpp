@@ -70,10 +70,12 @@ TEST(HostileNames, CliOutputsPassIndependentValidators) {
   for (const auto& name : testing::listFiles(dir.path() / "out")) {
     auto file = testing::shellQuote((dir.path() / "out" / name).string());
     std::string stage = name.find(".vert.") != std::string::npos ? "vert" : "frag";
-    if (name.ends_with(".glsl"))
+    if (name.ends_with(".glsl")) {
       EXPECT_EQ(testing::runCommand(testing::shellQuote(WG_GLSLANG_VALIDATOR) + " -V -S " + stage + " " + file + " -o /dev/null").exitCode, 0) << name;
-    if (name.ends_with(".hlsl"))
+    }
+    if (name.ends_with(".hlsl")) {
       EXPECT_EQ(testing::runCommand(testing::shellQuote(WG_GLSLANG_VALIDATOR) + " -V -D -e main -S " + stage + " " + file + " -o /dev/null").exitCode, 0) << name;
+    }
   }
 }
 
