@@ -109,7 +109,9 @@ TEST(TopoOrderPass, InputsPrecedeUsersAndOrderFollowsOutputs) {
   ASSERT_EQ(g.nodes.size(), 3u);
   for (std::uint32_t i = 0; i < g.nodes.size(); ++i)
     for (const auto& o : g.nodes[i].inputs) {
-      if (o.kind == Operand::Kind::Node) EXPECT_LT(o.node, i);
+      if (o.kind == Operand::Kind::Node) {
+        EXPECT_LT(o.node, i);
+      }
     }
   EXPECT_EQ(g.nodes[0].op->name, "time");
   EXPECT_EQ(g.nodes[2].op->name, "add");
