@@ -11,6 +11,7 @@
 #include "cli/atomic_file.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
 #include "compiler/literal.hpp"
 #include "compiler/material_compiler.hpp"
 #include "compiler/weather_config.hpp"
@@ -73,20 +74,6 @@ struct Options {
   std::optional<std::string> weatherPreset;
 };
 
-void printDiagnostics(const std::vector<Diagnostic>& list, bool json) {
-  if (json) {
-    std::fputs(formatDiagnosticsJson(list).c_str(), stderr);
-    return;
-  }
-  for (const auto& d : list) std::fputs(formatDiagnosticText(d).c_str(), stderr);
-}
-
-int usageError(const std::string& message, bool json) {
-  DiagnosticList list;
-  list.report(DiagCode::UsageError, {}, {message});
-  printDiagnostics(list.items(), json);
-  return kExitUsage;
-}
 
 // Returns the files a material writes, path -> bytes.
 std::map<std::string, std::string> outputsOf(const CompiledMaterial& m, const Options& o) {
@@ -164,11 +151,7 @@ int runCompileCommand(int argc, char** argv) {
     }
     if (auto v = cl.valueFor("--weather-preset", error); v || !error.empty()) {
       if (!v) return usageError(error, o.json);
-      if (!weatherPreset(*v)) {
-        std::string presets;
-        for (auto name : weatherPresetNames()) presets += (presets.empty() ? "" : ", ") + std::string(name);
-        return usageError("unknown weather preset '" + quoteUserText(*v) + "' (presets: " + presets + ")", o.json);
-      }
+      if (std::string e = checkWeatherPresetName(*v); !e.empty()) return usageError(e, o.json);
       o.weatherPreset = *v;
       continue;
     }

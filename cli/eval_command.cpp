@@ -11,6 +11,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
 #include "cli/eval_inputs.hpp"
 #include "compiler/content_hash.hpp"
 #include "compiler/graph_loader.hpp"
@@ -55,20 +56,6 @@ struct Options {
   bool json = false;
 };
 
-void printDiagnostics(const std::vector<Diagnostic>& list, bool json) {
-  if (json) {
-    std::fputs(formatDiagnosticsJson(list).c_str(), stderr);
-    return;
-  }
-  for (const auto& d : list) std::fputs(formatDiagnosticText(d).c_str(), stderr);
-}
-
-int usageError(const std::string& message, bool json) {
-  DiagnosticList list;
-  list.report(DiagCode::UsageError, {}, {message});
-  printDiagnostics(list.items(), json);
-  return kExitUsage;
-}
 
 // A float as the JSON number of its shortest round-trip text, so 0.3f prints as 0.3
 // rather than as the double 0.30000001192092896.
@@ -160,11 +147,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
     if (matched) continue;
     if (auto v = cl.valueFor("--weather-preset", error); v || !error.empty()) {
       if (!v) return usageError(error, o.json);
-      if (!weatherPreset(*v)) {
-        std::string presets;
-        for (auto name : weatherPresetNames()) presets += (presets.empty() ? "" : ", ") + std::string(name);
-        return usageError("unknown weather preset '" + quoteUserText(*v) + "' (presets: " + presets + ")", o.json);
-      }
+      if (std::string e = checkWeatherPresetName(*v); !e.empty()) return usageError(e, o.json);
       o.weatherPreset = *v;
       continue;
     }

@@ -11,6 +11,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
 #include "cli/eval_inputs.hpp"
 #include "compiler/debug_views.hpp"
 #include "compiler/literal.hpp"
@@ -51,10 +52,6 @@ Options:
   -q, --quiet               no progress output
 )";
 
-int usageError(const std::string& message) {
-  std::fprintf(stderr, "weathergen: error WG9001: %s\n  hint: run 'weathergen render --help' for usage\n", message.c_str());
-  return kExitUsage;
-}
 
 WeatherState weatherFromFrame(const FrameState& f) {
   WeatherState s;
@@ -106,7 +103,7 @@ int runRenderCommand(int argc, char** argv) {
       continue;
     if (value("--weather", v)) { weatherLists.push_back(v); continue; }
     if (value("--weather-preset", v)) {
-      if (!weatherPreset(v)) return usageError("unknown weather preset '" + quoteUserText(v) + "'");
+      if (std::string e = checkWeatherPresetName(v); !e.empty()) return usageError(e);
       preset = v;
       continue;
     }

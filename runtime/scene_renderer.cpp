@@ -32,7 +32,6 @@ struct SceneRenderer::Object {
   const scene::SceneObject* source = nullptr;
   vk::Buffer vertices, indices;
   std::uint32_t indexCount = 0;
-  std::uint32_t stride = 0;
 };
 
 SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory)
@@ -67,10 +66,6 @@ SceneRenderer::~SceneRenderer() {
   vkDestroySampler(d, nearestClamp_, nullptr);
   vkDestroyRenderPass(d, colourPass_, nullptr);
   vkDestroyRenderPass(d, depthPass_, nullptr);
-}
-
-VkSampler SceneRenderer::mapSampler(std::string_view mapName) const {
-  return mapName == "sunShadow" ? nearestClamp_ : linearClamp_;
 }
 
 void SceneRenderer::createPasses() {
@@ -212,48 +207,90 @@ struct DescriptorWriter {
 
   void buffer(VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize range) {
     buffers.push_back(std::make_unique<VkDescriptorBufferInfo>(VkDescriptorBufferInfo{buffer, 0, range}));
+    add(set, binding, type).pBufferInfo = buffers.back().get();
+  }
+  void image(VkDescriptorSet set, std::uint32_t binding, VkImageView view) {
+    images.push_back(std::make_unique<VkDescriptorImageInfo>(
+        VkDescriptorImageInfo{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}));
+    add(set, binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE).pImageInfo = images.back().get();
+  }
+  void sampler(VkDescriptorSet set, std::uint32_t binding, VkSampler sampler) {
+    images.push_back(std::make_unique<VkDescriptorImageInfo>(VkDescriptorImageInfo{sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED}));
+    add(set, binding, VK_DESCRIPTOR_TYPE_SAMPLER).pImageInfo = images.back().get();
+  }
+
+ private:
+  VkWriteDescriptorSet& add(VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set;
     w.dstBinding = binding;
     w.descriptorCount = 1;
     w.descriptorType = type;
-    w.pBufferInfo = buffers.back().get();
     writes.push_back(w);
-  }
-  void image(VkDescriptorSet set, std::uint32_t binding, VkImageView view) {
-    images.push_back(std::make_unique<VkDescriptorImageInfo>(
-        VkDescriptorImageInfo{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}));
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set;
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-    w.pImageInfo = images.back().get();
-    writes.push_back(w);
-  }
-  void sampler(VkDescriptorSet set, std::uint32_t binding, VkSampler sampler) {
-    images.push_back(std::make_unique<VkDescriptorImageInfo>(VkDescriptorImageInfo{sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED}));
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set;
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_SAMPLER;
-    w.pImageInfo = images.back().get();
-    writes.push_back(w);
+    return writes.back();
   }
 };
 
-}  // namespace
+// The images a pass binds for the shared maps.
+struct SharedMaps {
+  VkImageView terrainHeight, skyExposure, sunShadow;
+  VkSampler linear, nearest;  // depth formats need not be filterable; PCF filters
+};
 
-namespace {
+// Allocates one object's set 0 (frame slice and shared maps) and set 1 (material)
+// and queues their writes.
+std::array<VkDescriptorSet, 2> allocateMaterialSets(VkDevice device, VkDescriptorPool pool, const MaterialResources& material,
+                                                    const vk::MaterialPipeline& pipeline, DescriptorWriter& writer,
+                                                    VkBuffer frameBuffer, VkDeviceSize frameSize, const SharedMaps& maps) {
+  VkDescriptorSetLayout layouts[2] = {pipeline.setLayout(0), pipeline.setLayout(1)};
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = pool;
+  alloc.descriptorSetCount = 2;
+  alloc.pSetLayouts = layouts;
+  std::array<VkDescriptorSet, 2> sets{};
+  vk::check(vkAllocateDescriptorSets(device, &alloc, sets.data()), "vkAllocateDescriptorSets");
+  const auto& refl = material.reflection();
+  writer.buffer(sets[0], refl.frame.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBuffer, frameSize);
+  for (const auto& map : refl.weatherMaps) {
+    bool shadow = map.name == "sunShadow";
+    writer.image(sets[0], map.binding, map.name == "terrainHeight" ? maps.terrainHeight : shadow ? maps.sunShadow : maps.skyExposure);
+    writer.sampler(sets[0], map.samplerBinding, shadow ? maps.nearest : maps.linear);
+  }
+  if (const vk::Buffer* params = material.parameterBuffer())
+    writer.buffer(sets[1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);
+  for (const auto& t : material.textures()) {
+    writer.image(sets[1], t.reflected->binding, t.image.view());
+    writer.sampler(sets[1], t.reflected->samplerBinding, t.sampler);
+  }
+  return sets;
+}
+
+void drawIndexed(VkCommandBuffer cmd, const vk::MaterialPipeline& pipeline, VkPipeline handle,
+                 const std::array<VkDescriptorSet, 2>& sets, std::uint32_t frameOffset, VkBuffer vertices, VkBuffer indices,
+                 std::uint32_t indexCount) {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, handle);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 2, sets.data(), 1, &frameOffset);
+  VkDeviceSize zero = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &zero);
+  vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
+  vkCmdDrawIndexed(cmd, indexCount, 1, 0, 0, 0);
+}
+
+void setViewport(VkCommandBuffer cmd, std::uint32_t w, std::uint32_t h) {
+  VkViewport viewport{0.f, 0.f, float(w), float(h), 0.f, 1.f};
+  VkRect2D scissor{{0, 0}, {w, h}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
 // What one depth or colour pass draws with.
 struct PassSetup {
   int kind;
   glm::mat4 viewProjection;
   glm::vec3 eye;
   VkImageView exposureView, shadowView;
-  bool onlySkyOccluders;
 };
+
 }  // namespace
 
 RenderedFrame SceneRenderer::render(const RenderRequest& request) {
@@ -272,7 +309,6 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
       obj->source = &src;
       auto layout = vk::vertexLayoutFrom(mats[i]->reflection());
       auto packed = packVertices(src.mesh, layout);
-      obj->stride = layout.stride;
       obj->vertices = vk::Buffer(ctx_, packed.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
       obj->vertices.write(packed.data(), packed.size() * sizeof(float));
       obj->indices = vk::Buffer(ctx_, src.mesh.indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
@@ -296,9 +332,9 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   for (const auto& c : scene_.cameras)
     if (c.name == request.camera) camera = &c;
   std::vector<PassSetup> passes;
-  if (request.shadows) passes.push_back({PassKind::Shadow, light, camera->eye, exposureMap_.view(), placeholderShadow_.view(), false});
+  if (request.shadows) passes.push_back({PassKind::Shadow, light, camera->eye, exposureMap_.view(), placeholderShadow_.view()});
   passes.push_back({PassKind::Colour, viewProjection(request.camera, request.width, request.height), camera->eye,
-                    exposureMap_.view(), request.shadows ? shadowMap_.view() : placeholderShadow_.view(), false});
+                    exposureMap_.view(), request.shadows ? shadowMap_.view() : placeholderShadow_.view()});
 
   RenderedFrame frame;
   frame.width = request.width;
@@ -371,29 +407,10 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   std::vector<std::array<VkDescriptorSet, 2>> sets(passes.size() * objects_.size());
   for (std::size_t p = 0; p < passes.size(); ++p)
     for (std::size_t i = 0; i < objects_.size(); ++i) {
-      auto& pipeline = mats[i]->pipeline(request.backend, colourPass_, depthPass_);
-      VkDescriptorSetLayout layouts[2] = {pipeline.setLayout(0), pipeline.setLayout(1)};
-      VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-      alloc.descriptorPool = pool;
-      alloc.descriptorSetCount = 2;
-      alloc.pSetLayouts = layouts;
-      auto& pair = sets[p * objects_.size() + i];
-      vk::check(vkAllocateDescriptorSets(ctx_.device(), &alloc, pair.data()), "vkAllocateDescriptorSets");
-      const auto& refl = mats[i]->reflection();
-      writer.buffer(pair[0], refl.frame.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBuffer.handle(), frameBlock.size);
-      for (const auto& map : refl.weatherMaps) {
-        VkImageView view = map.name == "terrainHeight" ? terrainHeight_.view()
-                           : map.name == "skyExposure" ? passes[p].exposureView
-                                                       : passes[p].shadowView;
-        writer.image(pair[0], map.binding, view);
-        writer.sampler(pair[0], map.samplerBinding, mapSampler(map.name));
-      }
-      if (const vk::Buffer* params = mats[i]->parameterBuffer())
-        writer.buffer(pair[1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);
-      for (const auto& t : mats[i]->textures()) {
-        writer.image(pair[1], t.reflected->binding, t.image.view());
-        writer.sampler(pair[1], t.reflected->samplerBinding, t.sampler);
-      }
+      SharedMaps maps{terrainHeight_.view(), passes[p].exposureView, passes[p].shadowView, linearClamp_, nearestClamp_};
+      sets[p * objects_.size() + i] =
+          allocateMaterialSets(ctx_.device(), pool, *mats[i], mats[i]->pipeline(request.backend, colourPass_, depthPass_),
+                               writer, frameBuffer.handle(), frameBlock.size, maps);
     }
   vkUpdateDescriptorSets(ctx_.device(), static_cast<std::uint32_t>(writer.writes.size()), writer.writes.data(), 0, nullptr);
 
@@ -417,23 +434,14 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
       begin.pClearValues = colourPass ? clears : &clears[1];
       if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
       vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-      VkViewport viewport{0.f, 0.f, float(w), float(h), 0.f, 1.f};
-      VkRect2D scissor{{0, 0}, {w, h}};
-      vkCmdSetViewport(cmd, 0, 1, &viewport);
-      vkCmdSetScissor(cmd, 0, 1, &scissor);
+      setViewport(cmd, w, h);
       for (std::size_t i = 0; i < objects_.size(); ++i) {
         if (!colourPass && !objects_[i]->source->castsShadow) continue;
         if (colourPass && !request.onlyObject.empty() && objects_[i]->source->name != request.onlyObject) continue;
         auto& pipeline = mats[i]->pipeline(request.backend, colourPass_, depthPass_);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, colourPass ? pipeline.colourPipeline() : pipeline.depthPipeline());
-        auto offset = static_cast<std::uint32_t>(slice * (p * objects_.size() + i));
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 2,
-                                sets[p * objects_.size() + i].data(), 1, &offset);
-        VkDeviceSize zero = 0;
-        VkBuffer vb = objects_[i]->vertices.handle();
-        vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &zero);
-        vkCmdBindIndexBuffer(cmd, objects_[i]->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cmd, objects_[i]->indexCount, 1, 0, 0, 0);
+        drawIndexed(cmd, pipeline, colourPass ? pipeline.colourPipeline() : pipeline.depthPipeline(), sets[p * objects_.size() + i],
+                    static_cast<std::uint32_t>(slice * (p * objects_.size() + i)), objects_[i]->vertices.handle(),
+                    objects_[i]->indices.handle(), objects_[i]->indexCount);
       }
       vkCmdEndRenderPass(cmd);
       if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
@@ -516,27 +524,9 @@ void SceneRenderer::buildExposureMap() {
     const auto& indices = scene_.objects[i].mesh.indices;
     indexBuffers.emplace_back(ctx_, indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     indexBuffers.back().write(indices.data(), indices.size() * sizeof(std::uint32_t));
-    auto& pipeline = mats[i]->pipeline(ShaderLanguage::Glsl, colourPass_, depthPass_);
-    VkDescriptorSetLayout layouts[2] = {pipeline.setLayout(0), pipeline.setLayout(1)};
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = pool;
-    alloc.descriptorSetCount = 2;
-    alloc.pSetLayouts = layouts;
-    vk::check(vkAllocateDescriptorSets(ctx_.device(), &alloc, sets[k].data()), "vkAllocateDescriptorSets");
-    const auto& refl = mats[i]->reflection();
-    writer.buffer(sets[k][0], refl.frame.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBuffer.handle(), frameBlock.size);
-    for (const auto& map : refl.weatherMaps) {
-      writer.image(sets[k][0], map.binding, map.name == "terrainHeight" ? terrainHeight_.view()
-                                            : map.name == "skyExposure"   ? placeholderHeight_.view()
-                                                                          : placeholderShadow_.view());
-      writer.sampler(sets[k][0], map.samplerBinding, mapSampler(map.name));
-    }
-    if (const vk::Buffer* params = mats[i]->parameterBuffer())
-      writer.buffer(sets[k][1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);
-    for (const auto& t : mats[i]->textures()) {
-      writer.image(sets[k][1], t.reflected->binding, t.image.view());
-      writer.sampler(sets[k][1], t.reflected->samplerBinding, t.sampler);
-    }
+    SharedMaps maps{terrainHeight_.view(), placeholderHeight_.view(), placeholderShadow_.view(), linearClamp_, nearestClamp_};
+    sets[k] = allocateMaterialSets(ctx_.device(), pool, *mats[i], mats[i]->pipeline(ShaderLanguage::Glsl, colourPass_, depthPass_),
+                                   writer, frameBuffer.handle(), frameBlock.size, maps);
   }
   vkUpdateDescriptorSets(ctx_.device(), static_cast<std::uint32_t>(writer.writes.size()), writer.writes.data(), 0, nullptr);
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -549,20 +539,11 @@ void SceneRenderer::buildExposureMap() {
     begin.clearValueCount = 1;
     begin.pClearValues = &clear;
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    VkViewport viewport{0.f, 0.f, float(kExposureResolution), float(kExposureResolution), 0.f, 1.f};
-    VkRect2D scissor{{0, 0}, {kExposureResolution, kExposureResolution}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    setViewport(cmd, kExposureResolution, kExposureResolution);
     for (std::size_t k = 0; k < drawn.size(); ++k) {
       auto& pipeline = mats[drawn[k]]->pipeline(ShaderLanguage::Glsl, colourPass_, depthPass_);
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.depthPipeline());
-      auto offset = static_cast<std::uint32_t>(slice * k);
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 2, sets[k].data(), 1, &offset);
-      VkDeviceSize zero = 0;
-      VkBuffer vb = vertexBuffers[k].handle();
-      vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &zero);
-      vkCmdBindIndexBuffer(cmd, indexBuffers[k].handle(), 0, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(scene_.objects[drawn[k]].mesh.indices.size()), 1, 0, 0, 0);
+      drawIndexed(cmd, pipeline, pipeline.depthPipeline(), sets[k], static_cast<std::uint32_t>(slice * k), vertexBuffers[k].handle(),
+                  indexBuffers[k].handle(), static_cast<std::uint32_t>(scene_.objects[drawn[k]].mesh.indices.size()));
     }
     vkCmdEndRenderPass(cmd);
   });

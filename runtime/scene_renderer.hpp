@@ -74,7 +74,6 @@ class SceneRenderer {
   vk::Image2D terrainHeight_, exposureMap_, shadowMap_, placeholderHeight_, placeholderShadow_;
   VkSampler linearClamp_ = VK_NULL_HANDLE;
   VkSampler nearestClamp_ = VK_NULL_HANDLE;  // depth formats need not be filterable; PCF filters
-  VkSampler mapSampler(std::string_view mapName) const;
   std::vector<float> exposureHeights_;
   glm::vec4 exposureRegion_{0.f};
   VkQueryPool timestamps_ = VK_NULL_HANDLE;
