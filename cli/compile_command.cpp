@@ -6,9 +6,13 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli/atomic_file.hpp"
+#include "compiler/batch_compile.hpp"
+#include "cli/depfile.hpp"
+#include "cli/progress_line.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
@@ -32,6 +36,10 @@ Options:
   --target LIST              comma-separated glsl, hlsl, spirv, or all (default: all)
   -O                         optimise SPIR-V with spirv-opt's performance passes
   -O0                        no SPIR-V optimisation (default)
+  -j N                       compile N graphs at once (default: one per core); the
+                             output is byte-identical whatever N is
+  --depfile FILE             write a Make-syntax depfile: each material's outputs
+                             depend on its graph and its image files
   --weather-preset NAME      weather preset for every graph, replacing the graph's own
                              (rock, terrain, foliage, river, road, none)
   --diagnostics text|json    diagnostic format on stderr (default: text)
@@ -72,6 +80,8 @@ struct Options {
   bool json = false;
   bool quiet = false;
   std::optional<std::string> weatherPreset;
+  int jobs = 0;  // 0: one per core
+  std::string depfile;
 };
 
 
@@ -155,6 +165,20 @@ int runCompileCommand(int argc, char** argv) {
       o.weatherPreset = *v;
       continue;
     }
+    if (auto v = cl.valueFor("-j", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
+      char* end = nullptr;
+      long jobs = std::strtol(v->c_str(), &end, 10);
+      constexpr long kMaxJobs = 256;
+      if (*end || jobs < 1 || jobs > kMaxJobs) return usageError("-j takes a job count from 1 to 256", o.json);
+      o.jobs = static_cast<int>(jobs);
+      continue;
+    }
+    if (auto v = cl.valueFor("--depfile", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
+      o.depfile = *v;
+      continue;
+    }
     if (auto v = cl.valueFor("--diagnostics", error); v || !error.empty()) {
       if (!v) return usageError(error, o.json);
       if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
@@ -176,8 +200,16 @@ int runCompileCommand(int argc, char** argv) {
   std::vector<CompiledMaterial> materials;
   std::map<std::string, std::string> stemOwner;
   bool internal = false;
-  for (const auto& graph : o.graphs) {
-    CompileResult r = compileMaterialFile(graph, options);
+  int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // Progress only for people: on a terminal, and not with -q or JSON diagnostics.
+  ProgressLine progress(o.graphs.size(), !o.quiet && !o.json && ::isatty(STDERR_FILENO));
+  std::vector<CompileResult> results = compileBatch(o.graphs, options, jobs, [&](std::size_t index, std::size_t done) {
+    progress.update(done, o.graphs[index]);
+  });
+  progress.finish();
+  for (std::size_t g = 0; g < o.graphs.size(); ++g) {
+    const std::string& graph = o.graphs[g];
+    CompileResult& r = results[g];
     for (auto& d : r.diagnostics.items()) {
       internal = internal || d.info().category == DiagCategory::Internal;
       diagnostics.push_back(std::move(d));
@@ -203,13 +235,24 @@ int runCompileCommand(int argc, char** argv) {
   std::filesystem::create_directories(o.outputDir, ec);
   if (ec) return usageError("cannot create output directory '" + quoteUserText(o.outputDir) + "'", o.json);
   std::size_t written = 0;
-  for (const auto& m : materials) {
+  std::vector<DepfileRule> rules;
+  for (std::size_t k = 0; k < materials.size(); ++k) {
+    const CompiledMaterial& m = materials[k];
+    DepfileRule rule;
     for (const auto& [path, bytes] : outputsOf(m, o)) {
       if (std::string werror = writeFileAtomically(path, bytes); !werror.empty())
         return usageError(werror, o.json);
+      rule.outputs.push_back(path);
       ++written;
     }
+    rule.inputs.push_back(stemOwner.at(m.fileStem));
+    for (const auto& t : m.ir.textures)
+      if (!t.file.empty()) rule.inputs.push_back(t.resolvedPath);
+    rules.push_back(std::move(rule));
   }
+  if (!o.depfile.empty())
+    if (std::string werror = writeFileAtomically(o.depfile, formatDepfile(rules)); !werror.empty())
+      return usageError(werror, o.json);
   if (!o.quiet && !o.json && ::isatty(STDOUT_FILENO))
     std::printf("compiled %zu material%s, wrote %zu files to %s\n", materials.size(), materials.size() == 1 ? "" : "s",
                 written, o.outputDir.c_str());

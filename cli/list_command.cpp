@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "compiler/diagnostic_codes.hpp"
+#include "compiler/diagnostics_doc.hpp"
 #include "compiler/pass_pipeline.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/texture_generators.hpp"
@@ -73,6 +74,10 @@ int runListCommand(int argc, char** argv) {
     return kExitOk;
   }
   if (command == "list-diagnostics") {
+    if (argc > 2 && std::string(argv[2]) == "--markdown") {
+      std::fputs(diagnosticsMarkdown().c_str(), stdout);
+      return kExitOk;
+    }
     for (const auto& d : allDiagnostics())
       std::printf("%s  %-24s %s\n", std::string(d.id).c_str(), std::string(d.name).c_str(),
                   std::string(d.messageTemplate).c_str());

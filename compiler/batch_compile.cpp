@@ -1,0 +1,36 @@
+#include "compiler/batch_compile.hpp"
+
+#include <atomic>
+#include <mutex>
+#include <thread>
+
+namespace wg {
+
+std::vector<CompileResult> compileBatch(const std::vector<std::string>& graphs, const CompileOptions& options, int jobs,
+                                        const std::function<void(std::size_t, std::size_t)>& onDone) {
+  std::vector<CompileResult> results(graphs.size());
+  std::mutex reportLock;
+  std::size_t completed = 0;
+  auto compileOne = [&](std::size_t i) {
+    results[i] = compileMaterialFile(graphs[i], options);
+    std::lock_guard<std::mutex> lock(reportLock);
+    ++completed;
+    if (onDone) onDone(i, completed);
+  };
+  if (graphs.empty()) return results;
+  // The first compile runs alone: glslang sets up process-wide tables on first use
+  // (Filament's matc does the same).
+  compileOne(0);
+  std::atomic<std::size_t> next{1};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < graphs.size(); i = next++) compileOne(i);
+  };
+  std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), graphs.size() - 1);
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  return results;
+}
+
+}  // namespace wg

@@ -1,0 +1,17 @@
+// Compiles many graphs across threads. Results come back in input order, so the
+// output is byte-identical whatever the job count.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "compiler/material_compiler.hpp"
+
+namespace wg {
+
+// onDone(index, completedCount) is called after each graph, from the worker that did
+// it, one call at a time.
+std::vector<CompileResult> compileBatch(const std::vector<std::string>& graphs, const CompileOptions& options, int jobs,
+                                        const std::function<void(std::size_t, std::size_t)>& onDone = {});
+
+}  // namespace wg
