@@ -73,6 +73,7 @@ class Builder {
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i) resolveOp(static_cast<std::uint32_t>(i));
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i) resolveInputs(static_cast<std::uint32_t>(i));
     if (!orderAndDetectCycles()) return std::nullopt;
+    if (!checkDepth()) return std::nullopt;
     ir_.name = graph_.name;
     ir_.parameters = graph_.parameters;
     ir_.textures = graph_.textures;
@@ -260,6 +261,23 @@ class Builder {
       }
     }
     return !cyclic;
+  }
+
+  // order_ lists dependencies first, so one pass finds every node's chain length.
+  bool checkDepth() {
+    std::vector<std::size_t> depth(pending_.size(), 0);
+    std::uint32_t deepest = 0;
+    for (std::uint32_t n : order_) {
+      std::size_t d = 0;
+      for (std::uint32_t dep : pending_[n].dependencies) d = std::max(d, depth[dep]);
+      depth[n] = d + 1;
+      if (depth[n] > depth[deepest]) deepest = n;
+    }
+    if (depth.empty() || depth[deepest] <= limits_.maxDepth) return true;
+    report(DiagCode::ResourceLimit, graph_.nodes[deepest].pointer,
+           {"the graph depth (the longest link chain, ending at node '" + quoteUserText(graph_.nodes[deepest].id) + "')",
+            std::to_string(depth[deepest]), std::to_string(limits_.maxDepth)});
+    return false;
   }
 
   void reportCycle(const std::vector<std::pair<std::uint32_t, std::size_t>>& stack, std::uint32_t start) {

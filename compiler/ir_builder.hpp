@@ -13,6 +13,9 @@ namespace wg {
 
 struct IrLimits {
   std::size_t maxNodes = 100000;  // ten times the largest synthetic benchmark graph
+  // Longest link chain from an input to an output. Each level is one SSA statement that
+  // drivers' shader compilers must schedule; hand-made materials stay under 100.
+  std::size_t maxDepth = 4096;
 };
 
 struct IrBuildOptions {
