@@ -29,15 +29,24 @@ constexpr const char* kCompileUsage = R"(Usage: weathergen compile GRAPH... -o D
 Writes, for each material NAME:
   NAME.vert.glsl NAME.frag.glsl NAME.vert.hlsl NAME.frag.hlsl      (--target glsl, hlsl)
   NAME.{glsl,hlsl}.{vert,frag}.spv and .spvasm                     (--target spirv)
+  NAME.vert.msl NAME.frag.msl                                      (--target msl)
+  NAME.vert.es.glsl NAME.frag.es.glsl                              (--target glsles)
   NAME.reflect.json                                                (always)
+  NAME.hpp                                                         (--emit-header)
 
 Options:
   -o DIR, --output DIR       output directory (created if missing)
-  --target LIST              comma-separated glsl, hlsl, spirv, or all (default: all)
+  --target LIST              comma-separated glsl, hlsl, spirv, msl, glsles, or all
+                             (default: all = glsl,hlsl,spirv). MSL 2.0 and GLSL ES 3.10
+                             are translated by SPIRV-Cross from the validated SPIR-V
+                             of the GLSL stages
   -O                         optimise SPIR-V with spirv-opt's performance passes
   -O0                        no SPIR-V optimisation (default)
   -j N                       compile N graphs at once (default: one per core); the
                              output is byte-identical whatever N is
+  --emit-header              write NAME.hpp: the material and frame uniform blocks as
+                             C++ structs laid out as std140, with a static_assert on
+                             every offset (docs/engine-api.md)
   --depfile FILE             write a Make-syntax depfile: each material's outputs
                              depend on its graph and its image files
   --weather-preset NAME      weather preset for every graph, replacing the graph's own
@@ -50,7 +59,7 @@ Outputs are written atomically and only when every graph compiles.
 )";
 
 struct Targets {
-  bool glsl = false, hlsl = false, spirv = false;
+  bool glsl = false, hlsl = false, spirv = false, msl = false, glslEs = false;
 };
 
 bool parseTargets(const std::string& list, Targets& t, std::string& error) {
@@ -61,9 +70,11 @@ bool parseTargets(const std::string& list, Targets& t, std::string& error) {
     if (item == "glsl") t.glsl = true;
     else if (item == "hlsl") t.hlsl = true;
     else if (item == "spirv") t.spirv = true;
+    else if (item == "msl") t.msl = true;
+    else if (item == "glsles") t.glslEs = true;
     else if (item == "all") t.glsl = t.hlsl = t.spirv = true;
     else {
-      error = "unknown target '" + quoteUserText(item) + "' (use glsl, hlsl, spirv or all)";
+      error = "unknown target '" + quoteUserText(item) + "' (use glsl, hlsl, spirv, msl, glsles or all)";
       return false;
     }
     if (comma == std::string::npos) break;
@@ -82,6 +93,7 @@ struct Options {
   std::optional<std::string> weatherPreset;
   int jobs = 0;  // 0: one per core
   std::string depfile;
+  bool emitHeader = false;
 };
 
 
@@ -99,8 +111,15 @@ std::map<std::string, std::string> outputsOf(const CompiledMaterial& m, const Op
           std::string(reinterpret_cast<const char*>(s.spirv.data()), s.spirv.size() * sizeof(std::uint32_t));
       files[(dir / (base + ".spvasm")).string()] = s.disassembly;
     }
+    // One translation per stage: the GLSL stages' SPIR-V (the HLSL stages' is equivalent).
+    const char* stageName = s.stage == ShaderStage::Vertex ? ".vert" : ".frag";
+    if (s.language == ShaderLanguage::Glsl && o.targets.msl)
+      files[(dir / (m.fileStem + stageName + ".msl")).string()] = s.msl;
+    if (s.language == ShaderLanguage::Glsl && o.targets.glslEs)
+      files[(dir / (m.fileStem + stageName + ".es.glsl")).string()] = s.glslEs;
   }
   files[(dir / (m.fileStem + ".reflect.json")).string()] = m.reflectionJson;
+  if (o.emitHeader) files[(dir / (m.fileStem + ".hpp")).string()] = m.cppHeader;
   return files;
 }
 
@@ -137,6 +156,10 @@ int runCompileCommand(int argc, char** argv) {
     }
     if (cl.flag("-O0")) {
       o.optimize = false;
+      continue;
+    }
+    if (cl.flag("--emit-header")) {
+      o.emitHeader = true;
       continue;
     }
     if (cl.flag("-q") || cl.flag("--quiet")) {
@@ -194,6 +217,9 @@ int runCompileCommand(int argc, char** argv) {
 
   CompileOptions options;
   options.emitSpirv = o.targets.spirv;
+  options.emitMsl = o.targets.msl;
+  options.emitGlslEs = o.targets.glslEs;
+  options.emitCppHeader = o.emitHeader;
   options.optimize = o.optimize;
   options.weatherPreset = o.weatherPreset;
   std::vector<Diagnostic> diagnostics;

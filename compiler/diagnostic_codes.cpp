@@ -60,6 +60,8 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
      "emitted {0} failed to compile: {1}", "this is a weathergen bug; please report it"},
     {InternalSpirvInvalid, "WG9902", E, Bug, "internal-spirv-invalid",
      "SPIR-V for {0} failed validation: {1}", "this is a weathergen bug; please report it"},
+    {InternalException, "WG9900", E, Bug, "internal-exception", "internal error: {0}",
+     "this is a weathergen bug; please report it with the graph that caused it"},
 }};
 
 constexpr bool tableMatchesEnum() {

@@ -44,6 +44,7 @@ enum class DiagCode : std::uint16_t {
   UsageError,
   InternalShaderError,
   InternalSpirvInvalid,
+  InternalException,
   kCount
 };
 

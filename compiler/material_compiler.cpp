@@ -1,7 +1,9 @@
 #include "compiler/material_compiler.hpp"
 
+#include "backends/spirv/cross_compile.hpp"
 #include "backends/stage_writer.hpp"
 #include "compiler/content_hash.hpp"
+#include "compiler/cpp_header.hpp"
 #include "compiler/graph_loader.hpp"
 #include "compiler/ir_builder.hpp"
 #include "compiler/pass_pipeline.hpp"
@@ -73,6 +75,29 @@ std::string checkBlockOffsets(const SpirvWords& words, const MaterialInterface& 
   return "";
 }
 
+// A SPIRV-Cross translation kept, or the reason there is none reported.
+bool keepTranslation(CrossResult cross, const char* target, const CompiledStage& stage, std::string& out,
+                     const std::string& file, DiagnosticList& diagnostics) {
+  if (!cross.ok) {
+    std::string why = std::string("SPIRV-Cross could not translate it to ") + target + ": " + cross.error;
+    diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage), why});
+    return false;
+  }
+  out = std::move(cross.source);
+  return true;
+}
+
+// From the unoptimised module: it has passed the block-offset check as well as spirv-val.
+bool crossCompileStage(CompiledStage& stage, const SpirvWords& words, const CompileOptions& options,
+                       const std::string& file, DiagnosticList& diagnostics) {
+  if (options.emitMsl && !keepTranslation(spirvToMsl(words, stage.stage), "MSL", stage, stage.msl, file, diagnostics))
+    return false;
+  if (options.emitGlslEs &&
+      !keepTranslation(spirvToGlslEs(words, stage.stage), "GLSL ES", stage, stage.glslEs, file, diagnostics))
+    return false;
+  return true;
+}
+
 bool compileStageToSpirv(CompiledStage& stage, const MaterialInterface& mi, const CompileOptions& options,
                          const std::string& file, DiagnosticList& diagnostics) {
   SpirvCompileResult compiled = compileToSpirv(stage.source, stage.language, stage.stage);
@@ -88,6 +113,8 @@ bool compileStageToSpirv(CompiledStage& stage, const MaterialInterface& mi, cons
     diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage), error});
     return false;
   }
+  if (!crossCompileStage(stage, compiled.words, options, file, diagnostics)) return false;
+  if (!options.emitSpirv) return true;
   stage.spirv = options.optimize ? optimizeSpirv(compiled.words) : std::move(compiled.words);
   if (options.optimize) {
     if (std::string error = validateSpirv(stage.spirv); !error.empty()) {
@@ -115,11 +142,13 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
     for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
       material.stages.push_back(
           {language, stage, writeStage(*ir, mi, syntaxFor(language), stage, material.contentHash, names), {}, {}});
-  if (options.emitSpirv)
+  // The SPIR-V translations need the module even when it is not wanted itself.
+  if (options.emitSpirv || options.emitMsl || options.emitGlslEs)
     for (auto& stage : material.stages)
       if (!compileStageToSpirv(stage, mi, options, file, result.diagnostics)) return result;
   if (options.emitReflection)
     material.reflectionJson = buildReflectionJson(*ir, mi, material.contentHash, material.fileStem);
+  if (options.emitCppHeader) material.cppHeader = emitCppHeader(*ir, mi, material.contentHash);
   material.ir = std::move(*ir);
   result.material = std::move(material);
   return result;

@@ -18,6 +18,10 @@ struct CompileOptions {
   bool optimize = false;  // spirv-opt performance passes (-O)
   std::optional<std::string> weatherPreset;  // replaces the graph's preset (--weather-preset)
   bool emitReflection = true;  // off for callers that only want shader text
+  bool emitCppHeader = false;  // C++ std140 structs of the uniform blocks (--emit-header)
+  // SPIRV-Cross translations of each stage's validated, pre-optimisation SPIR-V
+  // (--target msl / glsles); they need SPIR-V, which is then compiled even without emitSpirv.
+  bool emitMsl = false, emitGlslEs = false;
 };
 
 struct CompiledStage {
@@ -26,6 +30,7 @@ struct CompiledStage {
   std::string source;
   SpirvWords spirv;         // empty unless emitSpirv
   std::string disassembly;  // of spirv
+  std::string msl, glslEs;  // empty unless emitMsl / emitGlslEs
 };
 
 struct CompiledMaterial {
@@ -35,6 +40,7 @@ struct CompiledMaterial {
   IrGraph ir;               // after the pass pipeline
   std::vector<CompiledStage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag
   std::string reflectionJson;
+  std::string cppHeader;    // empty unless emitCppHeader
 
   const CompiledStage& stage(ShaderLanguage language, ShaderStage stage) const;
 };

@@ -133,7 +133,8 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
         continue;
       }
       for (const auto& [effect, on] : value.items()) {
-        auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [&](const EffectFlag& f) { return f.name == effect; });
+        const std::string& effectName = effect;  // clang 14 cannot capture structured bindings
+        auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [&](const EffectFlag& f) { return f.name == effectName; });
         std::string effectAt = appendPointer(at, effect);
         if (flag == kEffectFlags.end()) {
           std::vector<std::string_view> names;
@@ -170,7 +171,7 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
       continue;
     }
     auto setting = std::find_if(kNumberSettings.begin(), kNumberSettings.end(),
-                                [&](const NumberSetting& s) { return s.name == key; });
+                                [&keyName = key](const NumberSetting& s) { return s.name == keyName; });
     if (setting == kNumberSettings.end()) {
       std::vector<std::string_view> names = {"preset", "effects", "weights", "terms"};
       for (const auto& s : kNumberSettings) names.push_back(s.name);

@@ -9,18 +9,22 @@
 
 namespace wg {
 
-namespace {
-// glslang keeps process-global tables; initialise them exactly once.
-void initialiseGlslang() {
+// glslang keeps process-global tables; initialise them exactly once. After that,
+// glslang 12 keeps its pool allocators per thread, so compiles may run concurrently.
+bool initializeGlslangProcess() {
   static std::once_flag once;
-  std::call_once(once, [] { glslang::InitializeProcess(); });
+  static bool initialised = false;
+  std::call_once(once, [] { initialised = glslang::InitializeProcess(); });
+  return initialised;
 }
+
+namespace {
 constexpr int kGlslVersion = 450;
 constexpr int kClientInputVersion = 100;  // Vulkan client semantics version 1.00
 }  // namespace
 
 SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage language, ShaderStage stage) {
-  initialiseGlslang();
+  initializeGlslangProcess();
   EShLanguage glslangStage = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
   bool hlsl = language == ShaderLanguage::Hlsl;
   glslang::TShader shader(glslangStage);

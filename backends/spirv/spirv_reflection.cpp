@@ -1,5 +1,6 @@
-// Uniform-block reflection with SPIRV-Cross, used to check that the compiled modules
-// really have the offsets our reflection JSON publishes.
+// Reflection with SPIRV-Cross: uniform blocks, used to check that the compiled modules
+// really have the offsets our reflection JSON publishes, and resource counts, used to
+// check the MSL and GLSL ES translations.
 #include <spirv_cross/spirv_cross.hpp>
 
 #include "backends/spirv/spirv_toolchain.hpp"
@@ -19,6 +20,18 @@ std::vector<ReflectedBlock> reflectUniformBlocks(const SpirvWords& words) {
     blocks.push_back(std::move(block));
   }
   return blocks;
+}
+
+ReflectedResources reflectResources(const SpirvWords& words) {
+  spirv_cross::Compiler compiler(words);
+  auto count = [](const spirv_cross::ShaderResources& r) {
+    return ResourceCounts{r.uniform_buffers.size(), r.separate_images.size(), r.separate_samplers.size()};
+  };
+  ReflectedResources out;
+  out.entryPoint = compiler.get_entry_points_and_stages().front().name;
+  out.declared = count(compiler.get_shader_resources());
+  out.used = count(compiler.get_shader_resources(compiler.get_active_interface_variables()));
+  return out;
 }
 
 }  // namespace wg

@@ -18,6 +18,10 @@ struct SpirvCompileResult {
   std::string log;  // glslang's messages when !ok
 };
 
+// Initialises glslang's process-global tables; idempotent and thread-safe (once per
+// process). compileToSpirv calls it too; engines call it early to pay the cost up front.
+bool initializeGlslangProcess();
+
 // Thread-safe: glslang's process state is initialised once, on first use.
 SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage language, ShaderStage stage);
 // Empty when the module is valid in the Vulkan 1.1 environment.
@@ -36,6 +40,16 @@ struct ReflectedBlock {
 };
 // Uniform blocks of a module as SPIRV-Cross sees them.
 std::vector<ReflectedBlock> reflectUniformBlocks(const SpirvWords& words);
+// The entry point and its resources per slot kind, as SPIRV-Cross sees them: what the
+// module declares, and what the entry point uses (all that a translation declares).
+struct ResourceCounts {
+  std::size_t uniformBuffers = 0, separateImages = 0, separateSamplers = 0;
+};
+struct ReflectedResources {
+  std::string entryPoint;
+  ResourceCounts declared, used;
+};
+ReflectedResources reflectResources(const SpirvWords& words);
 // Instruction count (words are grouped into instructions), for cost reports.
 std::size_t countInstructions(const SpirvWords& words);
 

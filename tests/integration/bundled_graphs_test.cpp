@@ -63,6 +63,30 @@ TEST_P(BundledGraph, CompilesAndPassesIndependentValidators) {
   EXPECT_EQ(reflection["contentHash"].get<std::string>().size(), 16u);
 }
 
+// --target msl,glsles writes only the two translations per stage (and the reflection);
+// the ES sources compile as ES with the independent validator.
+TEST_P(BundledGraph, MslAndGlslEsTargetsWriteTranslations) {
+  TempDir dir("cross");
+  auto r = compile(GetParam(), dir.path(), "--target msl,glsles");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::string stem = GetParam().stem().string();
+  std::vector<std::string> expected = {stem + ".frag.es.glsl", stem + ".frag.msl", stem + ".reflect.json",
+                                       stem + ".vert.es.glsl", stem + ".vert.msl"};
+  auto files = listFiles(dir.path());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, expected);
+  for (const char* stage : {"vert", "frag"}) {
+    fs::path es = dir.path() / (stem + "." + stage + ".es.glsl");
+    EXPECT_TRUE(readFile(es).starts_with("#version 310 es"));
+    auto v = runCommand(shellQuote(WG_GLSLANG_VALIDATOR) + " -S " + stage + " " + shellQuote(es.string()));
+    EXPECT_EQ(v.exitCode, 0) << es << ":\n" << v.output;
+    std::string msl = readFile(dir.path() / (stem + "." + stage + ".msl"));
+    EXPECT_NE(msl.find("#include <metal_stdlib>"), std::string::npos);
+    EXPECT_NE(msl.find(std::string(stage) == "vert" ? "vertex " : "fragment "), std::string::npos);
+    EXPECT_NE(msl.find(" main0("), std::string::npos);
+  }
+}
+
 TEST_P(BundledGraph, OptimizedSpirvIsValid) {
   TempDir dir("optimized");
   auto r = compile(GetParam(), dir.path(), "--target spirv -O");

@@ -1,0 +1,64 @@
+// weathergen's engine API: compile a material graph held in memory to GLSL, HLSL,
+// SPIR-V and reflection JSON.
+//
+// Self-contained on purpose: only standard types cross this boundary, so engines never
+// see the compiler's internals and the API can stay stable while they change.
+//  - Diagnostics come back as values; no exception ever leaves compile().
+//  - No global state of weathergen's own; glslang's process tables are set up once by
+//    initialize(), after which compile() may run on any number of threads at once.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace weathergen {
+
+struct Diagnostic {
+  std::string code;      // stable id, e.g. "WG2001"; "WG9900" is an internal exception
+  std::string severity;  // "error" or "warning"
+  std::string file;      // the fileName given to compile()
+  std::string pointer;   // RFC 6901 JSON pointer into the graph, "" for the whole document
+  std::string message;
+  std::string hint;
+  int line = 0;  // 1-based; 0 when unknown
+  int column = 0;
+};
+
+struct Stage {
+  std::string language;  // "glsl" or "hlsl"
+  std::string stage;     // "vert" or "frag"
+  std::string source;
+  std::vector<std::uint32_t> spirv;  // empty unless Options::spirv
+};
+
+struct Options {
+  bool spirv = true;           // compile every stage to validated SPIR-V
+  bool optimize = false;       // spirv-opt's performance passes
+  std::string weatherPreset;   // "" keeps the graph's own preset
+  bool cppHeader = false;      // fill Result::cppHeader (std140 structs with static_asserts)
+};
+
+struct Result {
+  bool ok = false;  // true when the material compiled; diagnostics may still hold warnings
+  std::vector<Diagnostic> diagnostics;
+  std::string name;         // the material's declared name
+  std::string contentHash;  // identifies what the material is, not how its file spells it
+  std::string reflectionJson;
+  std::vector<Stage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag
+  std::string cppHeader;      // only with Options::cppHeader
+};
+
+// Sets up glslang's process-global state. Call once before compiling from several
+// threads; further calls, concurrent ones included, do nothing. Returns false if
+// glslang could not be initialised (compile() then reports WG9900).
+bool initialize();
+
+// Compiles one graph. fileName names the graph in diagnostics and anchors relative
+// texture paths; json is the graph text. Never throws.
+Result compile(std::string_view fileName, std::string_view json, const Options& options = {}) noexcept;
+
+// weathergen's version, e.g. "0.1.0".
+std::string version();
+
+}  // namespace weathergen
