@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs exactly the Debian 12 packages weathergen needs that are missing.
+# Installs exactly the Debian 12 packages weathergen needs that are missing, plus any
+# extra packages named as arguments (scripts/fuzz.sh asks for clang).
 set -euo pipefail
 
 packages=(
@@ -8,6 +9,7 @@ packages=(
   nlohmann-json3-dev libglm-dev libstb-dev
   libgtest-dev libbenchmark-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  "$@"
 )
 
 missing=()
