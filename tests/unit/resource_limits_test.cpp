@@ -47,32 +47,26 @@ TEST(ResourceLimits, GraphDepthOverTheLimitNamesTheDeepestNode) {
   EXPECT_NE(diag.message.find("4097"), std::string::npos) << diag.message;
 }
 
+// `count` unlinked texcoord nodes (each of depth 1) through buildIr with `limits`.
+bool buildWideGraph(int count, const IrLimits& limits, DiagnosticList& d) {
+  std::string nodes;
+  for (int i = 0; i < count; ++i) nodes += (i ? ", " : "") + std::string(R"({"id": "t)") + std::to_string(i) + R"(", "op": "texcoord"})";
+  auto document = parseJsonDocument("wide.json", testing::graphJson(nodes, ""), d);
+  auto graph = document ? loadMaterialGraph(*document, d) : std::nullopt;
+  EXPECT_TRUE(graph) << "the wide graph itself must load";
+  return graph && buildIr(*graph, *document, d, IrBuildOptions{.limits = limits}).has_value();
+}
+
 TEST(ResourceLimits, DepthCountsTheLongestPathNotTheNodeCount) {
   // 300 independent nodes of depth 1 and a graph limit of 2: wide graphs are fine.
-  std::string nodes;
-  for (int i = 0; i < 300; ++i) nodes += (i ? ", " : "") + std::string(R"({"id": "t)") + std::to_string(i) + R"(", "op": "texcoord"})";
   DiagnosticList d;
-  auto document = parseJsonDocument("wide.json", testing::graphJson(nodes, ""), d);
-  ASSERT_TRUE(document);
-  auto graph = loadMaterialGraph(*document, d);
-  ASSERT_TRUE(graph);
-  IrBuildOptions options;
-  options.limits.maxDepth = 2;
-  EXPECT_TRUE(buildIr(*graph, *document, d, options).has_value());
+  EXPECT_TRUE(buildWideGraph(300, IrLimits{.maxDepth = 2}, d));
   EXPECT_TRUE(d.items().empty());
 }
 
 TEST(ResourceLimits, NodeCountOverTheLimitIsOneError) {
-  std::string nodes;
-  for (int i = 0; i < 5; ++i) nodes += (i ? ", " : "") + std::string(R"({"id": "t)") + std::to_string(i) + R"(", "op": "texcoord"})";
   DiagnosticList d;
-  auto document = parseJsonDocument("many.json", testing::graphJson(nodes, ""), d);
-  ASSERT_TRUE(document);
-  auto graph = loadMaterialGraph(*document, d);
-  ASSERT_TRUE(graph);
-  IrBuildOptions options;
-  options.limits.maxNodes = 4;
-  EXPECT_FALSE(buildIr(*graph, *document, d, options).has_value());
+  EXPECT_FALSE(buildWideGraph(5, IrLimits{.maxNodes = 4}, d));
   ASSERT_EQ(codesOf(d), std::vector<DiagCode>{DiagCode::ResourceLimit});
   EXPECT_EQ(d.items().front().location.pointer, "/nodes");
   EXPECT_NE(d.items().front().message.find("node count"), std::string::npos);
