@@ -1,0 +1,19 @@
+# `cmake --install`: the CLI in bin/ and a CMake package in lib/cmake/weathergen so that
+# other projects can find_package(weathergen) and call weathergen_add_materials().
+include(CMakePackageConfigHelpers)
+include(GNUInstallDirs)
+
+set(WG_PACKAGE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/weathergen")
+
+install(TARGETS weathergen EXPORT weathergenTargets RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+install(EXPORT weathergenTargets NAMESPACE weathergen:: DESTINATION "${WG_PACKAGE_DIR}")
+
+configure_package_config_file(cmake/weathergenConfig.cmake.in
+  "${CMAKE_CURRENT_BINARY_DIR}/weathergenConfig.cmake" INSTALL_DESTINATION "${WG_PACKAGE_DIR}")
+# A host tool: usable whatever the consuming project's pointer size. 0.x minors may break.
+write_basic_package_version_file("${CMAKE_CURRENT_BINARY_DIR}/weathergenConfigVersion.cmake"
+  COMPATIBILITY SameMinorVersion ARCH_INDEPENDENT)
+install(FILES "${CMAKE_CURRENT_BINARY_DIR}/weathergenConfig.cmake"
+              "${CMAKE_CURRENT_BINARY_DIR}/weathergenConfigVersion.cmake"
+              cmake/WeathergenMaterials.cmake
+        DESTINATION "${WG_PACKAGE_DIR}")
