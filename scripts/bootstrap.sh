@@ -9,6 +9,7 @@ packages=(
   nlohmann-json3-dev libglm-dev libstb-dev
   libgtest-dev libbenchmark-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  bazel-bootstrap  # examples/bazel's cache test (Bazel 4.2 and a JDK)
   "$@"
 )
 
