@@ -10,5 +10,6 @@ int runListCommand(int argc, char** argv);
 int runEvalCommand(int argc, char** argv);
 int runRenderCommand(int argc, char** argv);
 int runBenchRenderCommand(int argc, char** argv);
+int runBenchSnowCommand(int argc, char** argv);
 
 }  // namespace wg

@@ -14,6 +14,7 @@ Usage:
   weathergen eval GRAPH [options]                evaluate a material at one point on the CPU
   weathergen render --scene NAME -o OUT.png      draw a validation scene on Vulkan (lavapipe)
   weathergen bench-render [--scene NAME]         GPU time of the weather, timestamp queries
+  weathergen bench-snow                          GPU time and memory of the deformable snow
   weathergen list-ops [--json]                   every node op with its ports
   weathergen list-passes                         the IR pass pipeline, in order
   weathergen list-diagnostics                    every diagnostic code
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   if (command == "eval") return wg::runEvalCommand(argc, argv);
   if (command == "render") return wg::runRenderCommand(argc, argv);
   if (command == "bench-render") return wg::runBenchRenderCommand(argc, argv);
+  if (command == "bench-snow") return wg::runBenchSnowCommand(argc, argv);
   if (command.starts_with("list-")) return wg::runListCommand(argc, argv);
   std::fprintf(stderr, "weathergen: error WG9001: unknown command '%s'\n  hint: run 'weathergen --help' for usage\n",
                command.size() > 60 ? (command.substr(0, 60) + "...").c_str() : command.c_str());

@@ -23,10 +23,9 @@ constexpr int kGlslVersion = 450;
 constexpr int kClientInputVersion = 100;  // Vulkan client semantics version 1.00
 }  // namespace
 
-SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage language, ShaderStage stage) {
+namespace {
+SpirvCompileResult compileStage(std::string_view source, bool hlsl, EShLanguage glslangStage) {
   initializeGlslangProcess();
-  EShLanguage glslangStage = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
-  bool hlsl = language == ShaderLanguage::Hlsl;
   glslang::TShader shader(glslangStage);
   const char* text = source.data();
   int length = static_cast<int>(source.size());
@@ -57,5 +56,13 @@ SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage langua
   if (!result.ok) result.log = logger.getAllMessages();
   return result;
 }
+}  // namespace
+
+SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage language, ShaderStage stage) {
+  return compileStage(source, language == ShaderLanguage::Hlsl,
+                      stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment);
+}
+
+SpirvCompileResult compileComputeToSpirv(std::string_view glsl) { return compileStage(glsl, false, EShLangCompute); }
 
 }  // namespace wg

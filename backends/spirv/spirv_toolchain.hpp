@@ -24,6 +24,9 @@ bool initializeGlslangProcess();
 
 // Thread-safe: glslang's process state is initialised once, on first use.
 SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage language, ShaderStage stage);
+// A GLSL 450 compute shader of the runtime's own passes (the deformable snow), with the
+// same glslang setup as the materials' stages.
+SpirvCompileResult compileComputeToSpirv(std::string_view glsl);
 // Empty when the module is valid in the Vulkan 1.1 environment.
 std::string validateSpirv(const SpirvWords& words);
 // spirv-opt's performance recipe; returns the input unchanged if optimisation fails.
@@ -50,6 +53,20 @@ struct ReflectedResources {
   ResourceCounts declared, used;
 };
 ReflectedResources reflectResources(const SpirvWords& words);
+// A compute module's interface as SPIRV-Cross sees it: the runtime builds descriptor
+// set layouts and push-constant ranges from this, never by hand.
+struct ComputeBinding {
+  enum class Kind : std::uint8_t { StorageBuffer, UniformBuffer };
+  std::string name;  // the block's type name
+  std::uint32_t set = 0, binding = 0;
+  Kind kind = Kind::StorageBuffer;
+};
+struct ComputeInterface {
+  std::vector<ComputeBinding> bindings;
+  std::uint32_t pushConstantBytes = 0;
+  std::uint32_t localSize[3] = {1, 1, 1};
+};
+ComputeInterface reflectCompute(const SpirvWords& words);
 // Instruction count (words are grouped into instructions), for cost reports.
 std::size_t countInstructions(const SpirvWords& words);
 

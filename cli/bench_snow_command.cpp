@@ -1,0 +1,197 @@
+// weathergen bench-snow: GPU time of the deformation pass (stamps plus normals, from
+// timestamp queries) with 1 to 1024 interactors, the same load on smaller and larger
+// maps, the refill pass, and the memory of the map and the print store after a
+// 10-minute scripted walk in simulated time. Prints markdown (docs/BENCHMARKS.md).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cli/command_line.hpp"
+#include "cli/commands.hpp"
+#include "runtime/snow/deformation_texel.hpp"
+#include "runtime/snow/gpu_deformation_map.hpp"
+#include "runtime/snow/snow_interactors.hpp"
+
+namespace wg {
+
+namespace {
+
+constexpr const char* kUsage = R"(Usage: weathergen bench-snow [--frames N] [--walk-minutes M] [--device NAME]
+
+Moves N interactors (1, 16, 256, 1024) through the default 1024² deformation map (4 cm
+texels); each presses a 0.15 m-radius capsule from its previous to its current position
+every frame (60 fps, 1.4 m/s), the worst case: walkers stamp only when a foot lands.
+Prints the median GPU time over N frames (default 120, after 10 warm-up frames) of the
+stamp and normal dispatches, the same 256 interactors on 512² and 2048² maps, the global
+refill pass, then walks a player with 16 companions and a vehicle for M simulated
+minutes (default 10) with the window following and reports the memory of the map and of
+the print store.
+)";
+
+constexpr int kWarmUpFrames = 10;
+constexpr double kFrameSeconds = 1.0 / 60.0;
+constexpr float kWalkSpeed = 1.4f;    // m/s, a brisk walk
+constexpr float kBodyRadius = 0.15f;  // a dragged foot or a small body
+const snow::SnowCover kCover{0.3f};
+// Refill two quanta per call: every call dispatches.
+constexpr double kTwoQuantaPerSecond = 2.0 * snow::kDepthQuantum;
+constexpr int kCompanions = 16;
+constexpr float kLegLength = 120.f, kLegGap = 30.f;  // the walk's serpentine, metres
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+}
+
+// Median GPU milliseconds of `frames` frames of `count` movers on a map of `resolution`.
+double measureMovers(vk::Context& ctx, std::uint32_t resolution, int count, int frames) {
+  snow::WindowSettings settings;
+  settings.resolution = resolution;
+  snow::GpuDeformationMap map(ctx, settings);
+  std::mt19937 random(1234);  // fixed: every run moves the same interactors
+  float half = 0.45f * map.window().extent();
+  std::uniform_real_distribution<float> position(-half, half), angle(0.f, 6.2831853f);
+  std::vector<glm::vec2> at(count), velocity(count);
+  for (int i = 0; i < count; ++i) {
+    at[i] = {position(random), position(random)};
+    float a = angle(random);
+    velocity[i] = glm::vec2(std::cos(a), std::sin(a)) * kWalkSpeed;
+  }
+  std::vector<double> times;
+  std::vector<snow::Stamp> stamps(count);
+  for (int f = 0; f < kWarmUpFrames + frames; ++f) {
+    for (int i = 0; i < count; ++i) {
+      glm::vec2 next = at[i] + velocity[i] * float(kFrameSeconds);
+      if (std::abs(next.x) > half || std::abs(next.y) > half) velocity[i] = -velocity[i];  // stay inside
+      stamps[i] = snow::capsule(at[i], next, kBodyRadius, kCover, kCover.depth);
+      at[i] = next;
+    }
+    double ms = map.apply(stamps);
+    if (f >= kWarmUpFrames) times.push_back(ms);
+  }
+  return median(times);
+}
+
+// Median GPU milliseconds of the global refill (every texel, then every normal).
+double measureRefill(vk::Context& ctx, int frames) {
+  snow::GpuDeformationMap map(ctx);
+  std::vector<double> times;
+  for (int f = 0; f < kWarmUpFrames + frames; ++f) {
+    double ms = map.refill(kTwoQuantaPerSecond, 1.0);
+    if (f >= kWarmUpFrames) times.push_back(ms);
+  }
+  return median(times);
+}
+
+// A serpentine of legs `leg` metres long, `gap` apart, long enough for `length` metres.
+std::vector<glm::vec2> serpentine(float length, float leg, float gap, glm::vec2 offset) {
+  std::vector<glm::vec2> points{offset};
+  glm::vec2 at = offset;
+  for (int i = 0; length > 0.f; ++i) {
+    at.x += (i % 2 == 0 ? leg : -leg);
+    points.push_back(at);
+    at.y += gap;
+    points.push_back(at);
+    length -= leg + gap;
+  }
+  return points;
+}
+
+// The player (whom the window follows), 16 companions on parallel paths and a vehicle,
+// for `minutes` of simulated time at 60 frames per second, in calm weather (no refill:
+// every print is kept, the store's worst case).
+int runSnowWalk(vk::Context& ctx, double minutes) {
+  const double seconds = minutes * 60.0;
+  const float length = float(seconds) * kWalkSpeed + kLegLength;
+  snow::GpuDeformationMap map(ctx);
+  std::vector<snow::Walker> walkers;
+  for (int i = 0; i <= kCompanions; ++i) {
+    snow::Walker w;
+    // Companions walk beside the player, up to 8 m either side, a little faster or slower.
+    float side = i == 0 ? 0.f : float((i + 1) / 2) * (i % 2 ? 1.f : -1.f);
+    float speed = kWalkSpeed * (1.f + 0.02f * float(i % 5 - 2));
+    w.path = snow::ScriptedPath(serpentine(length, kLegLength, kLegGap, {0.f, side}), speed);
+    walkers.push_back(w);
+  }
+  snow::Vehicle car;
+  car.path = snow::ScriptedPath(serpentine(length, kLegLength, kLegGap, {0.f, -10.f}), kWalkSpeed);
+  std::size_t stamps = 0, peakStore = 0;
+  std::vector<snow::Stamp> frame;
+  const auto frames = static_cast<long>(seconds / kFrameSeconds);
+  for (long f = 0; f < frames; ++f) {
+    double t0 = double(f - 1) * kFrameSeconds, t1 = double(f) * kFrameSeconds;
+    frame.clear();
+    for (const auto& w : walkers) snow::walkerStamps(w, t0, t1, kCover, frame);
+    snow::vehicleStamps(car, t0, t1, kCover, frame);
+    map.follow(walkers.front().path.pointAt(walkers.front().path.distanceAt(t1)));
+    map.apply(frame);
+    stamps += frame.size();
+    peakStore = std::max(peakStore, map.store().memoryBytes());
+  }
+  constexpr double kMiB = 1024.0 * 1024.0;
+  std::printf("\n%.0f simulated minutes (%ld frames at 60 fps, %zu stamps; %d walkers and a vehicle, %.0f m each):\n\n",
+              minutes, frames, stamps, kCompanions + 1, seconds * kWalkSpeed);
+  std::printf("| what | memory |\n|---|---|\n");
+  std::printf("| deformation map (heights + normals, 1024², 2 x 32 bit) | %.2f MiB |\n", map.mapBytes() / kMiB);
+  std::printf("| print store: %zu tiles of 32² texels | %.2f MiB (peak %.2f MiB) |\n", map.store().tileCount(),
+              map.store().memoryBytes() / kMiB, peakStore / kMiB);
+  return kExitOk;
+}
+
+}  // namespace
+
+int runBenchSnowCommand(int argc, char** argv) {
+  CommandLine cl(argc, argv, 2);
+  std::string device;
+  int frames = 120;
+  double walkMinutes = 10.0;
+  while (!cl.done()) {
+    std::string error;
+    if (cl.flag("-h") || cl.flag("--help")) {
+      std::fputs(kUsage, stdout);
+      return kExitOk;
+    }
+    if (auto x = cl.valueFor("--device", error)) { device = *x; continue; }
+    if (auto x = cl.valueFor("--frames", error)) {
+      frames = std::atoi(x->c_str());
+      if (frames < 1) error = "--frames takes a positive count";
+      else continue;
+    }
+    if (auto x = cl.valueFor("--walk-minutes", error)) {
+      walkMinutes = std::atof(x->c_str());
+      if (!(walkMinutes > 0.0)) error = "--walk-minutes takes a positive number";
+      else continue;
+    }
+    std::fprintf(stderr, "weathergen: error WG9001: %s\n", error.empty() ? ("unknown option '" + cl.peek() + "'").c_str() : error.c_str());
+    return kExitUsage;
+  }
+  std::string error;
+  auto ctx = vk::Context::create({device, false}, error);
+  if (!ctx) {
+    std::fprintf(stderr, "weathergen: error: %s\n", error.c_str());
+    return kExitInternal;
+  }
+  std::printf("Device: %s. Median of %d frames (after %d warm-up), stamps + normals, GPU timestamps.\n\n",
+              ctx->deviceName().c_str(), frames, kWarmUpFrames);
+  std::printf("| interactors | map | stamps/frame | GPU ms/frame | ms per interactor | vs 1 interactor |\n|---|---|---|---|---|---|\n");
+  double one = 0.0;
+  for (int count : {1, 16, 256, 1024}) {
+    double ms = measureMovers(*ctx, 1024, count, frames);
+    if (count == 1) one = ms;
+    std::printf("| %d | 1024² | %d | %.4f | %.5f | %.2fx |\n", count, count, ms, ms / count, one > 0 ? ms / one : 0.0);
+    std::fflush(stdout);
+  }
+  for (std::uint32_t resolution : {512u, 2048u}) {
+    double ms = measureMovers(*ctx, resolution, 256, frames);
+    std::printf("| 256 | %u² | 256 | %.4f | %.5f | %.2fx |\n", resolution, ms, ms / 256, one > 0 ? ms / one : 0.0);
+    std::fflush(stdout);
+  }
+  std::printf("\nGlobal refill pass (1024², every texel and normal, on frames a quantum is due): %.4f ms\n",
+              measureRefill(*ctx, frames));
+  return runSnowWalk(*ctx, walkMinutes);
+}
+
+}  // namespace wg

@@ -1,0 +1,31 @@
+#include "runtime/snow/deformation_map.hpp"
+
+#include "runtime/snow/cpu_stamping.hpp"
+#include "runtime/snow/deformation_texel.hpp"
+#include "runtime/snow/map_lookup.hpp"
+
+namespace wg::snow {
+
+DeformationMap::DeformationMap(const WindowSettings& settings, glm::vec2 camera)
+    : window_(settings), heights_(window_.texelCount(), 0u), normals_(window_.texelCount(), 0u) {
+  window_.setOrigin(window_.originFor(camera));
+}
+
+void DeformationMap::apply(std::span<const Stamp> stamps) { stampOnCpu(window_, texels(), stamps); }
+
+void DeformationMap::refill(double metresPerSecond, double seconds) {
+  std::uint32_t quanta = refill_.advance(metresPerSecond, seconds);
+  if (quanta == 0) return;
+  refillOnCpu(texels(), quanta);
+  regenerateNormals(window_, texels(), window_.rect());
+}
+
+Recentring DeformationMap::follow(glm::vec2 camera) {
+  return recentre(window_, texels(), camera, store_, refill_.totalQuanta());
+}
+
+float DeformationMap::heightAt(glm::vec2 world) const { return texelHeight(heightTexelAt(window_, heights_, world)); }
+float DeformationMap::depthAt(glm::vec2 world) const { return texelDepth(heightTexelAt(window_, heights_, world)); }
+glm::vec3 DeformationMap::normalAt(glm::vec2 world) const { return snow::normalAt(window_, normals_, world); }
+
+}  // namespace wg::snow

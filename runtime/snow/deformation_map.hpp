@@ -1,0 +1,45 @@
+// The CPU model of the deformation height map: the sliding window, its two texel
+// planes, the print store and the refill counter. The GPU map (gpu_deformation_map.hpp)
+// keeps the same state in mapped buffers and runs the stamps and normals as compute;
+// tests hold the two against each other.
+#pragma once
+#include <span>
+#include <vector>
+
+#include "runtime/snow/deformation_refill.hpp"
+#include "runtime/snow/map_texels.hpp"
+#include "runtime/snow/print_tile_store.hpp"
+#include "runtime/snow/snow_stamp.hpp"
+#include "runtime/snow/snow_window.hpp"
+#include "runtime/snow/window_recentring.hpp"
+
+namespace wg::snow {
+
+class DeformationMap {
+ public:
+  explicit DeformationMap(const WindowSettings& settings = {}, glm::vec2 camera = glm::vec2(0.f));
+
+  const SnowWindow& window() const { return window_; }
+  const PrintTileStore& store() const { return store_; }
+  MapTexels texels() { return {heights_, normals_}; }
+
+  void apply(std::span<const Stamp> stamps);
+  // Refill at `metresPerSecond` for `seconds`, applied in whole quanta.
+  void refill(double metresPerSecond, double seconds);
+  Recentring follow(glm::vec2 camera);
+
+  // Texel values at a world point: 0 / flat outside the window.
+  float heightAt(glm::vec2 world) const;  // metres, relative to the undisturbed surface
+  float depthAt(glm::vec2 world) const;   // print depth, metres
+  glm::vec3 normalAt(glm::vec2 world) const;
+
+  std::size_t mapBytes() const { return (heights_.size() + normals_.size()) * sizeof(std::uint32_t); }
+
+ private:
+  SnowWindow window_;
+  std::vector<std::uint32_t> heights_, normals_;
+  PrintTileStore store_;
+  DeformationRefill refill_;
+};
+
+}  // namespace wg::snow

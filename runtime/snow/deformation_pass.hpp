@@ -1,0 +1,65 @@
+// The deformation compute pass on Vulkan: three pipelines (stamps, normals, refill)
+// sharing one descriptor set whose layout and push-constant range are built from the
+// SPIRV-Cross reflection of the modules. Buffers are bound by their block names.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "runtime/vulkan/gpu_buffer.hpp"
+
+namespace wg::snow {
+
+// Mirrors the push-constant block `Window` of deformation_shaders.cpp; its size is
+// checked against the reflected one.
+struct WindowConstants {
+  std::int32_t origin[2];
+  std::int32_t originSlot[2];
+  std::int32_t resolution;
+  float texelSize;
+  std::uint32_t refillQuanta;
+};
+
+class DeformationPass {
+ public:
+  explicit DeformationPass(vk::Context& ctx);
+  ~DeformationPass();
+  DeformationPass(const DeformationPass&) = delete;
+  DeformationPass& operator=(const DeformationPass&) = delete;
+
+  // Points the block named `block` (Heights, Normals, Stamps, StampBoxes, NormalRects)
+  // at a buffer. Every block must be bound before the first record.
+  void bind(const std::string& block, const vk::Buffer& buffer);
+
+  // Stamp layers, then a barrier, then normal layers; `stampExtent` / `rectExtent` are
+  // the largest box and rectangle sizes (texels).
+  void recordStamps(VkCommandBuffer cmd, const WindowConstants& window, std::uint32_t stamps,
+                    glm::ivec2 stampExtent) const;
+  void recordNormals(VkCommandBuffer cmd, const WindowConstants& window, std::uint32_t rects,
+                     glm::ivec2 rectExtent) const;
+  void recordRefill(VkCommandBuffer cmd, const WindowConstants& window) const;
+  static void computeBarrier(VkCommandBuffer cmd);
+
+ private:
+  struct Pipeline {
+    VkShaderModule module = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    std::uint32_t localSize[3] = {1, 1, 1};
+  };
+  Pipeline build(std::string_view source, const char* what);
+  void dispatch(VkCommandBuffer cmd, const Pipeline& p, const WindowConstants& window, glm::ivec2 extent,
+                std::uint32_t layers) const;
+
+  vk::Context& ctx_;
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  std::map<std::string, std::uint32_t> bindingOf_;  // block name -> binding in set 0
+  std::uint32_t pushConstantBytes_ = 0;
+  Pipeline stamp_, normals_, refill_;
+};
+
+}  // namespace wg::snow

@@ -1,0 +1,132 @@
+#include "runtime/snow/deformation_shaders.hpp"
+
+namespace wg::snow {
+
+namespace {
+
+// Shared by all three passes: the window (push constants) and the texel encoding of
+// deformation_texel.hpp. `originSlot` is the origin's storage position (origin mod N,
+// taken on the CPU, so no shader ever takes the modulo of a negative number).
+constexpr std::string_view kCommon = R"(#version 450
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(push_constant) uniform Window {
+  ivec2 origin;
+  ivec2 originSlot;
+  int resolution;
+  float texelSize;
+  uint refillQuanta;
+} window;
+layout(std430, set = 0, binding = 0) buffer Heights { uint heights[]; };
+const float kDepthQuantum = 1e-4;
+const uint kMaxQuanta = 0xFFFFu;
+uint storageIndex(ivec2 texel) {
+  ivec2 slot = (window.originSlot + (texel - window.origin)) % window.resolution;
+  return uint(slot.y * window.resolution + slot.x);
+}
+uint toQuanta(float metres) {
+  if (!(metres > 0.0)) return 0u;
+  float q = metres / kDepthQuantum + 0.5;
+  return q >= float(kMaxQuanta) ? kMaxQuanta : uint(q);
+}
+float texelHeight(uint texel) {
+  uint depth = texel >> 16;
+  return depth != 0u ? -float(depth) * kDepthQuantum : float(texel & kMaxQuanta) * kDepthQuantum;
+}
+)";
+
+// One workgroup layer per stamp (gl_WorkGroupID.z), covering its bounding box: the cost
+// follows the stamped area, not the map size. Overlaps merge with atomicMax.
+constexpr std::string_view kStamp = R"(
+struct Stamp { vec2 a; vec2 b; float radiusA; float radiusB; float depthA; float depthB; float rimWidth; float rimHeight; };
+layout(std430, set = 0, binding = 2) readonly buffer Stamps { Stamp stamps[]; };
+layout(std430, set = 0, binding = 3) readonly buffer StampBoxes { ivec4 stampBoxes[]; };
+const float kDegenerateAxis = 1e-5;
+const float kWallFraction = 0.35;
+float unevenCapsuleDistance(vec2 p, float r1, float r2, float h) {
+  p.x = abs(p.x);
+  if (h <= abs(r1 - r2)) return min(length(p) - r1, length(p - vec2(0.0, h)) - r2);
+  float b = (r1 - r2) / h, a = sqrt(1.0 - b * b);
+  float k = dot(p, vec2(-b, a));
+  if (k < 0.0) return length(p) - r1;
+  if (k > a * h) return length(p - vec2(0.0, h)) - r2;
+  return dot(p, vec2(a, b)) - r1;
+}
+void main() {
+  ivec4 box = stampBoxes[gl_WorkGroupID.z];
+  ivec2 local = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(local, box.zw))) return;
+  ivec2 texel = box.xy + local;
+  Stamp s = stamps[gl_WorkGroupID.z];
+  vec2 point = (vec2(texel) + 0.5) * window.texelSize;
+  vec2 axis = s.b - s.a;
+  float h = length(axis);
+  vec2 along = h > kDegenerateAxis ? axis / h : vec2(0.0, 1.0);
+  vec2 across = vec2(along.y, -along.x);
+  vec2 d = point - s.a;
+  vec2 q = vec2(dot(d, across), dot(d, along));
+  float distance = unevenCapsuleDistance(q, s.radiusA, s.radiusB, h);
+  float t = h > kDegenerateAxis ? clamp(q.y / h, 0.0, 1.0) : 0.0;
+  float depth = (s.depthA + (s.depthB - s.depthA) * t) * smoothstep(0.0, kWallFraction * min(s.radiusA, s.radiusB), -distance);
+  float rim = 0.0;
+  if (distance > 0.0 && distance < s.rimWidth) {
+    float u = distance / s.rimWidth;
+    rim = s.rimHeight * 4.0 * u * (1.0 - u);
+  }
+  uint packed = (toQuanta(depth) << 16) | toQuanta(rim);
+  if (packed != 0u) atomicMax(heights[storageIndex(texel)], packed);
+}
+)";
+
+// Central differences of the decoded height, neighbours clamped to the window; one
+// workgroup layer per rectangle (each stamp's box grown by one texel).
+constexpr std::string_view kNormals = R"(
+layout(std430, set = 0, binding = 1) writeonly buffer Normals { uint normals[]; };
+layout(std430, set = 0, binding = 4) readonly buffer NormalRects { ivec4 normalRects[]; };
+float heightAt(ivec2 texel) {
+  texel = clamp(texel, window.origin, window.origin + window.resolution - 1);
+  return texelHeight(heights[storageIndex(texel)]);
+}
+void main() {
+  ivec4 rect = normalRects[gl_WorkGroupID.z];
+  ivec2 local = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(local, rect.zw))) return;
+  ivec2 t = rect.xy + local;
+  float span = 2.0 * window.texelSize;
+  float dx = (heightAt(t + ivec2(1, 0)) - heightAt(t - ivec2(1, 0))) / span;
+  float dz = (heightAt(t + ivec2(0, 1)) - heightAt(t - ivec2(0, 1))) / span;
+  vec3 n = normalize(vec3(-dx, 1.0, -dz));
+  normals[storageIndex(t)] = packSnorm2x16(vec2(n.x, n.z));
+}
+)";
+
+// Fresh snow and drift: both halves of every texel lowered by refillQuanta, never
+// below 0 (issue 5, §3). Runs only on frames where a whole quantum is due.
+constexpr std::string_view kRefill = R"(
+void main() {
+  ivec2 local = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(local, ivec2(window.resolution)))) return;
+  uint i = uint(local.y * window.resolution + local.x);
+  uint texel = heights[i];
+  uint depth = texel >> 16, rim = texel & kMaxQuanta, q = window.refillQuanta;
+  heights[i] = ((depth > q ? depth - q : 0u) << 16) | (rim > q ? rim - q : 0u);
+}
+)";
+
+std::string join(std::string_view body) { return std::string(kCommon) + std::string(body); }
+
+}  // namespace
+
+std::string_view stampShaderSource() {
+  static const std::string source = join(kStamp);
+  return source;
+}
+std::string_view normalShaderSource() {
+  static const std::string source = join(kNormals);
+  return source;
+}
+std::string_view refillShaderSource() {
+  static const std::string source = join(kRefill);
+  return source;
+}
+
+}  // namespace wg::snow

@@ -1,0 +1,142 @@
+#include "runtime/snow/gpu_deformation_map.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "runtime/snow/deformation_texel.hpp"
+#include "runtime/snow/map_lookup.hpp"
+
+namespace wg::snow {
+
+namespace {
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+// Stamp buffers start with room for this many and double when a frame needs more.
+constexpr std::size_t kInitialStamps = 64;
+
+// Host reads of the map (recentring, tests) after the pass.
+void hostReadBarrier(VkCommandBuffer cmd) {
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_HOST_WRITE_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0,
+                       nullptr, 0, nullptr);
+}
+
+glm::ivec4 packRect(const TexelRect& r) { return {r.min.x, r.min.y, r.size.x, r.size.y}; }
+}  // namespace
+
+GpuDeformationMap::GpuDeformationMap(vk::Context& ctx, const WindowSettings& settings, glm::vec2 camera)
+    : ctx_(ctx), window_(settings), pass_(ctx) {
+  window_.setOrigin(window_.originFor(camera));
+  VkDeviceSize bytes = window_.texelCount() * sizeof(std::uint32_t);
+  heights_ = vk::Buffer(ctx_, bytes, kStorage);
+  normals_ = vk::Buffer(ctx_, bytes, kStorage);
+  std::memset(heights_.mapped(), 0, bytes);
+  std::memset(normals_.mapped(), 0, bytes);
+  pass_.bind("Heights", heights_);
+  pass_.bind("Normals", normals_);
+  reserve(kInitialStamps);
+  VkQueryPoolCreateInfo query{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  query.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  query.queryCount = 2;
+  vk::check(vkCreateQueryPool(ctx_.device(), &query, nullptr, &timestamps_), "vkCreateQueryPool");
+}
+
+GpuDeformationMap::~GpuDeformationMap() {
+  vkDeviceWaitIdle(ctx_.device());
+  vkDestroyQueryPool(ctx_.device(), timestamps_, nullptr);
+}
+
+void GpuDeformationMap::reserve(std::size_t stamps) {
+  if (stamps <= capacity_) return;
+  capacity_ = std::max(stamps, 2 * capacity_);
+  stamps_ = vk::Buffer(ctx_, capacity_ * sizeof(Stamp), kStorage);
+  stampBoxes_ = vk::Buffer(ctx_, capacity_ * sizeof(glm::ivec4), kStorage);
+  // One more rectangle than stamps: the whole window, for the refill pass.
+  normalRects_ = vk::Buffer(ctx_, (capacity_ + 1) * sizeof(glm::ivec4), kStorage);
+  pass_.bind("Stamps", stamps_);
+  pass_.bind("StampBoxes", stampBoxes_);
+  pass_.bind("NormalRects", normalRects_);
+}
+
+WindowConstants GpuDeformationMap::constants(std::uint32_t refillQuanta) const {
+  WindowConstants c{};
+  int n = window_.resolution();
+  c.origin[0] = window_.origin().x;
+  c.origin[1] = window_.origin().y;
+  c.originSlot[0] = floorMod(window_.origin().x, n);
+  c.originSlot[1] = floorMod(window_.origin().y, n);
+  c.resolution = n;
+  c.texelSize = window_.texelSize();
+  c.refillQuanta = refillQuanta;
+  return c;
+}
+
+double GpuDeformationMap::submit(const std::function<void(VkCommandBuffer)>& record) {
+  ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+    vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
+    record(cmd);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+    hostReadBarrier(cmd);
+  });
+  std::uint64_t ticks[2] = {0, 0};
+  if (vkGetQueryPoolResults(ctx_.device(), timestamps_, 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),
+                            VK_QUERY_RESULT_64_BIT) != VK_SUCCESS)
+    return 0.0;
+  return double(ticks[1] - ticks[0]) * ctx_.properties().limits.timestampPeriod * 1e-6;
+}
+
+double GpuDeformationMap::apply(std::span<const Stamp> stamps) {
+  reserve(stamps.size());
+  auto* records = static_cast<Stamp*>(stamps_.mapped());
+  auto* boxes = static_cast<glm::ivec4*>(stampBoxes_.mapped());
+  auto* rects = static_cast<glm::ivec4*>(normalRects_.mapped());
+  std::uint32_t count = 0;
+  glm::ivec2 stampExtent(0), rectExtent(0);
+  for (const Stamp& s : stamps) {
+    TexelRect box = stampBounds(s, window_);
+    if (box.empty()) continue;  // entirely outside the window
+    TexelRect rect = box.grown(1).intersect(window_.rect());
+    records[count] = s;
+    boxes[count] = packRect(box);
+    rects[count] = packRect(rect);
+    stampExtent = glm::max(stampExtent, box.size);
+    rectExtent = glm::max(rectExtent, rect.size);
+    ++count;
+  }
+  if (count == 0) return 0.0;
+  WindowConstants c = constants(0);
+  return submit([&](VkCommandBuffer cmd) {
+    pass_.recordStamps(cmd, c, count, stampExtent);
+    DeformationPass::computeBarrier(cmd);
+    pass_.recordNormals(cmd, c, count, rectExtent);
+  });
+}
+
+double GpuDeformationMap::refill(double metresPerSecond, double seconds) {
+  std::uint32_t quanta = refill_.advance(metresPerSecond, seconds);
+  if (quanta == 0) return 0.0;
+  static_cast<glm::ivec4*>(normalRects_.mapped())[0] = packRect(window_.rect());
+  WindowConstants c = constants(quanta);
+  return submit([&](VkCommandBuffer cmd) {
+    pass_.recordRefill(cmd, c);
+    DeformationPass::computeBarrier(cmd);
+    pass_.recordNormals(cmd, c, 1, window_.rect().size);
+  });
+}
+
+Recentring GpuDeformationMap::follow(glm::vec2 camera) {
+  return recentre(window_, texels(), camera, store_, refill_.totalQuanta());
+}
+
+MapTexels GpuDeformationMap::texels() {
+  return {{static_cast<std::uint32_t*>(heights_.mapped()), window_.texelCount()},
+          {static_cast<std::uint32_t*>(normals_.mapped()), window_.texelCount()}};
+}
+
+float GpuDeformationMap::depthAt(glm::vec2 world) { return texelDepth(heightTexelAt(window_, texels().heights, world)); }
+float GpuDeformationMap::heightAt(glm::vec2 world) { return texelHeight(heightTexelAt(window_, texels().heights, world)); }
+glm::vec3 GpuDeformationMap::normalAt(glm::vec2 world) { return snow::normalAt(window_, texels().normals, world); }
+
+}  // namespace wg::snow

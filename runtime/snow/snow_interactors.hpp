@@ -1,0 +1,39 @@
+// Things that press into the snow, and the stamps each leaves over one frame.
+// A walker puts a foot down every half stride, left and right of its path: every
+// footfall whose distance lies in the frame's interval is stamped, however many that
+// is, so a walker faster than one step per frame leaves every print. In snow deeper
+// than its feet lift, the feet drag through it and the prints join into a furrow
+// (seed 5.2.2: "the feet never rise above the snow surface"). A vehicle's two wheel
+// ruts are capsules from each wheel's previous to its current contact point.
+#pragma once
+#include <vector>
+
+#include "runtime/snow/scripted_path.hpp"
+#include "runtime/snow/snow_stamp.hpp"
+
+namespace wg::snow {
+
+struct Walker {
+  ScriptedPath path;
+  float stepLength = 0.75f;  // one footfall to the next (half a stride)
+  float footSpacing = 0.18f;  // between the centres of the left and right feet
+  FootShape foot;
+  float sink = 0.3f;  // how far a foot would sink in bottomless snow
+  float footLift = 0.15f;  // feet clear snow shallower than this between steps
+};
+
+struct Vehicle {
+  ScriptedPath path;
+  float track = 1.5f;       // between the wheel centres, left to right
+  float wheelWidth = 0.22f;
+  float sink = 0.5f;        // a loaded wheel packs everything under it
+};
+
+// Stamps for the interval (t0, t1] in seconds.
+void walkerStamps(const Walker& walker, double t0, double t1, const SnowCover& cover, std::vector<Stamp>& out);
+void vehicleStamps(const Vehicle& vehicle, double t0, double t1, const SnowCover& cover, std::vector<Stamp>& out);
+
+// Where the walker's k-th footfall lands (k from 0; even left, odd right).
+glm::vec2 footfall(const Walker& walker, int k);
+
+}  // namespace wg::snow

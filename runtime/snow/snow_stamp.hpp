@@ -1,0 +1,60 @@
+// One deformation stamp: an uneven capsule in the ground plane, from centre `a` with
+// radius and depth (radiusA, depthA) to centre `b` with (radiusB, depthB), and a raised
+// rim just outside it. A footprint is a short uneven capsule from heel to toe, aligned
+// to the heading; a moving body or a wheel is a capsule from its previous to its
+// current position, so nothing it passed over in one frame is skipped (issue 5, §2).
+// The layout is std430 so the same records go to the compute shader.
+#pragma once
+#include <glm/glm.hpp>
+
+#include "runtime/snow/snow_window.hpp"
+
+namespace wg::snow {
+
+struct Stamp {
+  glm::vec2 a{0.f}, b{0.f};  // world xz, metres
+  float radiusA = 0.f, radiusB = 0.f;
+  float depthA = 0.f, depthB = 0.f;  // already limited by the local snow depth
+  float rimWidth = 0.f, rimHeight = 0.f;
+};
+static_assert(sizeof(Stamp) == 10 * sizeof(float), "Stamp is mirrored by the GLSL struct");
+
+// Depth below and rim above the undisturbed surface that a stamp leaves at a point.
+struct StampProfile {
+  float depth = 0.f, rim = 0.f;
+};
+StampProfile stampProfile(const Stamp& stamp, glm::vec2 point);
+
+// World texels the stamp (rim included) can touch.
+TexelRect stampBounds(const Stamp& stamp, const SnowWindow& window);
+
+// The snow the stamps are pressed into.
+struct SnowCover {
+  float depth = 0.f;  // local snow depth, metres
+};
+
+// Fresh snow (~100 kg/m³, docs/weather-simulation.md) packed under a foot or a wheel
+// reaches ~300 kg/m³, so a print goes at most 2/3 of the way down; the last third
+// is the packed snow at its bottom (seed 3.4: "pushed down to a base height slightly
+// above the original terrain").
+inline constexpr float kFreshSnowDensity = 100.f, kPackedSnowDensity = 300.f;
+float deepestPrint(const SnowCover& cover);
+
+// Rim height as a fraction of the print depth next to it, and its width as a fraction
+// of the stamp's radius: the snow pushed aside heaps up in a low ring (the shipped
+// technique's "raised rims"). Chosen for looks; both are parameters of the shapes below.
+inline constexpr float kRimHeightFraction = 0.25f, kRimWidthFraction = 0.6f;
+
+struct FootShape {
+  float length = 0.28f;       // heel to toe, an adult boot
+  float heelRadius = 0.045f;  // the heel is narrower than the ball of the foot
+  float toeRadius = 0.055f;
+  float toeDepthFraction = 0.8f;  // weight rests on the heel: the toe sinks less
+};
+
+// Oriented footprint centred at `centre`, heel behind, toe ahead along `heading`.
+Stamp footprint(glm::vec2 centre, glm::vec2 heading, const FootShape& foot, const SnowCover& cover, float sink);
+// A round body (or wheel of width 2 * radius) dragged from `from` to `to`.
+Stamp capsule(glm::vec2 from, glm::vec2 to, float radius, const SnowCover& cover, float sink);
+
+}  // namespace wg::snow

@@ -1,0 +1,84 @@
+#include "runtime/snow/window_recentring.hpp"
+
+#include <algorithm>
+
+#include "runtime/snow/cpu_stamping.hpp"
+#include "runtime/snow/deformation_texel.hpp"
+
+namespace wg::snow {
+
+namespace {
+
+template <typename Visit>
+void forEachTile(const TexelRect& rect, int tileTexels, Visit&& visit) {
+  for (int tz = 0; tz < rect.size.y / tileTexels; ++tz)
+    for (int tx = 0; tx < rect.size.x / tileTexels; ++tx) visit(rect.min / tileTexels + glm::ivec2(tx, tz));
+}
+
+// Moves a tile's texels out of the map (into the store when any is deformed) and
+// leaves the slots untouched and flat for whatever enters there.
+bool evictTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, PrintTileStore& store,
+               std::uint64_t refillQuanta) {
+  int n = window.tileTexels();
+  StoredTile stored;
+  stored.heights.resize(std::size_t(n) * n);
+  stored.refillAtEviction = refillQuanta;
+  bool deformed = false;
+  for (int z = 0; z < n; ++z)
+    for (int x = 0; x < n; ++x) {
+      std::size_t slot = window.storageIndex(tile * n + glm::ivec2(x, z));
+      std::uint32_t value = std::exchange(texels.heights[slot], 0u);
+      texels.normals[slot] = 0;  // packNormal of straight up
+      stored.heights[std::size_t(z) * n + x] = value;
+      deformed |= value != 0;
+    }
+  if (deformed) store.put(tile, std::move(stored));
+  return deformed;
+}
+
+bool restoreTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, PrintTileStore& store,
+                 std::uint64_t refillQuanta) {
+  auto stored = store.take(tile);
+  if (!stored) return false;
+  std::uint64_t missed = refillQuanta - stored->refillAtEviction;
+  auto quanta = static_cast<std::uint32_t>(std::min<std::uint64_t>(missed, kMaxQuanta));
+  int n = window.tileTexels();
+  for (int z = 0; z < n; ++z)
+    for (int x = 0; x < n; ++x)
+      texels.heights[window.storageIndex(tile * n + glm::ivec2(x, z))] =
+          refillTexel(stored->heights[std::size_t(z) * n + x], quanta);
+  return true;
+}
+
+}  // namespace
+
+Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, PrintTileStore& store,
+                    std::uint64_t refillQuanta) {
+  Recentring out;
+  glm::ivec2 target = window.originFor(camera);
+  if (target == window.origin()) return out;
+  TexelRect before = window.rect();
+  TexelRect after{target, before.size};
+  int n = window.tileTexels();
+  forEachTile(before, n, [&](glm::ivec2 tile) {
+    if (after.contains(tile * n)) return;
+    ++out.evicted;
+    out.stored += evictTile(window, texels, tile, store, refillQuanta);
+  });
+  window.setOrigin(target);
+  forEachTile(after, n, [&](glm::ivec2 tile) {
+    if (before.contains(tile * n)) return;
+    if (!restoreTile(window, texels, tile, store, refillQuanta)) return;
+    ++out.restored;
+    out.restoredRects.push_back(TexelRect{tile * n, glm::ivec2(n)}.grown(1).intersect(window.rect()));
+  });
+  for (const auto& rect : out.restoredRects) regenerateNormals(window, texels, rect);
+  return out;
+}
+
+void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store, std::uint64_t refillQuanta) {
+  forEachTile(window.rect(), window.tileTexels(),
+              [&](glm::ivec2 tile) { evictTile(window, texels, tile, store, refillQuanta); });
+}
+
+}  // namespace wg::snow

@@ -1,0 +1,31 @@
+// Slides the window to keep the camera in its central tile. Tiles that leave go to the
+// print store if they hold any deformation; tiles that enter come back from it, with
+// the refill they missed applied, or start untouched. Texels that stay are not moved
+// or re-uploaded: toroidal addressing keeps them where they are (issue 5, §1-3).
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "runtime/snow/map_texels.hpp"
+#include "runtime/snow/print_tile_store.hpp"
+#include "runtime/snow/snow_window.hpp"
+
+namespace wg::snow {
+
+struct Recentring {
+  std::size_t evicted = 0, stored = 0, restored = 0;
+  // Restored tiles, grown by one texel: their normals were regenerated on the CPU.
+  std::vector<TexelRect> restoredRects;
+  bool moved() const { return evicted != 0; }
+};
+
+Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, PrintTileStore& store,
+                    std::uint64_t refillQuanta);
+
+// Every tile of the window with any deformation goes to the store (the camera jumped
+// away, or the layer is being torn down but its prints should outlive it).
+void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store, std::uint64_t refillQuanta);
+
+}  // namespace wg::snow

@@ -1,0 +1,198 @@
+// The deformation compute pass on lavapipe with the validation layers on (issue 5,
+// §7): the map read back from the GPU against the CPU model and the scripted paths,
+// no deformation without snow, continuous trails at any speed, prints through
+// recentring and a round trip, refill at the configured rate.
+#include "runtime/snow/gpu_deformation_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "backends/spirv/spirv_toolchain.hpp"
+#include "runtime/snow/cpu_stamping.hpp"
+#include "runtime/snow/deformation_map.hpp"
+#include "runtime/snow/deformation_shaders.hpp"
+#include "runtime/snow/deformation_texel.hpp"
+#include "runtime/snow/snow_interactors.hpp"
+
+namespace wg::snow {
+namespace {
+
+const WindowSettings kSmall{128, 0.04f, 16};
+const SnowCover kCover{0.12f};
+constexpr double kFrame = 1.0 / 60.0;
+
+vk::Context* context() {
+  static std::unique_ptr<vk::Context> ctx = [] {
+    std::string error;
+    return vk::Context::create({"cpu", true}, error);
+  }();
+  return ctx.get();
+}
+
+class GpuDeformation : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!context()) GTEST_SKIP() << "no Vulkan device";
+    context()->clearValidationMessages();
+  }
+  void TearDown() override {
+    if (!context()) return;
+    for (const auto& m : context()->validationMessages()) ADD_FAILURE() << "Vulkan validation: " << m;
+  }
+};
+
+// A walker, a second walker crossing it and a vehicle, over `seconds`.
+std::vector<std::vector<Stamp>> scriptedFrames(double seconds, const SnowCover& cover) {
+  Walker a, b;
+  a.path = ScriptedPath({{-2.f, -1.5f}, {2.f, 1.f}}, 1.4f);
+  b.path = ScriptedPath({{1.5f, -2.f}, {-1.f, 2.f}}, 1.1f);
+  Vehicle v;
+  v.path = ScriptedPath({{-2.4f, 0.6f}, {2.4f, -0.4f}}, 3.f);
+  std::vector<std::vector<Stamp>> frames;
+  for (double t = 0.0; t < seconds; t += kFrame) {
+    std::vector<Stamp> stamps;
+    walkerStamps(a, t - kFrame, t, cover, stamps);
+    walkerStamps(b, t - kFrame, t, cover, stamps);
+    vehicleStamps(v, t - kFrame, t, cover, stamps);
+    frames.push_back(std::move(stamps));
+  }
+  return frames;
+}
+
+// Largest difference in quanta between two maps' depth and rim halves.
+std::uint32_t maxQuantaDifference(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) {
+  std::uint32_t worst = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    auto diff = [](std::uint32_t x, std::uint32_t y) { return x > y ? x - y : y - x; };
+    worst = std::max({worst, diff(a[i] >> kDepthShift, b[i] >> kDepthShift), diff(a[i] & kMaxQuanta, b[i] & kMaxQuanta)});
+  }
+  return worst;
+}
+
+TEST(SnowShaders, LayoutComesFromReflection) {
+  SpirvCompileResult stamp = compileComputeToSpirv(stampShaderSource());
+  ASSERT_TRUE(stamp.ok) << stamp.log;
+  EXPECT_EQ(validateSpirv(stamp.words), "");
+  ComputeInterface i = reflectCompute(stamp.words);
+  EXPECT_EQ(i.pushConstantBytes, sizeof(WindowConstants));
+  EXPECT_EQ(i.localSize[0], 8u);
+  std::vector<std::string> names;
+  for (const auto& b : i.bindings) names.push_back(b.name);
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"Heights", "StampBoxes", "Stamps"}));
+}
+
+TEST_F(GpuDeformation, MatchesTheCpuModelTexelForTexel) {
+  DeformationMap cpu(kSmall);
+  GpuDeformationMap gpu(*context(), kSmall);
+  for (const auto& stamps : scriptedFrames(3.0, kCover)) {
+    cpu.apply(stamps);
+    gpu.apply(stamps);
+  }
+  // Float rounding may move a value across a quantum boundary, never more.
+  EXPECT_LE(maxQuantaDifference(cpu.texels().heights, gpu.texels().heights), 1u);
+  int deformed = 0;
+  for (auto t : gpu.texels().heights) deformed += t != 0;
+  EXPECT_GT(deformed, 500);
+  for (std::size_t i = 0; i < cpu.window().texelCount(); ++i) {
+    glm::vec3 a = unpackNormal(cpu.texels().normals[i]), b = unpackNormal(gpu.texels().normals[i]);
+    ASSERT_GT(glm::dot(a, b), 0.999f) << "texel " << i;
+  }
+}
+
+TEST_F(GpuDeformation, FootprintsReadBackWhereThePathPutsThem) {
+  GpuDeformationMap gpu(*context(), kSmall);
+  Walker w;
+  w.path = ScriptedPath({{-2.f, 1.f}, {2.f, -1.f}}, 1.4f);
+  for (double t = 0.0; t < 4.0; t += kFrame) {
+    std::vector<Stamp> stamps;
+    walkerStamps(w, t - kFrame, t, kCover, stamps);
+    gpu.apply(stamps);
+  }
+  float expected = std::min(w.sink, deepestPrint(kCover));
+  glm::vec2 heading = w.path.headingAt(0.f);
+  int prints = 0;
+  for (int k = 0; k * w.stepLength <= w.path.length(); ++k, ++prints) {
+    glm::vec2 heel = footfall(w, k) - heading * (0.5f * w.foot.length - w.foot.heelRadius);
+    EXPECT_NEAR(gpu.depthAt(heel), expected, 0.05f * expected) << "footfall " << k;
+    EXPECT_EQ(gpu.depthAt(w.path.pointAt((float(k) + 0.5f) * w.stepLength)), 0.f) << "between footfalls " << k;
+  }
+  EXPECT_GE(prints, 5);
+}
+
+TEST_F(GpuDeformation, ZeroSnowDepthLeavesNoDeformation) {
+  GpuDeformationMap gpu(*context(), kSmall);
+  for (const auto& stamps : scriptedFrames(2.0, SnowCover{0.f})) gpu.apply(stamps);
+  auto t = gpu.texels();
+  EXPECT_TRUE(std::all_of(t.heights.begin(), t.heights.end(), [](auto v) { return v == 0u; }));
+  EXPECT_TRUE(std::all_of(t.normals.begin(), t.normals.end(), [](auto v) { return v == 0u; }));
+}
+
+TEST_F(GpuDeformation, FastMoversLeaveContinuousTrails) {
+  GpuDeformationMap gpu(*context(), kSmall);
+  Walker sprinter;  // 40 m/s at 10 frames per second: five footfalls a frame
+  sprinter.path = ScriptedPath({{-2.2f, 1.f}, {2.2f, 1.f}}, 40.f);
+  Vehicle car;  // 30 m/s: half a metre a frame
+  car.path = ScriptedPath({{-2.2f, -0.8f}, {2.2f, -0.8f}}, 30.f);
+  for (double t = 0.0; t < 1.0; t += 0.1) {
+    std::vector<Stamp> stamps;
+    walkerStamps(sprinter, t - 0.1, t, kCover, stamps);
+    vehicleStamps(car, t - 0.1, t, kCover, stamps);
+    gpu.apply(stamps);
+  }
+  for (int k = 0; k * sprinter.stepLength <= sprinter.path.length(); ++k)
+    EXPECT_GT(gpu.depthAt(footfall(sprinter, k)), 0.f) << "footfall " << k;
+  for (float x = -2.2f; x <= 2.2f; x += kSmall.texelSize)
+    for (float side : {0.5f, -0.5f}) EXPECT_GT(gpu.depthAt({x, -0.8f + side * car.track}), 0.f) << x;
+}
+
+TEST_F(GpuDeformation, PrintsSurviveRecentringAndARoundTrip) {
+  GpuDeformationMap gpu(*context(), kSmall);
+  for (const auto& stamps : scriptedFrames(3.0, kCover)) gpu.apply(stamps);
+  std::vector<std::uint32_t> before(gpu.texels().heights.begin(), gpu.texels().heights.end());
+  std::vector<std::uint32_t> normalsBefore(gpu.texels().normals.begin(), gpu.texels().normals.end());
+  for (float x = 0.f; x <= 40.f; x += 0.9f) gpu.follow({x, 0.5f * x});
+  EXPECT_GT(gpu.store().tileCount(), 0u);
+  // New prints far away do not disturb the stored ones.
+  Stamp far = capsule({40.f, 20.f}, {41.f, 20.f}, 0.2f, kCover, 0.1f);
+  gpu.apply(std::span(&far, 1));
+  for (float x = 40.f; x >= 0.f; x -= 0.9f) gpu.follow({x, 0.5f * x});
+  gpu.follow({0.f, 0.f});
+  auto now = gpu.texels();
+  EXPECT_TRUE(std::equal(now.heights.begin(), now.heights.end(), before.begin()));
+  // Normals of restored tiles are regenerated from the same heights (by the CPU). The
+  // window's outermost texels are left out: their outward neighbour is clamped, so their
+  // normal depends on where the window stood when it was last computed.
+  const SnowWindow& w = gpu.window();
+  TexelRect inner = w.rect().grown(-1);
+  for (int z = inner.min.y; z < inner.min.y + inner.size.y; ++z)
+    for (int x = inner.min.x; x < inner.min.x + inner.size.x; ++x) {
+      std::size_t i = w.storageIndex({x, z});
+      ASSERT_GT(glm::dot(unpackNormal(now.normals[i]), unpackNormal(normalsBefore[i])), 0.999f) << x << "," << z;
+    }
+  // And the map still stamps correctly after the trip.
+  Stamp again = capsule({0.f, 0.f}, {0.f, 0.f}, 0.1f, SnowCover{0.3f}, 0.1f);
+  gpu.apply(std::span(&again, 1));
+  EXPECT_NEAR(gpu.depthAt({0.f, 0.f}), 0.1f, kDepthQuantum);
+}
+
+TEST_F(GpuDeformation, RefillReducesPrintDepthAtTheConfiguredRate) {
+  GpuDeformationMap gpu(*context(), kSmall);
+  Stamp s = capsule({0.f, 0.f}, {0.f, 0.f}, 0.3f, SnowCover{0.3f}, 0.1f);
+  gpu.apply(std::span(&s, 1));
+  const double rate = 0.02 / 3600.0;  // 2 cm per hour
+  for (int minute = 0; minute < 90; ++minute) gpu.refill(rate, 60.0);
+  EXPECT_NEAR(gpu.depthAt({0.f, 0.f}), 0.07f, 1.5f * kDepthQuantum);
+  // The wall is shallower now, so its normal tilts less.
+  DeformationMap cpu(kSmall);
+  cpu.apply(std::span(&s, 1));
+  for (int minute = 0; minute < 90; ++minute) cpu.refill(rate, 60.0);
+  EXPECT_LE(maxQuantaDifference(cpu.texels().heights, gpu.texels().heights), 0u);
+  glm::vec3 wall = gpu.normalAt({0.26f, 0.f});
+  EXPECT_NEAR(wall.x, cpu.normalAt({0.26f, 0.f}).x, 1e-3f);
+}
+
+}  // namespace
+}  // namespace wg::snow
