@@ -22,7 +22,8 @@ bool PrintTileStore::holds(glm::ivec2 tile) const { return tiles_.count(tile) !=
 std::size_t PrintTileStore::memoryBytes() const {
   std::size_t bytes = 0;
   for (const auto& [key, tile] : tiles_)
-    bytes += kNodeOverhead + sizeof(key) + sizeof(tile) + tile.heights.capacity() * sizeof(std::uint32_t);
+    bytes += kNodeOverhead + sizeof(key) + sizeof(tile) + tile.positions.capacity() * sizeof(std::uint16_t) +
+             tile.heights.capacity() * sizeof(std::uint32_t);
   return bytes;
 }
 

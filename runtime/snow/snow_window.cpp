@@ -16,6 +16,8 @@ SnowWindow::SnowWindow(const WindowSettings& settings) : settings_(settings) {
   if (settings.resolution == 0 || settings.tileTexels == 0 || settings.resolution % settings.tileTexels != 0 ||
       (settings.resolution / settings.tileTexels) % 2 != 0)
     throw std::invalid_argument("snow window: resolution must be an even number of tiles");
+  if (settings.tileTexels > kMaxTileTexels)
+    throw std::invalid_argument("snow window: tiles are at most 256 texels wide (16-bit positions in the store)");
   if (!(settings.texelSize > 0.f) || !std::isfinite(settings.texelSize))
     throw std::invalid_argument("snow window: texel size must be positive");
 }

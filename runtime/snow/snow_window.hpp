@@ -32,6 +32,7 @@ struct WindowSettings {
   // coarse enough that the store holds few, 4 KiB tiles.
   std::uint32_t tileTexels = 32;
 };
+inline constexpr std::uint32_t kMaxTileTexels = 256;
 
 class SnowWindow {
  public:

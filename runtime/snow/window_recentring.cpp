@@ -21,19 +21,21 @@ bool evictTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, Prin
                std::uint64_t refillQuanta) {
   int n = window.tileTexels();
   StoredTile stored;
-  stored.heights.resize(std::size_t(n) * n);
   stored.refillAtEviction = refillQuanta;
-  bool deformed = false;
   for (int z = 0; z < n; ++z)
     for (int x = 0; x < n; ++x) {
       std::size_t slot = window.storageIndex(tile * n + glm::ivec2(x, z));
       std::uint32_t value = std::exchange(texels.heights[slot], 0u);
       texels.normals[slot] = 0;  // packNormal of straight up
-      stored.heights[std::size_t(z) * n + x] = value;
-      deformed |= value != 0;
+      if (value == 0) continue;
+      stored.positions.push_back(static_cast<std::uint16_t>(z * n + x));
+      stored.heights.push_back(value);
     }
-  if (deformed) store.put(tile, std::move(stored));
-  return deformed;
+  if (stored.heights.empty()) return false;
+  stored.positions.shrink_to_fit();
+  stored.heights.shrink_to_fit();
+  store.put(tile, std::move(stored));
+  return true;
 }
 
 bool restoreTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, PrintTileStore& store,
@@ -43,10 +45,10 @@ bool restoreTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, Pr
   std::uint64_t missed = refillQuanta - stored->refillAtEviction;
   auto quanta = static_cast<std::uint32_t>(std::min<std::uint64_t>(missed, kMaxQuanta));
   int n = window.tileTexels();
-  for (int z = 0; z < n; ++z)
-    for (int x = 0; x < n; ++x)
-      texels.heights[window.storageIndex(tile * n + glm::ivec2(x, z))] =
-          refillTexel(stored->heights[std::size_t(z) * n + x], quanta);
+  for (std::size_t i = 0; i < stored->heights.size(); ++i) {
+    glm::ivec2 at(stored->positions[i] % n, stored->positions[i] / n);
+    texels.heights[window.storageIndex(tile * n + at)] = refillTexel(stored->heights[i], quanta);
+  }
   return true;
 }
 

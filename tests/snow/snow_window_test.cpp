@@ -53,6 +53,7 @@ TEST(SnowWindow, RejectsResolutionsThatAreNotAnEvenNumberOfTiles) {
   EXPECT_THROW(SnowWindow({100, 0.04f, 32}), std::invalid_argument);
   EXPECT_THROW(SnowWindow({96, 0.04f, 32}), std::invalid_argument);
   EXPECT_THROW(SnowWindow({128, 0.f, 32}), std::invalid_argument);
+  EXPECT_THROW(SnowWindow({1024, 0.04f, 512}), std::invalid_argument);
 }
 
 }  // namespace
