@@ -5,11 +5,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "cli/atomic_file.hpp"
+#include "cli/material_outputs.hpp"
+#include "cli/variant_plan.hpp"
+#include "compiler/variant_index.hpp"
 #include "compiler/batch_compile.hpp"
 #include "cli/depfile.hpp"
 #include "cli/progress_line.hpp"
@@ -33,6 +38,8 @@ Writes, for each material NAME:
   NAME.vert.es.glsl NAME.frag.es.glsl                              (--target glsles)
   NAME.reflect.json                                                (always)
   NAME.hpp                                                         (--emit-header)
+With --variants, each file set is named NAME.HASH.* after its content hash, so variants
+with identical shaders share one set, and NAME.variants.json maps each variant to it.
 
 Options:
   -o DIR, --output DIR       output directory (created if missing)
@@ -49,6 +56,9 @@ Options:
                              every offset (docs/engine-api.md)
   --depfile FILE             write a Make-syntax depfile: each material's outputs
                              depend on its graph and its image files
+  --variants all|LIST        compile static-switch variants (docs/graph-format.md): all
+                             permutations, or LIST = SWITCH[=VALUE|VALUE...],... where a
+                             bare SWITCH means all its values; others keep their default
   --weather-preset NAME      weather preset for every graph, replacing the graph's own
                              (rock, terrain, foliage, river, road, none)
   --diagnostics text|json    diagnostic format on stderr (default: text)
@@ -58,11 +68,7 @@ Options:
 Outputs are written atomically and only when every graph compiles.
 )";
 
-struct Targets {
-  bool glsl = false, hlsl = false, spirv = false, msl = false, glslEs = false;
-};
-
-bool parseTargets(const std::string& list, Targets& t, std::string& error) {
+bool parseTargets(const std::string& list, OutputTargets& t, std::string& error) {
   std::size_t start = 0;
   while (start <= list.size()) {
     std::size_t comma = list.find(',', start);
@@ -86,40 +92,54 @@ bool parseTargets(const std::string& list, Targets& t, std::string& error) {
 struct Options {
   std::vector<std::string> graphs;
   std::string outputDir;
-  Targets targets;
+  OutputTargets targets;
   bool optimize = false;
   bool json = false;
   bool quiet = false;
   std::optional<std::string> weatherPreset;
   int jobs = 0;  // 0: one per core
   std::string depfile;
-  bool emitHeader = false;
+  std::optional<VariantSelection> variants;
 };
 
+// The same diagnostic from several variants of one graph is printed once.
+void appendUnique(std::vector<Diagnostic>& all, Diagnostic d) {
+  for (const auto& seen : all)
+    if (seen.code == d.code && seen.location.file == d.location.file && seen.location.pointer == d.location.pointer &&
+        seen.message == d.message)
+      return;
+  all.push_back(std::move(d));
+}
 
-// Returns the files a material writes, path -> bytes.
-std::map<std::string, std::string> outputsOf(const CompiledMaterial& m, const Options& o) {
+// One graph's compiled variants: their files (shared by identical variants) and, with
+// --variants, the index NAME.variants.json.
+struct GraphOutput {
+  std::string graph;
+  std::string stem;  // NAME, safe for file names
+  std::vector<const CompiledMaterial*> variants;
+  std::vector<SwitchValues> switches;
+};
+
+// path -> bytes for one graph. Identical variants have one content hash and so one file
+// set; the bytes are compared anyway, so a hash collision could never lose a shader.
+std::optional<std::map<std::string, std::string>> graphFiles(const GraphOutput& g, const std::vector<SwitchDecl>& declared,
+                                                             const Options& o, std::string& error) {
   std::map<std::string, std::string> files;
-  std::filesystem::path dir(o.outputDir);
-  for (const auto& s : m.stages) {
-    bool wantSource = s.language == ShaderLanguage::Glsl ? o.targets.glsl : o.targets.hlsl;
-    if (wantSource) files[(dir / (m.fileStem + "." + stageFileSuffix(s.language, s.stage))).string()] = s.source;
-    if (o.targets.spirv) {
-      std::string base = m.fileStem + "." + std::string(languageName(s.language)) +
-                         (s.stage == ShaderStage::Vertex ? ".vert" : ".frag");
-      files[(dir / (base + ".spv")).string()] =
-          std::string(reinterpret_cast<const char*>(s.spirv.data()), s.spirv.size() * sizeof(std::uint32_t));
-      files[(dir / (base + ".spvasm")).string()] = s.disassembly;
+  std::vector<VariantEntry> entries;
+  for (std::size_t v = 0; v < g.variants.size(); ++v) {
+    const CompiledMaterial& m = *g.variants[v];
+    for (auto& [path, bytes] : materialOutputs(m, o.targets, o.outputDir)) {
+      auto [it, inserted] = files.emplace(path, std::move(bytes));
+      if (!inserted && it->second != bytes) {
+        error = "two variants of " + quoteUserText(g.graph) + " differ but share the content hash " + m.contentHash;
+        return std::nullopt;
+      }
     }
-    // One translation per stage: the GLSL stages' SPIR-V (the HLSL stages' is equivalent).
-    const char* stageName = s.stage == ShaderStage::Vertex ? ".vert" : ".frag";
-    if (s.language == ShaderLanguage::Glsl && o.targets.msl)
-      files[(dir / (m.fileStem + stageName + ".msl")).string()] = s.msl;
-    if (s.language == ShaderLanguage::Glsl && o.targets.glslEs)
-      files[(dir / (m.fileStem + stageName + ".es.glsl")).string()] = s.glslEs;
+    entries.push_back({g.switches[v], m.contentHash, m.fileStem});
   }
-  files[(dir / (m.fileStem + ".reflect.json")).string()] = m.reflectionJson;
-  if (o.emitHeader) files[(dir / (m.fileStem + ".hpp")).string()] = m.cppHeader;
+  if (o.variants)
+    files[(std::filesystem::path(o.outputDir) / (g.stem + ".variants.json")).string()] =
+        buildVariantIndexJson(g.variants.front()->name, declared, entries);
   return files;
 }
 
@@ -159,7 +179,7 @@ int runCompileCommand(int argc, char** argv) {
       continue;
     }
     if (cl.flag("--emit-header")) {
-      o.emitHeader = true;
+      o.targets.header = true;
       continue;
     }
     if (cl.flag("-q") || cl.flag("--quiet")) {
@@ -202,6 +222,12 @@ int runCompileCommand(int argc, char** argv) {
       o.depfile = *v;
       continue;
     }
+    if (auto v = cl.valueFor("--variants", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
+      o.variants = parseVariantSelection(*v, error);
+      if (!o.variants) return usageError(error, o.json);
+      continue;
+    }
     if (auto v = cl.valueFor("--diagnostics", error); v || !error.empty()) {
       if (!v) return usageError(error, o.json);
       if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
@@ -215,73 +241,100 @@ int runCompileCommand(int argc, char** argv) {
   if (o.graphs.empty()) return usageError("no input graphs", o.json);
   if (o.outputDir.empty()) return usageError("no output directory; pass -o DIR", o.json);
 
+  VariantPlan plan;
+  if (std::string e = planVariants(o.graphs, o.variants, plan); !e.empty()) return usageError(e, o.json);
+
   CompileOptions options;
   options.emitSpirv = o.targets.spirv;
   options.emitMsl = o.targets.msl;
   options.emitGlslEs = o.targets.glslEs;
-  options.emitCppHeader = o.emitHeader;
+  options.emitCppHeader = o.targets.header;
   options.optimize = o.optimize;
   options.weatherPreset = o.weatherPreset;
+  options.hashKeyedFileStem = o.variants.has_value();
   std::vector<Diagnostic> diagnostics;
-  std::vector<CompiledMaterial> materials;
-  std::map<std::string, std::string> stemOwner;
   bool internal = false;
   int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // Progress only for people: on a terminal, and not with -q or JSON diagnostics.
-  ProgressLine progress(o.graphs.size(), !o.quiet && !o.json && ::isatty(STDERR_FILENO));
-  std::vector<CompileResult> results = compileBatch(o.graphs, options, jobs, [&](std::size_t index, std::size_t done) {
-    progress.update(done, o.graphs[index]);
+  ProgressLine progress(plan.jobs.size(), !o.quiet && !o.json && ::isatty(STDERR_FILENO));
+  std::vector<CompileResult> results = compileBatch(plan.jobs, options, jobs, [&](std::size_t index, std::size_t done) {
+    const CompileJob& job = plan.jobs[index];
+    progress.update(done, job.switches.empty() ? job.graph : job.graph + " [" + variantName(job.switches) + "]");
   });
   progress.finish();
-  for (std::size_t g = 0; g < o.graphs.size(); ++g) {
-    const std::string& graph = o.graphs[g];
-    CompileResult& r = results[g];
+
+  std::vector<GraphOutput> outputs(o.graphs.size());
+  for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
+    CompileResult& r = results[j];
     for (auto& d : r.diagnostics.items()) {
       internal = internal || d.info().category == DiagCategory::Internal;
-      diagnostics.push_back(std::move(d));
+      appendUnique(diagnostics, std::move(d));
     }
     if (!r.material) continue;
-    auto [it, inserted] = stemOwner.emplace(r.material->fileStem, graph);
+    GraphOutput& g = outputs[plan.graphOf[j]];
+    g.graph = plan.jobs[j].graph;
+    g.stem = fileStemFor(r.material->name);
+    g.variants.push_back(&*r.material);
+    g.switches.push_back(plan.jobs[j].switches);
+  }
+  std::map<std::string, std::string> stemOwner;
+  for (const auto& g : outputs) {
+    if (g.variants.empty()) continue;
+    auto [it, inserted] = stemOwner.emplace(g.stem, g.graph);
     if (!inserted) {
       DiagnosticList list;
-      list.report(DiagCode::InvalidSetting, {graph, "/name", 0, 0},
-                  {"material '" + quoteUserText(r.material->name) + "' writes the same files as " + quoteUserText(it->second),
+      list.report(DiagCode::InvalidSetting, {g.graph, "/name", 0, 0},
+                  {"material '" + quoteUserText(g.variants.front()->name) + "' writes the same files as " + quoteUserText(it->second),
                    "give each material in one batch a distinct name"});
       diagnostics.push_back(list.items().front());
-      continue;
     }
-    materials.push_back(std::move(*r.material));
   }
   bool failed = false;
   for (const auto& d : diagnostics) failed = failed || d.info().severity == Severity::Error;
   if (!diagnostics.empty()) printDiagnostics(diagnostics, o.json);
   if (failed) return internal ? kExitInternal : kExitBadInput;
 
+  // Every file is known before the first is written.
+  std::vector<std::map<std::string, std::string>> filesOf;
+  for (std::size_t g = 0; g < outputs.size(); ++g) {
+    std::string error;
+    auto files = graphFiles(outputs[g], plan.switchesOf[g], o, error);
+    if (!files) {
+      DiagnosticList list;
+      list.report(DiagCode::InternalException, {outputs[g].graph, "", 0, 0}, {error});
+      printDiagnostics(list.items(), o.json);
+      return kExitInternal;
+    }
+    filesOf.push_back(std::move(*files));
+  }
   std::error_code ec;
   std::filesystem::create_directories(o.outputDir, ec);
   if (ec) return usageError("cannot create output directory '" + quoteUserText(o.outputDir) + "'", o.json);
-  std::size_t written = 0;
+  std::size_t written = 0, compiled = 0;
   std::vector<DepfileRule> rules;
-  for (std::size_t k = 0; k < materials.size(); ++k) {
-    const CompiledMaterial& m = materials[k];
+  for (std::size_t g = 0; g < outputs.size(); ++g) {
     DepfileRule rule;
-    for (const auto& [path, bytes] : outputsOf(m, o)) {
+    for (const auto& [path, bytes] : filesOf[g]) {
       if (std::string werror = writeFileAtomically(path, bytes); !werror.empty())
         return usageError(werror, o.json);
       rule.outputs.push_back(path);
       ++written;
     }
-    rule.inputs.push_back(stemOwner.at(m.fileStem));
-    for (const auto& t : m.ir.textures)
-      if (!t.file.empty()) rule.inputs.push_back(t.resolvedPath);
+    rule.inputs.push_back(outputs[g].graph);
+    std::set<std::string> textures;
+    for (const CompiledMaterial* m : outputs[g].variants)
+      for (const auto& t : m->ir.textures)
+        if (!t.file.empty()) textures.insert(t.resolvedPath);
+    rule.inputs.insert(rule.inputs.end(), textures.begin(), textures.end());
     rules.push_back(std::move(rule));
+    compiled += outputs[g].variants.size();
   }
   if (!o.depfile.empty())
     if (std::string werror = writeFileAtomically(o.depfile, formatDepfile(rules)); !werror.empty())
       return usageError(werror, o.json);
   if (!o.quiet && !o.json && ::isatty(STDOUT_FILENO))
-    std::printf("compiled %zu material%s, wrote %zu files to %s\n", materials.size(), materials.size() == 1 ? "" : "s",
-                written, o.outputDir.c_str());
+    std::printf("compiled %zu material%s (%zu variant%s), wrote %zu files to %s\n", outputs.size(),
+                outputs.size() == 1 ? "" : "s", compiled, compiled == 1 ? "" : "s", written, o.outputDir.c_str());
   return kExitOk;
 }
 

@@ -6,13 +6,16 @@
 
 namespace wg {
 
-std::vector<CompileResult> compileBatch(const std::vector<std::string>& graphs, const CompileOptions& options, int jobs,
+std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, const CompileOptions& options, int jobs,
                                         const std::function<void(std::size_t, std::size_t)>& onDone) {
+  const std::vector<CompileJob>& graphs = batch;
   std::vector<CompileResult> results(graphs.size());
   std::mutex reportLock;
   std::size_t completed = 0;
   auto compileOne = [&](std::size_t i) {
-    results[i] = compileMaterialFile(graphs[i], options);
+    CompileOptions variant = options;
+    variant.switches = graphs[i].switches;
+    results[i] = compileMaterialFile(graphs[i].graph, variant);
     std::lock_guard<std::mutex> lock(reportLock);
     ++completed;
     if (onDone) onDone(i, completed);
@@ -31,6 +34,13 @@ std::vector<CompileResult> compileBatch(const std::vector<std::string>& graphs, 
   worker();
   for (auto& t : pool) t.join();
   return results;
+}
+
+std::vector<CompileResult> compileBatch(const std::vector<std::string>& graphs, const CompileOptions& options, int jobs,
+                                        const std::function<void(std::size_t, std::size_t)>& onDone) {
+  std::vector<CompileJob> batch;
+  for (const auto& g : graphs) batch.push_back({g, options.switches});
+  return compileBatch(batch, options, jobs, onDone);
 }
 
 }  // namespace wg

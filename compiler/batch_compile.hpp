@@ -9,8 +9,17 @@
 
 namespace wg {
 
+// One compile of a batch: a graph file and the variant (static switch values) to build.
+struct CompileJob {
+  std::string graph;
+  SwitchValues switches;
+};
+
 // onDone(index, completedCount) is called after each graph, from the worker that did
 // it, one call at a time.
+std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, const CompileOptions& options, int jobs,
+                                        const std::function<void(std::size_t, std::size_t)>& onDone = {});
+// Every graph with its default variant.
 std::vector<CompileResult> compileBatch(const std::vector<std::string>& graphs, const CompileOptions& options, int jobs,
                                         const std::function<void(std::size_t, std::size_t)>& onDone = {});
 

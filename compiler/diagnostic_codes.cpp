@@ -48,6 +48,8 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
      "{1}"},
     {InvalidParameter, "WG2013", E, In, "invalid-parameter", "parameter '{0}': {1}", "{2}"},
     {InvalidSetting, "WG2014", E, In, "invalid-setting", "{0}", "{1}"},
+    {UnknownSwitch, "WG2015", E, In, "unknown-switch", "switch '{0}' is not declared", "{1}"},
+    {InvalidSwitch, "WG2016", E, In, "invalid-switch", "switch '{0}': {1}", "{2}"},
     {UnknownTexture, "WG3001", E, In, "unknown-texture", "texture '{0}' is not declared",
      "{1}"},
     {TextureFileMissing, "WG3002", E, In, "texture-file-missing",

@@ -36,6 +36,8 @@ enum class DiagCode : std::uint16_t {
   UnknownParameter,
   InvalidParameter,
   InvalidSetting,
+  UnknownSwitch,
+  InvalidSwitch,
   UnknownTexture,
   TextureFileMissing,
   TextureUnsupported,

@@ -1,12 +1,14 @@
 #include "compiler/graph_loader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "compiler/literal.hpp"
+#include "compiler/static_switches.hpp"
 #include "nodes/image_file.hpp"
 #include "nodes/texture_generators.hpp"
 
@@ -46,6 +48,24 @@ std::optional<std::int64_t> integralValue(const nlohmann::json& j) {
   return static_cast<std::int64_t>(d);
 }
 
+// Switch names and values appear in variant names ("quality=low,snow=on") and on the
+// command line, so they are plain words.
+constexpr std::size_t kMaxSwitchValues = 16;
+constexpr const char* kSwitchWordHint = "use letters, digits, '_' and '-' only, starting with a letter";
+
+bool isSwitchWord(std::string_view word) {
+  constexpr std::size_t kMaxWord = 32;
+  if (word.empty() || word.size() > kMaxWord || !std::isalpha(static_cast<unsigned char>(word[0]))) return false;
+  return std::all_of(word.begin(), word.end(),
+                     [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
+}
+
+std::string joinWords(const std::vector<std::string>& words) {
+  std::string out;
+  for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
 // Texture sizes: powers of two keep procedural tiles seamless and mips complete.
 constexpr int kMinTextureSize = 16;
 constexpr int kMaxTextureSize = 2048;
@@ -57,8 +77,8 @@ class Loader {
   std::optional<MaterialGraph> run() {
     const auto& root = doc_.root();
     if (!expectKind(root, "", nlohmann::json::value_t::object, "the document", "an object")) return std::nullopt;
-    checkFields(root, "", {"$schema", "name", "description", "parameters", "textures", "nodes", "output", "weather",
-                           "alphaCutoff"});
+    checkFields(root, "", {"$schema", "name", "description", "parameters", "textures", "switches", "nodes", "output",
+                           "weather", "alphaCutoff"});
     graph_.sourceFile = doc_.file();
     if (auto* name = required(root, "", "name", nlohmann::json::value_t::string, "a string")) {
       graph_.name = name->get<std::string>();
@@ -68,6 +88,8 @@ class Loader {
       for (const auto& [key, value] : root["parameters"].items()) loadParameter(key, value);
     if (root.contains("textures") && expectKind(root["textures"], "/textures", nlohmann::json::value_t::object, "'textures'", "an object"))
       for (const auto& [key, value] : root["textures"].items()) loadTexture(key, value);
+    if (root.contains("switches") && expectKind(root["switches"], "/switches", nlohmann::json::value_t::object, "'switches'", "an object"))
+      for (const auto& [key, value] : root["switches"].items()) loadSwitch(key, value);
     if (auto* nodes = required(root, "", "nodes", nlohmann::json::value_t::array, "an array"))
       for (std::size_t i = 0; i < nodes->size(); ++i) loadNode((*nodes)[i], appendPointer("/nodes", i));
     if (auto* output = required(root, "", "output", nlohmann::json::value_t::object, "an object"))
@@ -330,7 +352,7 @@ class Loader {
 
   void loadNode(const nlohmann::json& j, const std::string& pointer) {
     if (!expectKind(j, pointer, nlohmann::json::value_t::object, "a node", "an object")) return;
-    checkFields(j, pointer, {"id", "op", "inputs", "param", "description"});
+    checkFields(j, pointer, {"id", "op", "inputs", "param", "switch", "cases", "description"});
     NodeDecl n;
     n.pointer = pointer;
     auto* id = required(j, pointer, "id", nlohmann::json::value_t::string, "a string");
@@ -340,6 +362,14 @@ class Loader {
     n.op = op->get<std::string>();
     if (n.id.empty()) report(DiagCode::InvalidSetting, appendPointer(pointer, "id"), {"the node id is empty", "give the node an id"});
     if (auto* param = optionalString(j, pointer, "param")) n.param = param->get<std::string>();
+    if (n.op == kSwitchOp) {
+      loadSwitchNode(j, n);
+      graph_.nodes.push_back(std::move(n));
+      return;
+    }
+    for (const char* field : {"switch", "cases"})
+      if (j.contains(field))
+        report(DiagCode::UnknownField, appendPointer(pointer, field), {field, "only op 'switch' takes 'switch' and 'cases'"});
     if (j.contains("inputs")) {
       const auto& inputs = j["inputs"];
       std::string ip = appendPointer(pointer, "inputs");
@@ -348,6 +378,89 @@ class Loader {
           n.inputs.emplace_back(port, loadInput(value, appendPointer(ip, port)));
     }
     graph_.nodes.push_back(std::move(n));
+  }
+
+  // {"type": "bool", "default": true} or {"values": ["low", "high"], "default": "high"}.
+  void loadSwitch(const std::string& name, const nlohmann::json& j) {
+    std::string pointer = appendPointer("/switches", name);
+    if (!expectKind(j, pointer, nlohmann::json::value_t::object, "a switch", "an object")) return;
+    checkFields(j, pointer, {"type", "values", "default", "description"});
+    std::string shown = quoteUserText(name);
+    SwitchDecl sw;
+    sw.name = name;
+    sw.pointer = pointer;
+    if (!isSwitchWord(name))
+      report(DiagCode::InvalidSwitch, pointer, {shown, "the name is not a plain word", kSwitchWordHint});
+    bool isBool = false;
+    if (auto* type = optionalString(j, pointer, "type")) {
+      isBool = type->get<std::string>() == "bool";
+      if (!isBool)
+        report(DiagCode::InvalidSwitch, appendPointer(pointer, "type"),
+               {shown, "type '" + quoteUserText(type->get<std::string>()) + "' is not a switch type",
+                "use \"type\": \"bool\", or list the choices in \"values\""});
+    }
+    if (isBool == j.contains("values")) {
+      report(DiagCode::InvalidSwitch, pointer, {shown, "it needs exactly one of \"type\": \"bool\" and \"values\"",
+                                                "write {\"type\": \"bool\", \"default\": true} or {\"values\": [\"low\", \"high\"], \"default\": \"high\"}"});
+      return;
+    }
+    if (isBool) {
+      sw.values = {std::string(kSwitchOff), std::string(kSwitchOn)};
+    } else {
+      std::string vp = appendPointer(pointer, "values");
+      const auto& values = j["values"];
+      if (!expectKind(values, vp, nlohmann::json::value_t::array, "'values'", "an array of strings")) return;
+      if (values.size() < 2 || values.size() > kMaxSwitchValues) {
+        report(DiagCode::InvalidSwitch, vp, {shown, "it lists " + std::to_string(values.size()) + " values",
+                                             "list 2 to " + std::to_string(kMaxSwitchValues) + " values"});
+        return;
+      }
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        std::string at = appendPointer(vp, i);
+        if (!expectKind(values[i], at, nlohmann::json::value_t::string, "a switch value", "a string")) return;
+        std::string v = values[i].get<std::string>();
+        if (!isSwitchWord(v)) {
+          report(DiagCode::InvalidSwitch, at, {shown, "value '" + quoteUserText(v) + "' is not a plain word", kSwitchWordHint});
+          return;
+        }
+        if (std::find(sw.values.begin(), sw.values.end(), v) != sw.values.end()) {
+          report(DiagCode::InvalidSwitch, at, {shown, "value '" + v + "' is listed twice", "list each value once"});
+          return;
+        }
+        sw.values.push_back(v);
+      }
+    }
+    auto it = j.find("default");
+    if (it == j.end()) {
+      report(DiagCode::MissingField, pointer, {"default"});
+      return;
+    }
+    std::string dp = appendPointer(pointer, "default");
+    if (isBool) {
+      if (!expectKind(*it, dp, nlohmann::json::value_t::boolean, "the default of a bool switch", "true or false")) return;
+      sw.defaultValue = it->get<bool>() ? kSwitchOn : kSwitchOff;
+    } else {
+      if (!expectKind(*it, dp, nlohmann::json::value_t::string, "the default", "one of the values")) return;
+      sw.defaultValue = it->get<std::string>();
+      if (std::find(sw.values.begin(), sw.values.end(), sw.defaultValue) == sw.values.end()) {
+        report(DiagCode::InvalidSwitch, dp, {shown, "the default '" + quoteUserText(sw.defaultValue) + "' is not one of its values",
+                                             "use one of: " + joinWords(sw.values)});
+        return;
+      }
+    }
+    graph_.switches.push_back(std::move(sw));
+  }
+
+  // {"id": "detail", "op": "switch", "switch": "quality", "cases": {"low": 0.5, "high": "noise.out"}}
+  void loadSwitchNode(const nlohmann::json& j, NodeDecl& n) {
+    if (j.contains("inputs"))
+      report(DiagCode::UnknownField, appendPointer(n.pointer, "inputs"), {"inputs", "op 'switch' takes 'cases', one source per switch value"});
+    if (auto* name = required(j, n.pointer, "switch", nlohmann::json::value_t::string, "a string"))
+      n.switchName = name->get<std::string>();
+    if (auto* cases = required(j, n.pointer, "cases", nlohmann::json::value_t::object, "an object")) {
+      std::string cp = appendPointer(n.pointer, "cases");
+      for (const auto& [value, source] : cases->items()) n.cases.emplace_back(value, loadInput(source, appendPointer(cp, value)));
+    }
   }
 
   void loadOutput(const nlohmann::json& j) {

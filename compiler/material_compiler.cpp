@@ -37,7 +37,7 @@ std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string tex
   auto document = parseJsonDocument(file, std::move(text), diagnostics);
   if (!document) return std::nullopt;
   auto graph = loadMaterialGraph(*document, diagnostics);
-  if (!graph) return std::nullopt;
+  if (!graph || !resolveStaticSwitches(*graph, options.switches, *document, diagnostics)) return std::nullopt;
   IrBuildOptions buildOptions;
   buildOptions.weatherPreset = options.weatherPreset;
   auto ir = buildIr(*graph, *document, diagnostics, buildOptions);
@@ -134,8 +134,8 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
   if (!ir) return result;
   CompiledMaterial material;
   material.name = ir->name;
-  material.fileStem = fileStemFor(ir->name);
   material.contentHash = contentHash(*ir);
+  material.fileStem = fileStemFor(ir->name) + (options.hashKeyedFileStem ? "." + material.contentHash : "");
   MaterialInterface mi = buildMaterialInterface(*ir);
   std::vector<std::string> names = nameNodes(*ir, mi);
   for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})

@@ -10,6 +10,7 @@
 #include "compiler/diagnostic.hpp"
 #include "compiler/ir.hpp"
 #include "compiler/material_interface.hpp"
+#include "compiler/static_switches.hpp"
 
 namespace wg {
 
@@ -22,6 +23,9 @@ struct CompileOptions {
   // SPIRV-Cross translations of each stage's validated, pre-optimisation SPIR-V
   // (--target msl / glsles); they need SPIR-V, which is then compiled even without emitSpirv.
   bool emitMsl = false, emitGlslEs = false;
+  // Files named NAME.HASH.* (content hash), so identical variants share them (--variants).
+  bool hashKeyedFileStem = false;
+  SwitchValues switches;  // the variant: static switch values; unnamed switches keep their default
 };
 
 struct CompiledStage {
@@ -35,7 +39,7 @@ struct CompiledStage {
 
 struct CompiledMaterial {
   std::string name;         // as declared
-  std::string fileStem;     // safe for file names
+  std::string fileStem;     // safe for file names: NAME, or NAME.HASH with hashKeyedFileStem
   std::string contentHash;
   IrGraph ir;               // after the pass pipeline
   std::vector<CompiledStage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag

@@ -44,11 +44,24 @@ struct TextureDecl {
   std::string pointer;
 };
 
+// A static switch: a compile-time choice among named values. Each permutation of a
+// graph's switches is one shader variant (docs/graph-format.md, "Static switches").
+struct SwitchDecl {
+  std::string name;
+  std::vector<std::string> values;  // declared order; a bool switch is ["off", "on"]
+  std::string defaultValue;
+  std::string pointer;
+};
+
 struct NodeDecl {
   std::string id;
   std::string op;
   std::string param;  // for op "parameter"
   std::vector<std::pair<std::string, InputSource>> inputs;
+  // Op "switch": the switch it follows and one source per switch value. It is resolved
+  // before typing, so it never reaches the IR.
+  std::string switchName;
+  std::vector<std::pair<std::string, InputSource>> cases;
   std::string pointer;
 };
 
@@ -57,6 +70,7 @@ struct MaterialGraph {
   std::string sourceFile;
   std::vector<ParameterDecl> parameters;  // sorted by name
   std::vector<TextureDecl> textures;      // sorted by name
+  std::vector<SwitchDecl> switches;       // sorted by name
   std::vector<NodeDecl> nodes;            // file order
   std::map<PbrField, InputSource> outputs;
   std::optional<nlohmann::json> weather;

@@ -59,6 +59,7 @@ Result compileOrThrow(std::string_view fileName, std::string_view json, const Op
   internal.optimize = options.optimize;
   if (!options.weatherPreset.empty()) internal.weatherPreset = options.weatherPreset;
   internal.emitCppHeader = options.cppHeader;
+  internal.switches = wg::SwitchValues(options.switches.begin(), options.switches.end());
   wg::CompileResult compiled = wg::compileMaterialText(std::string(fileName), std::string(json), internal);
   for (const auto& d : compiled.diagnostics.items()) result.diagnostics.push_back(publicDiagnostic(d));
   if (!compiled.material || compiled.diagnostics.hasErrors()) return result;

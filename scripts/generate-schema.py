@@ -161,16 +161,27 @@ for op in ops:
         then["required"] = ["param"]
     opBranches.append({"if": {"properties": {"op": {"const": op["name"]}}, "required": ["op"]}, "then": then})
 opBranches.append({"if": {"not": {"properties": {"op": {"const": "parameter"}}}}, "then": {"not": {"required": ["param"]}}})
+# Op "switch" is resolved before typing (compiler/static_switches.cpp), so it is not in
+# the op registry: it follows a declared switch and has one case per switch value.
+opBranches.append({"if": {"properties": {"op": {"const": "switch"}}, "required": ["op"]},
+                   "then": {"description": "switch: the case of the chosen variant's switch value; output: out",
+                            "required": ["switch", "cases"], "not": {"required": ["inputs"]}},
+                   "else": {"not": {"anyOf": [{"required": ["switch"]}, {"required": ["cases"]}]}}})
 
 defs["node"] = {
     "type": "object", "required": ["id", "op"], "additionalProperties": False,
     "properties": {
         "id": {"type": "string", "minLength": 1, "description": "unique node id; other nodes link to \"id.output\""},
-        "op": {"enum": [o["name"] for o in ops],
-               "enumDescriptions": [f'{o["category"]}: {o["summary"]}' for o in ops]},
+        "op": {"enum": [o["name"] for o in ops] + ["switch"],
+               "enumDescriptions": [f'{o["category"]}: {o["summary"]}' for o in ops] +
+                                   ["static switch: one case per value of a declared switch"]},
         "inputs": {"type": "object", "additionalProperties": {"$ref": "#/$defs/inputValue"},
                    "description": "port name -> link \"nodeId.output\", literal, texture name or swizzle channels"},
         "param": {"type": "string", "description": "op parameter only: the name of a declared parameter"},
+        "switch": {"$ref": "#/$defs/switchWord", "description": "op switch only: the name of a declared switch"},
+        "cases": {"type": "object", "propertyNames": {"$ref": "#/$defs/switchWord"},
+                  "additionalProperties": {"$ref": "#/$defs/inputValue"},
+                  "description": "op switch only: switch value -> link or literal, one for every value"},
         "description": {"type": "string"},
     },
     "allOf": opBranches,
@@ -190,6 +201,9 @@ schema = {
         "parameters": {"type": "object", "propertyNames": {"minLength": 1},
                        "additionalProperties": {"$ref": "#/$defs/parameter"}},
         "textures": {"type": "object", "additionalProperties": {"$ref": "#/$defs/texture"}},
+        "switches": {"type": "object", "propertyNames": {"$ref": "#/$defs/switchWord"},
+                     "additionalProperties": {"$ref": "#/$defs/switch"},
+                     "description": "static switches: each permutation is one shader variant (weathergen compile --variants)"},
         "nodes": {"type": "array", "items": {"$ref": "#/$defs/node"}},
         "output": {
             "type": "object", "additionalProperties": False,
@@ -214,6 +228,22 @@ schema = {
     "$defs": defs,
 }
 
+defs["switchWord"] = {"type": "string", "pattern": "^[A-Za-z][A-Za-z0-9_-]{0,31}$"}
+defs["switch"] = {"oneOf": [
+    {"type": "object", "required": ["type", "default"], "additionalProperties": False,
+     "description": "a bool switch: values off and on",
+     "properties": {"type": {"const": "bool"}, "default": {"type": "boolean"}, "description": {"type": "string"}}},
+    {"type": "object", "required": ["values", "default"], "additionalProperties": False,
+     "properties": {"values": {"type": "array", "items": {"$ref": "#/$defs/switchWord"}, "minItems": 2, "maxItems": 16,
+                               "uniqueItems": True},
+                    "default": {"$ref": "#/$defs/switchWord", "description": "one of values"},
+                    "description": {"type": "string"}}},
+]}
+defs["switchedEffect"] = {
+    "type": "object", "required": ["switch"], "additionalProperties": False,
+    "description": "on when a bool switch is on, or when the switch has one of the values in 'when'",
+    "properties": {"switch": {"$ref": "#/$defs/switchWord"},
+                   "when": {"type": "array", "items": {"$ref": "#/$defs/switchWord"}}}}
 defs["weatherPreset"] = {"enum": ["rock", "terrain", "foliage", "river", "road", "none"],
                          "description": "seed 000 chapter 5: rock (full prediction, displacement, terrain, moss, wetness), "
                                         "terrain (detail, height, wind), foliage (detail mask, density), river (frost then ice), "
@@ -226,7 +256,8 @@ defs["weatherBlock"] = {
         "preset": {"$ref": "#/$defs/weatherPreset"},
         "description": {"type": "string"},
         "effects": {"type": "object", "additionalProperties": False, "description": "switch a preset's effects on or off",
-                    "properties": {e: {"type": "boolean"} for e in effectNames}},
+                    "properties": {e: {"anyOf": [{"type": "boolean"}, {"$ref": "#/$defs/switchedEffect"}]}
+                                       for e in effectNames}},
         "weights": {"type": "array", "items": num(0, 16), "minItems": 4, "maxItems": 4,
                     "description": "eq. 3.1 weights [w1 sun, w2 wind, w3 height, w4 terrain]; become parameters weather.w1-w4"},
         "terms": {"type": "array", "items": {"enum": [0, 1]}, "minItems": 4, "maxItems": 4,

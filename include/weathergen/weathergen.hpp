@@ -8,6 +8,7 @@
 //    initialize(), after which compile() may run on any number of threads at once.
 #pragma once
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,9 @@ struct Options {
   bool optimize = false;       // spirv-opt's performance passes
   std::string weatherPreset;   // "" keeps the graph's own preset
   bool cppHeader = false;      // fill Result::cppHeader (std140 structs with static_asserts)
+  // The variant: static switch name -> value (docs/graph-format.md, "Static switches");
+  // switches not named keep their default. Unknown names or values are diagnostics.
+  std::map<std::string, std::string> switches;
 };
 
 struct Result {

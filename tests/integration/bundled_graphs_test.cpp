@@ -139,8 +139,9 @@ std::string shuffledAndRenamed(const std::string& text, unsigned seed) {
     if (it != renamed.end()) value = it->second + s.substr(dot);
   };
   for (auto& node : graph["nodes"])
-    if (node.contains("inputs"))
-      for (auto& [port, value] : node["inputs"].items()) relink(value);
+    for (const char* sources : {"inputs", "cases"})  // a switch node's cases are links too
+      if (node.contains(sources))
+        for (auto& [port, value] : node[sources].items()) relink(value);
   for (auto& [field, value] : graph["output"].items()) relink(value);
   std::mt19937 rng(seed);
   auto& nodes = graph["nodes"];

@@ -123,6 +123,21 @@ TEST(PublicApi, OptionsAreHonoured) {
   EXPECT_TRUE(hasCode(r, "WG4001")) << describe(r);
 }
 
+TEST(PublicApi, SwitchesChooseTheVariant) {
+  Graph g = rock();
+  weathergen::Options options;
+  options.spirv = false;
+  weathergen::Result high = weathergen::compile(g.file, g.text, options);
+  options.switches = {{"quality", "low"}};
+  weathergen::Result low = weathergen::compile(g.file, g.text, options);
+  ASSERT_TRUE(high.ok && low.ok) << describe(low);
+  EXPECT_NE(high.contentHash, low.contentHash);
+  options.switches = {{"quality", "ultra"}};
+  EXPECT_TRUE(hasCode(weathergen::compile(g.file, g.text, options), "WG2016"));
+  options.switches = {{"qualty", "low"}};
+  EXPECT_TRUE(hasCode(weathergen::compile(g.file, g.text, options), "WG2015"));
+}
+
 TEST(PublicApi, BadInputComesBackAsDiagnostics) {
   weathergen::Result r = weathergen::compile("broken.json", "{ \"name\": ");
   EXPECT_FALSE(r.ok);
