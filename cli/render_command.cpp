@@ -20,7 +20,9 @@
 #include "runtime/image/contact_sheet.hpp"
 #include "runtime/image/png_file.hpp"
 #include "runtime/scene_renderer.hpp"
+#include "runtime/snow/snowfield_scene.hpp"
 #include "runtime/timeline_renderer.hpp"
+#include "cli/snowfield_render.hpp"
 #include "runtime/weather/weather_timeline.hpp"
 
 namespace wg {
@@ -30,7 +32,9 @@ namespace {
 constexpr const char* kRenderUsage = R"(Usage: weathergen render --scene NAME -o OUT.png [options]
 
 Options:
-  --scene NAME              valley, rocks, river or road
+  --scene NAME              valley, rocks, river, road or snowfield (interactive snow:
+                            walkers, a vehicle and a camera that leaves and returns;
+                            writes OUT.png as a contact sheet and OUT.strip.png)
   --camera NAME             a camera preset of the scene (default: its first)
   --weather k=v,...         weather state, as 'weathergen eval --help' lists it
                             (temperature, precipitation, snowLevel, wetnessLevel, ...)
@@ -70,6 +74,49 @@ WeatherState weatherFromFrame(const FrameState& f) {
   return s;
 }
 
+
+// Sets the request's debug view from --aov and its weather from the --weather lists
+// over `inputs` (eval's names and checks). Returns a usage error, or "".
+std::string applyAovAndWeather(const std::string& aov, const std::vector<std::string>& weatherLists, EvalInputs inputs,
+                               RenderRequest& request) {
+  bool foundAov = false;
+  for (const auto& view : kDebugViews)
+    if (view.name == aov) {
+      request.debugView = view.id;
+      foundAov = true;
+    }
+  if (!foundAov) return "unknown --aov '" + quoteUserText(aov) + "'";
+  std::set<std::string> seen;
+  for (const auto& list : weatherLists)
+    if (std::string e = applyEvalInputList(list, EvalInputGroup::Weather, inputs, seen); !e.empty()) return e;
+  if (std::string e = finishEvalInputs(inputs); !e.empty()) return e;
+  request.weather = weatherFromFrame(inputs.frame);
+  return "";
+}
+
+// The snowfield: deep snow (level 1) on a cold, clear day with the scene's low sun,
+// unless --weather says otherwise.
+int renderSnowfieldScene(const std::vector<std::string>& weatherLists, RenderRequest request, const std::string& aov,
+                         const std::optional<std::string>& preset, const std::string& output, const std::string& framesDir,
+                         const std::string& device, const std::string& graphsDir, bool validation, bool quiet) {
+  constexpr float kColdDay = -6.f;
+  EvalInputs inputs = defaultEvalInputs();
+  glm::vec3 sun = snow::snowfieldTowardsSun();
+  inputs.frame.sunDirection = {sun.x, sun.y, sun.z};
+  inputs.frame.temperature = kColdDay;
+  inputs.frame.snowLevel = 1.f;
+  inputs.frame.sunIntensity = 1.f;
+  if (std::string e = applyAovAndWeather(aov, weatherLists, inputs, request); !e.empty()) return usageError(e);
+  request.weatherPreset = preset;
+  SnowfieldRenderOptions options{output, framesDir, device, graphsDir, request, validation,
+                                 !quiet && ::isatty(STDERR_FILENO)};
+  try {
+    return renderSnowfield(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "weathergen: error: %s\n", e.what());
+    return kExitInternal;
+  }
+}
 
 }  // namespace
 
@@ -130,9 +177,13 @@ int runRenderCommand(int argc, char** argv) {
     if (!error.empty()) return usageError(error);
     return usageError("unknown option '" + quoteUserText(cl.peek()) + "'");
   }
-  if (sceneName.empty()) return usageError("no scene; pass --scene NAME (valley, rocks, river or road)");
+  if (sceneName.empty()) return usageError("no scene; pass --scene NAME (valley, rocks, river, road or snowfield)");
   if (output.empty()) return usageError("no output; pass -o OUT.png");
   if (!timelinePath.empty() && !weatherLists.empty()) return usageError("--weather and --timeline exclude each other");
+  if (sceneName == snow::kSnowfieldScene) {
+    if (!timelinePath.empty() || !camera.empty()) return usageError("the snowfield scene has its own camera path and timeline");
+    return renderSnowfieldScene(weatherLists, request, aov, preset, output, framesDir, device, graphsDir, validation, quiet);
+  }
   auto scene = scene::makeScene(sceneName);
   if (!scene) {
     std::string names;
@@ -150,22 +201,11 @@ int runRenderCommand(int argc, char** argv) {
   }
   request.camera = camera;
   request.weatherPreset = preset;
-  bool foundAov = false;
-  for (const auto& view : kDebugViews)
-    if (view.name == aov) {
-      request.debugView = view.id;
-      foundAov = true;
-    }
-  if (!foundAov) return usageError("unknown --aov '" + quoteUserText(aov) + "'");
 
   // The weather: eval's names and checks; the sun comes from the scene unless given.
   EvalInputs inputs = defaultEvalInputs();
   inputs.frame.sunDirection = {scene->towardsSun.x, scene->towardsSun.y, scene->towardsSun.z};
-  std::set<std::string> seen;
-  for (const auto& list : weatherLists)
-    if (std::string e = applyEvalInputList(list, EvalInputGroup::Weather, inputs, seen); !e.empty()) return usageError(e);
-  if (std::string e = finishEvalInputs(inputs); !e.empty()) return usageError(e);
-  request.weather = weatherFromFrame(inputs.frame);
+  if (std::string e = applyAovAndWeather(aov, weatherLists, inputs, request); !e.empty()) return usageError(e);
 
   std::optional<WeatherTimeline> timeline;
   if (!timelinePath.empty()) {

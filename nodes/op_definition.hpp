@@ -41,6 +41,9 @@ struct SurfacePoint {
   std::array<float, 4> vertexColor{1.f, 1.f, 1.f, 1.f};
   // What the GPU reads from the shared weather maps at this point.
   float skyExposure = 1.f;  // 1: open sky; 0: fully sheltered
+  // The snow deformation map's texel: height offset (m), then the world normal.
+  std::array<float, 4> snowDeformation{0.f, 0.f, 1.f, 0.f};
+  float sunVisibility = 1.f;  // the sun shadow map's answer: 1 lit, 0 in shadow
 };
 
 // The CPU mirror of the frame and weather uniforms the weather ops read.
@@ -111,7 +114,8 @@ struct OpDef {
   CpuEval eval = nullptr;
   OpPurity purity = OpPurity::Pure;
   std::vector<const ShaderLibrary*> libraries;
-  // Shared weather maps the op samples (set 0): "terrainHeight", "skyExposure".
+  // Shared weather maps the op samples (set 0): "terrainHeight", "skyExposure",
+  // "snowDeformation".
   std::vector<std::string_view> weatherMaps;
 
   const PortSpec* findInput(std::string_view port) const;

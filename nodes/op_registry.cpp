@@ -29,6 +29,7 @@ struct Registry {
     appendProceduralOps(ops);
     appendNormalMapOps(ops);
     appendWeatherOps(ops);
+    appendSnowOps(ops);
     for (const auto& op : ops) sorted.push_back(&op);
     std::sort(sorted.begin(), sorted.end(),
               [](const OpDef* a, const OpDef* b) { return a->name < b->name; });

@@ -20,5 +20,6 @@ void appendTextureOps(std::vector<OpDef>& ops);
 void appendProceduralOps(std::vector<OpDef>& ops);
 void appendNormalMapOps(std::vector<OpDef>& ops);
 void appendWeatherOps(std::vector<OpDef>& ops);
+void appendSnowOps(std::vector<OpDef>& ops);
 
 }  // namespace wg

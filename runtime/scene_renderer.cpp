@@ -46,6 +46,11 @@ SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string g
   placeholderHeight_.upload(ctx_, &lowest, sizeof lowest);
   placeholderShadow_ = vk::Image2D(ctx_, 1, 1, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   placeholderShadow_.upload(ctx_, &lit, sizeof lit);
+  const float undeformed[4] = {0.f, 0.f, 1.f, 0.f};  // no height offset, normal straight up
+  placeholderDeformation_ = vk::Image2D(ctx_, 1, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                        VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  placeholderDeformation_.upload(ctx_, undeformed, sizeof undeformed);
+  linearRepeat_ = createSampler(ctx_, "repeat", "linear");
   shadowMap_ = vk::Image2D(ctx_, kShadowResolution, kShadowResolution, vk::kDepthFormat,
                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
   uploadTerrain();
@@ -64,6 +69,7 @@ SceneRenderer::~SceneRenderer() {
   vkDestroyQueryPool(d, timestamps_, nullptr);
   vkDestroySampler(d, linearClamp_, nullptr);
   vkDestroySampler(d, nearestClamp_, nullptr);
+  vkDestroySampler(d, linearRepeat_, nullptr);
   vkDestroyRenderPass(d, colourPass_, nullptr);
   vkDestroyRenderPass(d, depthPass_, nullptr);
 }
@@ -162,14 +168,20 @@ MaterialResources& SceneRenderer::material(const std::string& stem, const std::o
   return *slot;
 }
 
+namespace {
+glm::mat4 cameraViewProjection(const scene::CameraPreset& camera, std::uint32_t width, std::uint32_t height) {
+  glm::mat4 view = glm::lookAt(camera.eye, camera.target, glm::vec3(0.f, 1.f, 0.f));
+  glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDegrees), float(width) / float(height), kNearPlane, kFarPlane);
+  return flipY(projection) * view;
+}
+}  // namespace
+
 glm::mat4 SceneRenderer::viewProjection(const std::string& camera, std::uint32_t width, std::uint32_t height) const {
   const scene::CameraPreset* preset = scene_.cameras.empty() ? nullptr : &scene_.cameras.front();
   for (const auto& c : scene_.cameras)
     if (c.name == camera) preset = &c;
   if (!preset) throw std::runtime_error("scene '" + scene_.name + "' has no cameras");
-  glm::mat4 view = glm::lookAt(preset->eye, preset->target, glm::vec3(0.f, 1.f, 0.f));
-  glm::mat4 projection = glm::perspective(glm::radians(preset->fovYDegrees), float(width) / float(height), kNearPlane, kFarPlane);
-  return flipY(projection) * view;
+  return cameraViewProjection(*preset, width, height);
 }
 
 std::size_t SceneRenderer::gpuMemoryBytes() const {
@@ -233,8 +245,9 @@ struct DescriptorWriter {
 
 // The images a pass binds for the shared maps.
 struct SharedMaps {
-  VkImageView terrainHeight, skyExposure, sunShadow;
+  VkImageView terrainHeight, skyExposure, sunShadow, snowDeformation;
   VkSampler linear, nearest;  // depth formats need not be filterable; PCF filters
+  VkSampler repeat;           // the toroidal snow deformation map
 };
 
 // Allocates one object's set 0 (frame slice and shared maps) and set 1 (material)
@@ -252,9 +265,13 @@ std::array<VkDescriptorSet, 2> allocateMaterialSets(VkDevice device, VkDescripto
   const auto& refl = material.reflection();
   writer.buffer(sets[0], refl.frame.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBuffer, frameSize);
   for (const auto& map : refl.weatherMaps) {
-    bool shadow = map.name == "sunShadow";
-    writer.image(sets[0], map.binding, map.name == "terrainHeight" ? maps.terrainHeight : shadow ? maps.sunShadow : maps.skyExposure);
-    writer.sampler(sets[0], map.samplerBinding, shadow ? maps.nearest : maps.linear);
+    bool shadow = map.name == "sunShadow", deformation = map.name == "snowDeformation";
+    writer.image(sets[0], map.binding,
+                 map.name == "terrainHeight" ? maps.terrainHeight
+                 : shadow                    ? maps.sunShadow
+                 : deformation               ? maps.snowDeformation
+                                             : maps.skyExposure);
+    writer.sampler(sets[0], map.samplerBinding, shadow ? maps.nearest : deformation ? maps.repeat : maps.linear);
   }
   if (const vk::Buffer* params = material.parameterBuffer())
     writer.buffer(sets[1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);
@@ -331,9 +348,10 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   const scene::CameraPreset* camera = &scene_.cameras.front();
   for (const auto& c : scene_.cameras)
     if (c.name == request.camera) camera = &c;
+  if (request.cameraPose) camera = &*request.cameraPose;
   std::vector<PassSetup> passes;
   if (request.shadows) passes.push_back({PassKind::Shadow, light, camera->eye, exposureMap_.view(), placeholderShadow_.view()});
-  passes.push_back({PassKind::Colour, viewProjection(request.camera, request.width, request.height), camera->eye,
+  passes.push_back({PassKind::Colour, cameraViewProjection(*camera, request.width, request.height), camera->eye,
                     exposureMap_.view(), request.shadows ? shadowMap_.view() : placeholderShadow_.view()});
 
   RenderedFrame frame;
@@ -354,7 +372,8 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   for (std::size_t p = 0; p < passes.size(); ++p)
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       FrameUniforms f(frameBlock);
-      glm::mat4 model = objects_[i]->source->model;
+      auto moved = request.objectModels.find(objects_[i]->source->name);
+      glm::mat4 model = moved != request.objectModels.end() ? moved->second : objects_[i]->source->model;
       f.set("model", model);
       f.set("viewProjection", passes[p].viewProjection);
       f.set("normalMatrix", glm::transpose(glm::inverse(model)));
@@ -407,7 +426,9 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   std::vector<std::array<VkDescriptorSet, 2>> sets(passes.size() * objects_.size());
   for (std::size_t p = 0; p < passes.size(); ++p)
     for (std::size_t i = 0; i < objects_.size(); ++i) {
-      SharedMaps maps{terrainHeight_.view(), passes[p].exposureView, passes[p].shadowView, linearClamp_, nearestClamp_};
+      SharedMaps maps{terrainHeight_.view(), passes[p].exposureView, passes[p].shadowView,
+                      (snowDeformation_ ? *snowDeformation_ : placeholderDeformation_).view(), linearClamp_, nearestClamp_,
+                      linearRepeat_};
       sets[p * objects_.size() + i] =
           allocateMaterialSets(ctx_.device(), pool, *mats[i], mats[i]->pipeline(request.backend, colourPass_, depthPass_),
                                writer, frameBuffer.handle(), frameBlock.size, maps);
@@ -524,7 +545,8 @@ void SceneRenderer::buildExposureMap() {
     const auto& indices = scene_.objects[i].mesh.indices;
     indexBuffers.emplace_back(ctx_, indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     indexBuffers.back().write(indices.data(), indices.size() * sizeof(std::uint32_t));
-    SharedMaps maps{terrainHeight_.view(), placeholderHeight_.view(), placeholderShadow_.view(), linearClamp_, nearestClamp_};
+    SharedMaps maps{terrainHeight_.view(), placeholderHeight_.view(), placeholderShadow_.view(),
+                    placeholderDeformation_.view(), linearClamp_, nearestClamp_, linearRepeat_};
     sets[k] = allocateMaterialSets(ctx_.device(), pool, *mats[i], mats[i]->pipeline(ShaderLanguage::Glsl, colourPass_, depthPass_),
                                    writer, frameBuffer.handle(), frameBlock.size, maps);
   }

@@ -28,6 +28,10 @@ struct RenderRequest {
   // image; bind the unweathered variant then. GPUs skip the weather with one uniform
   // branch anyway, but lavapipe runs both sides of every branch under a mask.
   bool unweatheredVariantWhenNeutral = true;
+  // Per-frame model matrices for named objects (the camera-following snow layer).
+  std::map<std::string, glm::mat4> objectModels;
+  // A camera for this frame only, instead of the preset named by `camera`.
+  std::optional<scene::CameraPreset> cameraPose;
 };
 
 struct RenderedFrame {
@@ -52,6 +56,10 @@ class SceneRenderer {
   glm::vec4 exposureRegion() const { return exposureRegion_; }
   glm::mat4 viewProjection(const std::string& camera, std::uint32_t width, std::uint32_t height) const;
   std::size_t gpuMemoryBytes() const;
+  // The map materials sample as "snowDeformation" (docs/deformable-snow.md): RGBA32F,
+  // sampled with repeat so world xz / extent lands on the toroidal texel. Null: a flat
+  // 1x1 stand-in. The image must outlive the renders that use it.
+  void setSnowDeformation(const vk::Image2D* map) { snowDeformation_ = map; }
 
   static constexpr std::uint32_t kExposureResolution = 512;
   static constexpr std::uint32_t kShadowResolution = 2048;
@@ -71,8 +79,10 @@ class SceneRenderer {
   VkRenderPass colourPass_ = VK_NULL_HANDLE, depthPass_ = VK_NULL_HANDLE;
   std::map<std::string, std::unique_ptr<MaterialResources>> materials_;  // by stem + preset
   std::vector<std::unique_ptr<Object>> objects_;
-  vk::Image2D terrainHeight_, exposureMap_, shadowMap_, placeholderHeight_, placeholderShadow_;
+  vk::Image2D terrainHeight_, exposureMap_, shadowMap_, placeholderHeight_, placeholderShadow_, placeholderDeformation_;
+  const vk::Image2D* snowDeformation_ = nullptr;
   VkSampler linearClamp_ = VK_NULL_HANDLE;
+  VkSampler linearRepeat_ = VK_NULL_HANDLE;  // the toroidal snow deformation map
   VkSampler nearestClamp_ = VK_NULL_HANDLE;  // depth formats need not be filterable; PCF filters
   std::vector<float> exposureHeights_;
   glm::vec4 exposureRegion_{0.f};

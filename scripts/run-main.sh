@@ -20,4 +20,8 @@ for scene in valley rocks river road; do
       --size 320x180 -o "out/gallery/$scene-$aov.png" -q
   done
 done
+# Interactive snow (docs/deformable-snow.md): walkers and a vehicle leave prints, the
+# camera leaves the deformation window and comes back to find them restored.
+build/weathergen render --scene snowfield --size 640x360 --frames out/gallery/frames-snowfield \
+  -o out/gallery/snowfield.png
 echo "main: gallery in out/gallery ($(ls out/gallery/*.png | wc -l) contact sheets and strips; start with out/gallery/valley-glsl.png)"

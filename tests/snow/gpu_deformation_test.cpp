@@ -16,6 +16,8 @@
 #include "runtime/snow/deformation_texel.hpp"
 #include "runtime/snow/snow_interactors.hpp"
 
+#include "tests/snow/snow_gpu_support.hpp"
+
 namespace wg::snow {
 namespace {
 
@@ -23,25 +25,9 @@ const WindowSettings kSmall{128, 0.04f, 16};
 const SnowCover kCover{0.12f};
 constexpr double kFrame = 1.0 / 60.0;
 
-vk::Context* context() {
-  static std::unique_ptr<vk::Context> ctx = [] {
-    std::string error;
-    return vk::Context::create({"cpu", true}, error);
-  }();
-  return ctx.get();
-}
+using testing::snowContext;
 
-class GpuDeformation : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!context()) GTEST_SKIP() << "no Vulkan device";
-    context()->clearValidationMessages();
-  }
-  void TearDown() override {
-    if (!context()) return;
-    for (const auto& m : context()->validationMessages()) ADD_FAILURE() << "Vulkan validation: " << m;
-  }
-};
+using GpuDeformation = testing::ValidatedGpuTest;
 
 // A walker, a second walker crossing it and a vehicle, over `seconds`.
 std::vector<std::vector<Stamp>> scriptedFrames(double seconds, const SnowCover& cover) {
@@ -86,7 +72,7 @@ TEST(SnowShaders, LayoutComesFromReflection) {
 
 TEST_F(GpuDeformation, MatchesTheCpuModelTexelForTexel) {
   DeformationMap cpu(kSmall);
-  GpuDeformationMap gpu(*context(), kSmall);
+  GpuDeformationMap gpu(*snowContext(), kSmall);
   for (const auto& stamps : scriptedFrames(3.0, kCover)) {
     cpu.apply(stamps);
     gpu.apply(stamps);
@@ -103,7 +89,7 @@ TEST_F(GpuDeformation, MatchesTheCpuModelTexelForTexel) {
 }
 
 TEST_F(GpuDeformation, FootprintsReadBackWhereThePathPutsThem) {
-  GpuDeformationMap gpu(*context(), kSmall);
+  GpuDeformationMap gpu(*snowContext(), kSmall);
   Walker w;
   w.path = ScriptedPath({{-2.f, 1.f}, {2.f, -1.f}}, 1.4f);
   for (double t = 0.0; t < 4.0; t += kFrame) {
@@ -123,7 +109,7 @@ TEST_F(GpuDeformation, FootprintsReadBackWhereThePathPutsThem) {
 }
 
 TEST_F(GpuDeformation, ZeroSnowDepthLeavesNoDeformation) {
-  GpuDeformationMap gpu(*context(), kSmall);
+  GpuDeformationMap gpu(*snowContext(), kSmall);
   for (const auto& stamps : scriptedFrames(2.0, SnowCover{0.f})) gpu.apply(stamps);
   auto t = gpu.texels();
   EXPECT_TRUE(std::all_of(t.heights.begin(), t.heights.end(), [](auto v) { return v == 0u; }));
@@ -131,7 +117,7 @@ TEST_F(GpuDeformation, ZeroSnowDepthLeavesNoDeformation) {
 }
 
 TEST_F(GpuDeformation, FastMoversLeaveContinuousTrails) {
-  GpuDeformationMap gpu(*context(), kSmall);
+  GpuDeformationMap gpu(*snowContext(), kSmall);
   Walker sprinter;  // 40 m/s at 10 frames per second: five footfalls a frame
   sprinter.path = ScriptedPath({{-2.2f, 1.f}, {2.2f, 1.f}}, 40.f);
   Vehicle car;  // 30 m/s: half a metre a frame
@@ -149,7 +135,7 @@ TEST_F(GpuDeformation, FastMoversLeaveContinuousTrails) {
 }
 
 TEST_F(GpuDeformation, PrintsSurviveRecentringAndARoundTrip) {
-  GpuDeformationMap gpu(*context(), kSmall);
+  GpuDeformationMap gpu(*snowContext(), kSmall);
   for (const auto& stamps : scriptedFrames(3.0, kCover)) gpu.apply(stamps);
   std::vector<std::uint32_t> before(gpu.texels().heights.begin(), gpu.texels().heights.end());
   std::vector<std::uint32_t> normalsBefore(gpu.texels().normals.begin(), gpu.texels().normals.end());
@@ -179,7 +165,7 @@ TEST_F(GpuDeformation, PrintsSurviveRecentringAndARoundTrip) {
 }
 
 TEST_F(GpuDeformation, RefillReducesPrintDepthAtTheConfiguredRate) {
-  GpuDeformationMap gpu(*context(), kSmall);
+  GpuDeformationMap gpu(*snowContext(), kSmall);
   Stamp s = capsule({0.f, 0.f}, {0.f, 0.f}, 0.3f, SnowCover{0.3f}, 0.1f);
   gpu.apply(std::span(&s, 1));
   const double rate = 0.02 / 3600.0;  // 2 cm per hour

@@ -1,0 +1,66 @@
+#include "cli/snowfield_render.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/commands.hpp"
+#include "runtime/display_image.hpp"
+#include "runtime/image/contact_sheet.hpp"
+#include "runtime/image/png_file.hpp"
+#include "runtime/snow/snowfield_scene.hpp"
+
+namespace wg {
+
+int renderSnowfield(const SnowfieldRenderOptions& o) {
+  std::string error;
+  auto ctx = vk::Context::create({o.device, o.validation}, error);
+  if (!ctx) {
+    std::fprintf(stderr, "weathergen: error: %s\n", error.c_str());
+    return kExitInternal;
+  }
+  snow::SnowfieldSettings settings;
+  SceneRenderer renderer(*ctx, snow::makeSnowfieldScene(settings), o.graphsDir);
+  snow::SnowfieldAnimation animation(*ctx, settings, o.request.weather);
+  renderer.setSnowDeformation(&animation.deformationImage());
+  std::vector<image::LabelledFrame> frames;
+  std::vector<Image> strip;
+  auto times = snow::SnowfieldAnimation::keyTimes();
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (o.progress) std::fprintf(stderr, "render: [%zu/%zu] snowfield t = %.0f s\n", i + 1, times.size(), times[i]);
+    snow::SnowfieldMoment moment = animation.advanceTo(times[i]);
+    RenderRequest request = o.request;
+    request.cameraPose = moment.camera;
+    request.objectModels = moment.objectModels;
+    RenderedFrame frame = renderer.render(request);
+    if (!ctx->validationMessages().empty()) {
+      for (const auto& m : ctx->validationMessages()) std::fprintf(stderr, "vulkan validation %s\n", m.c_str());
+      std::fprintf(stderr, "weathergen: error: Vulkan validation messages\n");
+      return kExitInternal;
+    }
+    Image img = toDisplayImage(frame);
+    if (!o.framesDir.empty()) {
+      std::filesystem::create_directories(o.framesDir);
+      char name[64];
+      std::snprintf(name, sizeof name, "snowfield-%02zu.png", i + 1);
+      if (std::string e = image::writePng((std::filesystem::path(o.framesDir) / name).string(), img); !e.empty()) {
+        std::fprintf(stderr, "weathergen: error: %s\n", e.c_str());
+        return kExitBadInput;
+      }
+    }
+    frames.push_back({img, moment.caption});
+    strip.push_back(std::move(img));
+  }
+  const std::string title = "weathergen  snowfield: prints that leave the window come back";
+  constexpr int kSheetColumns = 3;
+  std::filesystem::path stripPath = std::filesystem::path(o.output).replace_extension(".strip.png");
+  for (auto [path, picture] : {std::pair{o.output, image::contactSheet(title, frames, kSheetColumns)},
+                               std::pair{stripPath.string(), image::frameStrip(strip)}})
+    if (std::string e = image::writePng(path, picture); !e.empty()) {
+      std::fprintf(stderr, "weathergen: error: %s\n", e.c_str());
+      return kExitBadInput;
+    }
+  if (o.progress) std::fprintf(stderr, "render: wrote %s and %s\n", o.output.c_str(), stripPath.string().c_str());
+  return kExitOk;
+}
+
+}  // namespace wg

@@ -1,0 +1,171 @@
+#include "runtime/snow/snowfield_scene.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include "runtime/scene/shapes.hpp"
+#include "runtime/snow/cpu_stamping.hpp"
+#include "runtime/snow/deformation_texel.hpp"
+
+namespace wg::snow {
+
+namespace {
+// The base terrain the layer fades into sits just under the layer's border, so the
+// two never fight for depth.
+constexpr float kGroundHeight = -0.05f;
+constexpr float kGroundSize = 160.f;   // metres: the camera's whole trip and the shadow map's reach
+constexpr int kGroundCells = 40;
+constexpr float kEyeHeight = 2.2f, kLookAhead = 7.f, kFovDegrees = 55.f;
+constexpr float kCameraSpeed = 3.f;  // m/s while the camera travels
+// The camera's trip (seconds): watch the prints form, travel 60 m along +x (out of the
+// 41 m window), wait, come back.
+constexpr double kLeaveAt = 12.0, kFarAt = 32.0, kReturnAt = 36.0, kBackAt = 56.0;
+constexpr float kTripLength = 60.f;
+const glm::vec3 kStart(0.f, kEyeHeight, -4.f);
+const glm::vec3 kTowardsSun(0.25f, 0.5f, 0.85f);
+const glm::vec3 kWalkerSize(0.45f, 1.75f, 0.3f), kVehicleSize(1.8f, 1.4f, 4.2f);
+
+std::string fixed(double x, int decimals) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+  return buf;
+}
+
+glm::mat4 placed(glm::vec2 at, glm::vec2 heading) {
+  float angle = std::atan2(heading.x, heading.y);  // +z forward
+  return glm::rotate(glm::translate(glm::mat4(1.f), glm::vec3(at.x, 0.f, at.y)), angle, glm::vec3(0.f, 1.f, 0.f));
+}
+
+std::vector<Walker> scriptedWalkers() {
+  Walker a, b;
+  a.path = ScriptedPath({{-5.f, 1.f}, {5.f, 4.5f}}, 1.4f);
+  b.path = ScriptedPath({{3.5f, -0.5f}, {-2.5f, 8.f}}, 1.2f);
+  return {a, b};
+}
+
+Vehicle scriptedVehicle() {
+  Vehicle v;
+  v.path = ScriptedPath({{-12.f, 7.f}, {12.f, 5.f}}, 3.f);
+  v.wheelWidth = 0.3f;
+  return v;
+}
+}  // namespace
+
+glm::vec3 snowfieldTowardsSun() { return glm::normalize(kTowardsSun); }
+
+scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings) {
+  scene::Scene s;
+  s.name = kSnowfieldScene;
+  s.towardsSun = glm::normalize(kTowardsSun);
+  auto add = [&](std::string name, std::string graph, scene::Mesh mesh, bool occludesSky) {
+    scene::SceneObject o;
+    o.name = std::move(name);
+    o.graph = std::move(graph);
+    o.mesh = std::move(mesh);
+    o.occludesSky = occludesSky;
+    s.objects.push_back(std::move(o));
+  };
+  add("ground", "snowfield", scene::heightFieldTerrain(kGroundSize, kGroundCells, [](float, float) { return kGroundHeight; }),
+      true);
+  add("rockNear", "rock", scene::transformed(scene::rock(11, 1.1f), glm::translate(glm::mat4(1.f), {3.5f, 0.3f, 10.f})), true);
+  add("rockLeft", "rock", scene::transformed(scene::rock(23, 1.6f), glm::translate(glm::mat4(1.f), {-7.f, 0.4f, 14.f})), true);
+  add("rockFar", "rock", scene::transformed(scene::rock(37, 1.4f), glm::translate(glm::mat4(1.f), {62.f, 0.3f, 8.f})), true);
+  // Movers and the layer get their model matrix per frame (RenderRequest::objectModels).
+  for (std::size_t i = 0; i < scriptedWalkers().size(); ++i)
+    add("walker" + std::to_string(i), "rock",
+        scene::box({-0.5f * kWalkerSize.x, 0.f, -0.5f * kWalkerSize.z}, {0.5f * kWalkerSize.x, kWalkerSize.y, 0.5f * kWalkerSize.z}),
+        false);
+  add("vehicle", "rock",
+      scene::box({-0.5f * kVehicleSize.x, 0.f, -0.5f * kVehicleSize.z}, {0.5f * kVehicleSize.x, kVehicleSize.y, 0.5f * kVehicleSize.z}),
+      false);
+  add(kSnowLayerObject, kSnowLayerGraph, patchGridMesh(settings.grid), false);
+  s.cameras.push_back({"follow", kStart, kStart + glm::vec3(0.f, -kEyeHeight, kLookAhead), kFovDegrees});
+  scene::Bounds all;
+  for (const auto& o : s.objects) all.include(scene::bounds(o.mesh));
+  // The layer moves with the camera: its reach over the whole trip.
+  all.include(glm::vec3(kTripLength + 0.5f * settings.grid.extent(), 1.f, 0.f));
+  s.boundsMin = all.min;
+  s.boundsMax = all.max;
+  return s;
+}
+
+SnowfieldAnimation::SnowfieldAnimation(vk::Context& ctx, const SnowfieldSettings& settings, const WeatherState& weather)
+    : settings_(settings),
+      weather_(weather),
+      map_(ctx, settings.window, {kStart.x, kStart.z}),
+      ctx_(ctx),
+      image_(ctx, settings.window.resolution, settings.window.resolution, VK_FORMAT_R32G32B32A32_SFLOAT,
+             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
+      walkers_(scriptedWalkers()),
+      vehicle_(scriptedVehicle()) {
+  resolve();
+}
+
+std::vector<double> SnowfieldAnimation::keyTimes() { return {3.0, 11.0, 24.0, 34.0, 58.0}; }
+
+glm::vec3 SnowfieldAnimation::cameraEye(double t) const {
+  double x = 0.0;
+  if (t >= kLeaveAt && t < kFarAt) x = kCameraSpeed * (t - kLeaveAt);
+  else if (t >= kFarAt && t < kReturnAt) x = kTripLength;
+  else if (t >= kReturnAt && t < kBackAt) x = kTripLength - kCameraSpeed * (t - kReturnAt);
+  return kStart + glm::vec3(float(x), 0.f, 0.f);
+}
+
+void SnowfieldAnimation::step(double t0, double t1) {
+  SnowCover cover{snowDepth(weather_, settings_.weather)};
+  std::vector<Stamp> stamps;
+  for (const auto& w : walkers_) walkerStamps(w, t0, t1, cover, stamps);
+  vehicleStamps(vehicle_, t0, t1, cover, stamps);
+  glm::vec3 eye = cameraEye(t1);
+  map_.follow({eye.x, eye.z});
+  map_.apply(stamps);
+  map_.refill(refillRate(weather_, settings_.weather), t1 - t0);
+  stamps_ += stamps.size();
+}
+
+void SnowfieldAnimation::resolve() {
+  // Storage order is the image's order: uv = world xz / extent, wrapped by the repeat
+  // sampler, lands on the toroidal texel (docs/deformable-snow.md).
+  MapTexels t = map_.texels();
+  std::vector<float> texels(t.heights.size() * 4);
+  for (std::size_t i = 0; i < t.heights.size(); ++i) {
+    glm::vec3 n = unpackNormal(t.normals[i]);
+    texels[4 * i + 0] = texelHeight(t.heights[i]);
+    texels[4 * i + 1] = n.x;
+    texels[4 * i + 2] = n.y;
+    texels[4 * i + 3] = n.z;
+  }
+  image_.upload(ctx_, texels.data(), texels.size() * sizeof(float));
+}
+
+SnowfieldMoment SnowfieldAnimation::advanceTo(double seconds) {
+  // The first footfalls land at t = 0: start the clock one frame early.
+  if (time_ == 0.0) step(-settings_.frameSeconds, 0.0);
+  while (time_ + 1e-9 < seconds) {
+    double next = std::min(seconds, time_ + settings_.frameSeconds);
+    step(time_, next);
+    time_ = next;
+  }
+  resolve();
+  SnowfieldMoment m;
+  m.time = time_;
+  glm::vec3 eye = cameraEye(time_);
+  m.camera = {"follow", eye, eye + glm::vec3(0.f, -kEyeHeight, kLookAhead), kFovDegrees};
+  m.objectModels[kSnowLayerObject] =
+      glm::translate(glm::mat4(1.f), patchGridOrigin(settings_.grid, eye, 0.f));
+  for (std::size_t i = 0; i < walkers_.size(); ++i) {
+    const ScriptedPath& p = walkers_[i].path;
+    float s = p.distanceAt(time_);
+    m.objectModels["walker" + std::to_string(i)] = placed(p.pointAt(s), p.headingAt(s));
+  }
+  float s = vehicle_.path.distanceAt(time_);
+  m.objectModels["vehicle"] = placed(vehicle_.path.pointAt(s), vehicle_.path.headingAt(s));
+  m.caption = {"t = " + fixed(time_, 1) + " s   camera x = " + fixed(eye.x, 0) + " m",
+               std::to_string(map_.store().tileCount()) + " tiles in the print store, " + std::to_string(stamps_) +
+                   " stamps so far"};
+  return m;
+}
+
+}  // namespace wg::snow

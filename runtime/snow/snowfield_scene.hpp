@@ -1,0 +1,71 @@
+// The `snowfield` scene of the interactive snow (issue 5, §6): a snowy plain with a few
+// rocks, the camera-following snow layer, two walkers and a vehicle on scripted paths,
+// and a camera that leaves the deformation window and comes back. SnowfieldAnimation
+// advances it in simulated time; the renderer draws it with the deformation map bound.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runtime/scene/scene.hpp"
+#include "runtime/snow/gpu_deformation_map.hpp"
+#include "runtime/snow/snow_interactors.hpp"
+#include "runtime/snow/snow_patch_grid.hpp"
+#include "runtime/snow/snow_weather.hpp"
+#include "runtime/vulkan/gpu_image.hpp"
+
+namespace wg::snow {
+
+inline constexpr const char* kSnowfieldScene = "snowfield";
+inline constexpr const char* kSnowLayerObject = "snowLayer";
+inline constexpr const char* kSnowLayerGraph = "snow_layer";
+
+struct SnowfieldSettings {
+  WindowSettings window;      // the deformation map (default 1024² at 4 cm)
+  PatchGridSettings grid;     // the layer's mesh (default: the seed's 8 x 8 patches of 8 m)
+  SnowWeatherSettings weather{0.3f};  // 30 cm at full cover: deep enough to see prints
+  double frameSeconds = 1.0 / 30.0;   // simulation step
+};
+
+scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings = {});
+glm::vec3 snowfieldTowardsSun();  // unit: low and ahead of the camera, so glitter faces it
+
+// One moment of the animation, ready to render.
+struct SnowfieldMoment {
+  double time = 0.0;
+  scene::CameraPreset camera;
+  std::map<std::string, glm::mat4> objectModels;  // the layer and the movers
+  std::vector<std::string> caption;
+};
+
+class SnowfieldAnimation {
+ public:
+  SnowfieldAnimation(vk::Context& ctx, const SnowfieldSettings& settings, const WeatherState& weather);
+
+  // Advances the simulation to `seconds` (never backwards) and resolves the map into
+  // the image the renderer samples.
+  SnowfieldMoment advanceTo(double seconds);
+  const vk::Image2D& deformationImage() const { return image_; }
+  GpuDeformationMap& map() { return map_; }
+  // Times of the frames the gallery shows: prints forming, the camera leaving the
+  // window, far away, and back over the restored prints.
+  static std::vector<double> keyTimes();
+  glm::vec3 cameraEye(double seconds) const;
+
+ private:
+  void step(double t0, double t1);
+  void resolve();
+
+  SnowfieldSettings settings_;
+  WeatherState weather_;
+  GpuDeformationMap map_;
+  vk::Context& ctx_;
+  vk::Image2D image_;
+  std::vector<Walker> walkers_;
+  Vehicle vehicle_;
+  ScriptedPath cameraPath_;
+  double time_ = 0.0;
+  std::size_t stamps_ = 0;
+};
+
+}  // namespace wg::snow
