@@ -53,20 +53,21 @@ struct ReflectedResources {
   ResourceCounts declared, used;
 };
 ReflectedResources reflectResources(const SpirvWords& words);
-// A compute module's interface as SPIRV-Cross sees it: the runtime builds descriptor
-// set layouts and push-constant ranges from this, never by hand.
-struct ComputeBinding {
-  enum class Kind : std::uint8_t { StorageBuffer, UniformBuffer };
+// The interface of one of the runtime's own modules (compute, or the particle and
+// post stages) as SPIRV-Cross sees it: the runtime builds descriptor set layouts and
+// push-constant ranges from this, never by hand.
+struct ModuleBinding {
+  enum class Kind : std::uint8_t { StorageBuffer, UniformBuffer, StorageImage, SampledImage, Sampler };
   std::string name;  // the block's type name
   std::uint32_t set = 0, binding = 0;
   Kind kind = Kind::StorageBuffer;
 };
-struct ComputeInterface {
-  std::vector<ComputeBinding> bindings;
+struct ModuleInterface {
+  std::vector<ModuleBinding> bindings;
   std::uint32_t pushConstantBytes = 0;
-  std::uint32_t localSize[3] = {1, 1, 1};
+  std::uint32_t localSize[3] = {1, 1, 1};  // compute modules only
 };
-ComputeInterface reflectCompute(const SpirvWords& words);
+ModuleInterface reflectModule(const SpirvWords& words);
 // Instruction count (words are grouped into instructions), for cost reports.
 std::size_t countInstructions(const SpirvWords& words);
 

@@ -1,14 +1,16 @@
 // The deformation compute pass on Vulkan: three pipelines (stamps, normals, refill)
 // sharing one descriptor set whose layout and push-constant range are built from the
-// SPIRV-Cross reflection of the modules. Buffers are bound by their block names.
+// SPIRV-Cross reflection of the modules (ReflectedDescriptorSet). Buffers are bound by
+// their block names.
 #pragma once
 #include <glm/glm.hpp>
 
-#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "runtime/vulkan/gpu_buffer.hpp"
+#include "runtime/vulkan/reflected_descriptor_set.hpp"
 
 namespace wg::snow {
 
@@ -48,17 +50,11 @@ class DeformationPass {
     VkPipeline pipeline = VK_NULL_HANDLE;
     std::uint32_t localSize[3] = {1, 1, 1};
   };
-  Pipeline build(std::string_view source, const char* what);
   void dispatch(VkCommandBuffer cmd, const Pipeline& p, const WindowConstants& window, glm::ivec2 extent,
                 std::uint32_t layers) const;
 
   vk::Context& ctx_;
-  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
-  std::map<std::string, std::uint32_t> bindingOf_;  // block name -> binding in set 0
-  std::uint32_t pushConstantBytes_ = 0;
+  std::unique_ptr<vk::ReflectedDescriptorSet> set_;
   Pipeline stamp_, normals_, refill_;
 };
 

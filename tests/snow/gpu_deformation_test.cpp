@@ -61,7 +61,7 @@ TEST(SnowShaders, LayoutComesFromReflection) {
   SpirvCompileResult stamp = compileComputeToSpirv(stampShaderSource());
   ASSERT_TRUE(stamp.ok) << stamp.log;
   EXPECT_EQ(validateSpirv(stamp.words), "");
-  ComputeInterface i = reflectCompute(stamp.words);
+  ModuleInterface i = reflectModule(stamp.words);
   EXPECT_EQ(i.pushConstantBytes, sizeof(WindowConstants));
   EXPECT_EQ(i.localSize[0], 8u);
   std::vector<std::string> names;
