@@ -106,6 +106,7 @@ int renderSnowfieldScene(const std::vector<std::string>& weatherLists, RenderReq
   inputs.frame.temperature = kColdDay;
   inputs.frame.snowLevel = 1.f;
   inputs.frame.sunIntensity = 1.f;
+  inputs.frame.windIntensity = 0.f;
   if (std::string e = applyAovAndWeather(aov, weatherLists, inputs, request); !e.empty()) return usageError(e);
   request.weatherPreset = preset;
   SnowfieldRenderOptions options{output, framesDir, device, graphsDir, request, validation,

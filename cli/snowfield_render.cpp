@@ -31,6 +31,7 @@ int renderSnowfield(const SnowfieldRenderOptions& o) {
     RenderRequest request = o.request;
     request.cameraPose = moment.camera;
     request.objectModels = moment.objectModels;
+    if (request.debugView == 0) request.afterColourPass = animation.postPasses();  // lit frames only
     RenderedFrame frame = renderer.render(request);
     if (!ctx->validationMessages().empty()) {
       for (const auto& m : ctx->validationMessages()) std::fprintf(stderr, "vulkan validation %s\n", m.c_str());

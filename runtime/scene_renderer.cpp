@@ -75,7 +75,7 @@ SceneRenderer::~SceneRenderer() {
 }
 
 void SceneRenderer::createPasses() {
-  // Colour pass: RGBA16F colour kept for read-back, depth discarded.
+  // Colour pass: RGBA32F colour kept for read-back, depth kept for later passes.
   VkAttachmentDescription colour{};
   colour.format = vk::kColourFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -87,7 +87,7 @@ void SceneRenderer::createPasses() {
   colour.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   VkAttachmentDescription depth = colour;
   depth.format = vk::kDepthFormat;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;  // soft particles read it afterwards
   depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
   VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
@@ -357,9 +357,12 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   RenderedFrame frame;
   frame.width = request.width;
   frame.height = request.height;
+  // Later passes (request.afterColourPass) may write the colour in compute and sample the depth.
+  VkImageUsageFlags later = request.afterColourPass ? VK_IMAGE_USAGE_STORAGE_BIT : 0;
   vk::Image2D colour(ctx_, request.width, request.height, vk::kColourFormat,
-                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-  vk::Image2D depth(ctx_, request.width, request.height, vk::kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | later);
+  vk::Image2D depth(ctx_, request.width, request.height, vk::kDepthFormat,
+                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (request.afterColourPass ? VK_IMAGE_USAGE_SAMPLED_BIT : 0));
   VkFramebuffer colourTarget = framebuffer(colourPass_, {colour.view(), depth.view()}, request.width, request.height);
   VkFramebuffer shadowTarget = framebuffer(depthPass_, {shadowMap_.view()}, kShadowResolution, kShadowResolution);
 
@@ -466,6 +469,8 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
       }
       vkCmdEndRenderPass(cmd);
       if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+      if (colourPass && request.afterColourPass)
+        request.afterColourPass({cmd, &colour, &depth, passes[p].viewProjection, passes[p].eye, kNearPlane, kFarPlane});
     }
   });
 

@@ -2,6 +2,7 @@
 // top-down sky-exposure map (once), a sun shadow map, then the lit colour or an AOV.
 // Layouts, uniforms and vertex formats all come from the materials' reflection.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -12,6 +13,18 @@
 #include "runtime/weather/weather_state.hpp"
 
 namespace wg {
+
+// What work recorded after the colour pass sees (particles, post passes): the colour
+// target, to be left in COLOR_ATTACHMENT_OPTIMAL, and the depth target (D32, stored,
+// sampleable) in DEPTH_STENCIL_ATTACHMENT_OPTIMAL, with the camera that drew them.
+struct ColourPassTargets {
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  const vk::Image2D* colour = nullptr;
+  const vk::Image2D* depth = nullptr;
+  glm::mat4 viewProjection{1.f};
+  glm::vec3 eye{0.f};
+  float nearPlane = 0.f, farPlane = 0.f;
+};
 
 struct RenderRequest {
   std::string camera;  // a preset of the scene; "" takes the first
@@ -32,6 +45,8 @@ struct RenderRequest {
   std::map<std::string, glm::mat4> objectModels;
   // A camera for this frame only, instead of the preset named by `camera`.
   std::optional<scene::CameraPreset> cameraPose;
+  // Recorded right after the colour pass, in the same command buffer.
+  std::function<void(const ColourPassTargets&)> afterColourPass;
 };
 
 struct RenderedFrame {

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "runtime/vulkan/compute_barriers.hpp"
 #include "runtime/vulkan/runtime_shader.hpp"
 #include "runtime/snow/deformation_shaders.hpp"
 
@@ -28,14 +29,7 @@ DeformationPass::DeformationPass(vk::Context& ctx) : ctx_(ctx) {
   for (std::size_t i = 0; i < modules.size(); ++i) {
     Pipeline& p = *targets[i];
     p.module = vk::createShaderModule(ctx_, modules[i].words);
-    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = p.module;
-    info.stage.pName = "main";
-    info.layout = set_->pipelineLayout();
-    vk::check(vkCreateComputePipelines(ctx_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline),
-              "vkCreateComputePipelines");
+    p.pipeline = vk::createComputePipeline(ctx_, p.module, set_->pipelineLayout());
     for (int axis = 0; axis < 3; ++axis) p.localSize[axis] = modules[i].interface.localSize[axis];
   }
 }
@@ -76,12 +70,6 @@ void DeformationPass::recordRefill(VkCommandBuffer cmd, const WindowConstants& w
   dispatch(cmd, refill_, window, glm::ivec2(window.resolution), 1);
 }
 
-void DeformationPass::computeBarrier(VkCommandBuffer cmd) {
-  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0,
-                       nullptr, 0, nullptr);
-}
+void DeformationPass::computeBarrier(VkCommandBuffer cmd) { vk::computeToComputeBarrier(cmd); }
 
 }  // namespace wg::snow

@@ -5,6 +5,7 @@
 
 #include "runtime/snow/deformation_texel.hpp"
 #include "runtime/snow/map_lookup.hpp"
+#include "runtime/vulkan/compute_barriers.hpp"
 
 namespace wg::snow {
 
@@ -13,14 +14,6 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 // Stamp buffers start with room for this many and double when a frame needs more.
 constexpr std::size_t kInitialStamps = 64;
 
-// Host reads of the map (recentring, tests) after the pass.
-void hostReadBarrier(VkCommandBuffer cmd) {
-  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_HOST_WRITE_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0,
-                       nullptr, 0, nullptr);
-}
 
 glm::ivec4 packRect(const TexelRect& r) { return {r.min.x, r.min.y, r.size.x, r.size.y}; }
 }  // namespace
@@ -78,7 +71,7 @@ double GpuDeformationMap::submit(const std::function<void(VkCommandBuffer)>& rec
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
     record(cmd);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
-    hostReadBarrier(cmd);
+    vk::computeToHostBarrier(cmd);  // host reads of the map (recentring, tests)
   });
   std::uint64_t ticks[2] = {0, 0};
   if (vkGetQueryPoolResults(ctx_.device(), timestamps_, 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),

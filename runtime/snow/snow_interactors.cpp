@@ -14,14 +14,18 @@ glm::vec2 footfall(const Walker& w, int k) {
   return w.path.pointAt(s) + leftOf(w.path.headingAt(s)) * (side * w.footSpacing);
 }
 
-void walkerStamps(const Walker& w, double t0, double t1, const SnowCover& cover, std::vector<Stamp>& out) {
-  if (!(t1 > t0) || w.stepLength <= 0.f) return;
+FootfallRange footfallsBetween(const Walker& w, double t0, double t1) {
+  if (!(t1 > t0) || w.stepLength <= 0.f) return {};
   float s0 = w.path.distanceAt(t0), s1 = w.path.distanceAt(t1);
   if (t0 < 0.0) s0 = -1.f;  // the first footfall, at distance 0, happens at t = 0
-  bool dragging = cover.depth > w.footLift;
   // Footfalls k with s0 < k * stepLength <= s1.
-  int first = int(std::floor(s0 / w.stepLength)) + 1, last = int(std::floor(s1 / w.stepLength));
-  for (int k = std::max(first, 0); k <= last; ++k) {
+  return {std::max(int(std::floor(s0 / w.stepLength)) + 1, 0), int(std::floor(s1 / w.stepLength))};
+}
+
+void walkerStamps(const Walker& w, double t0, double t1, const SnowCover& cover, std::vector<Stamp>& out) {
+  bool dragging = cover.depth > w.footLift;
+  FootfallRange range = footfallsBetween(w, t0, t1);
+  for (int k = range.first; k <= range.last; ++k) {
     float s = float(k) * w.stepLength;
     glm::vec2 at = footfall(w, k);
     out.push_back(footprint(at, w.path.headingAt(s), w.foot, cover, w.sink));

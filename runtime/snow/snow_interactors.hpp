@@ -35,5 +35,10 @@ void vehicleStamps(const Vehicle& vehicle, double t0, double t1, const SnowCover
 
 // Where the walker's k-th footfall lands (k from 0; even left, odd right).
 glm::vec2 footfall(const Walker& walker, int k);
+// The footfalls k of the interval (t0, t1]: first..last, inclusive (empty when first > last).
+struct FootfallRange {
+  int first = 0, last = -1;
+};
+FootfallRange footfallsBetween(const Walker& walker, double t0, double t1);
 
 }  // namespace wg::snow

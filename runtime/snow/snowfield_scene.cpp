@@ -25,7 +25,10 @@ constexpr double kLeaveAt = 12.0, kFarAt = 32.0, kReturnAt = 36.0, kBackAt = 56.
 constexpr float kTripLength = 60.f;
 const glm::vec3 kStart(0.f, kEyeHeight, -4.f);
 const glm::vec3 kTowardsSun(0.25f, 0.5f, 0.85f);
-const glm::vec3 kWalkerSize(0.45f, 1.75f, 0.3f), kVehicleSize(1.8f, 1.4f, 4.2f);
+// Wind speed at windIntensity 1: the NWS blizzard threshold (docs/weather-simulation.md).
+constexpr float kWindAtFullIntensity = 15.6f;
+// Walkers are thin posts: their feet (9 cm either side) and the puffs stay in view.
+const glm::vec3 kWalkerSize(0.14f, 1.75f, 0.14f), kVehicleSize(1.8f, 1.4f, 4.2f);
 
 std::string fixed(double x, int decimals) {
   char buf[32];
@@ -99,11 +102,14 @@ SnowfieldAnimation::SnowfieldAnimation(vk::Context& ctx, const SnowfieldSettings
       image_(ctx, settings.window.resolution, settings.window.resolution, VK_FORMAT_R32G32B32A32_SFLOAT,
              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
       walkers_(scriptedWalkers()),
-      vehicle_(scriptedVehicle()) {
+      vehicle_(scriptedVehicle()),
+      puffs_(ctx),
+      bloom_(ctx) {
   resolve();
 }
 
-std::vector<double> SnowfieldAnimation::keyTimes() { return {3.0, 11.0, 24.0, 34.0, 58.0}; }
+// The first moment is just after a footfall (walker 0 steps at 2.68 s), so a puff hangs.
+std::vector<double> SnowfieldAnimation::keyTimes() { return {2.8, 11.0, 24.0, 34.0, 58.0}; }
 
 glm::vec3 SnowfieldAnimation::cameraEye(double t) const {
   double x = 0.0;
@@ -116,7 +122,24 @@ glm::vec3 SnowfieldAnimation::cameraEye(double t) const {
 void SnowfieldAnimation::step(double t0, double t1) {
   SnowCover cover{snowDepth(weather_, settings_.weather)};
   std::vector<Stamp> stamps;
-  for (const auto& w : walkers_) walkerStamps(w, t0, t1, cover, stamps);
+  std::vector<glm::vec3> footfalls;
+  // Puffs start where the foot breaks the snow surface (seed 3.3.1: at the impact): the
+  // snow_layer graph raises the layer by the snow depth.
+  float surface = cover.depth;
+  for (const auto& w : walkers_) {
+    walkerStamps(w, t0, t1, cover, stamps);
+    FootfallRange range = footfallsBetween(w, t0, t1);
+    for (int k = range.first; k <= range.last; ++k) {
+      glm::vec2 at = footfall(w, k);
+      footfalls.push_back({at.x, surface, at.y});
+    }
+  }
+  if (cover.depth > 0.f) puffs_.emit(footfalls);
+  const auto& wind = weather_.conditions.windDirection;
+  glm::vec2 windVelocity = glm::length(glm::vec2(wind[0], wind[1])) > 0.f
+                               ? glm::normalize(glm::vec2(wind[0], wind[1])) * weather_.conditions.windIntensity * kWindAtFullIntensity
+                               : glm::vec2(0.f);
+  puffs_.simulate(t1 - t0, windVelocity);
   vehicleStamps(vehicle_, t0, t1, cover, stamps);
   glm::vec3 eye = cameraEye(t1);
   map_.follow({eye.x, eye.z});
@@ -138,6 +161,13 @@ void SnowfieldAnimation::resolve() {
     texels[4 * i + 3] = n.z;
   }
   image_.upload(ctx_, texels.data(), texels.size() * sizeof(float));
+}
+
+std::function<void(const ColourPassTargets&)> SnowfieldAnimation::postPasses() {
+  return [this](const ColourPassTargets& t) {
+    puffs_.record(t);
+    bloom_.record(t.cmd, *t.colour);
+  };
 }
 
 SnowfieldMoment SnowfieldAnimation::advanceTo(double seconds) {

@@ -3,14 +3,17 @@
 // and a camera that leaves the deformation window and comes back. SnowfieldAnimation
 // advances it in simulated time; the renderer draws it with the deformation map bound.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "runtime/bloom_pass.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/snow/gpu_deformation_map.hpp"
 #include "runtime/snow/snow_interactors.hpp"
 #include "runtime/snow/snow_patch_grid.hpp"
+#include "runtime/snow/snow_puffs.hpp"
 #include "runtime/snow/snow_weather.hpp"
 #include "runtime/vulkan/gpu_image.hpp"
 
@@ -46,6 +49,9 @@ class SnowfieldAnimation {
   // the image the renderer samples.
   SnowfieldMoment advanceTo(double seconds);
   const vk::Image2D& deformationImage() const { return image_; }
+  // Snow puffs and bloom, to record after the colour pass (RenderRequest::afterColourPass).
+  std::function<void(const ColourPassTargets&)> postPasses();
+  const SnowPuffs& puffs() const { return puffs_; }
   GpuDeformationMap& map() { return map_; }
   // Times of the frames the gallery shows: prints forming, the camera leaving the
   // window, far away, and back over the restored prints.
@@ -63,7 +69,8 @@ class SnowfieldAnimation {
   vk::Image2D image_;
   std::vector<Walker> walkers_;
   Vehicle vehicle_;
-  ScriptedPath cameraPath_;
+  SnowPuffs puffs_;
+  BloomPass bloom_;
   double time_ = 0.0;
   std::size_t stamps_ = 0;
 };

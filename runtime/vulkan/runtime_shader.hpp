@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "backends/spirv/spirv_toolchain.hpp"
+#include "runtime/vulkan/vulkan_context.hpp"
 
 namespace wg::vk {
 
@@ -16,5 +17,8 @@ struct CompiledModule {
 };
 
 CompiledModule compileRuntimeShader(std::string_view glsl, RuntimeStage stage, std::string_view what);
+
+// A compute pipeline over `module`'s "main" (the caller destroys it).
+VkPipeline createComputePipeline(Context& ctx, VkShaderModule module, VkPipelineLayout layout);
 
 }  // namespace wg::vk

@@ -1,7 +1,8 @@
 // The snowfield scene drawn by the runtime with the snow_layer graph and the
 // deformation map bound (issue 5, §4, §6, §7), on lavapipe with validation on: prints
 // show as packed snow, nothing ghosts where the camera travels, the prints are back
-// after the round trip, and no snow means no prints.
+// after the round trip, no snow means no prints; puffs fade into the snow against its
+// depth (§5) and bloom only adds light.
 #include "runtime/snow/snowfield_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -25,36 +26,46 @@ std::uint32_t albedoView() {
   return 0;
 }
 
-struct Frames {
-  std::vector<RenderedFrame> frames;  // at the requested times
+// The snowfield with a small grid (the shading is per pixel from the 4 cm map; the grid
+// only carries the displacement), its animation, and a small lit request.
+struct Snowscape {
+  SnowfieldSettings settings;
+  WeatherState weather;
+  std::unique_ptr<SceneRenderer> renderer;
+  std::unique_ptr<SnowfieldAnimation> animation;
+
+  explicit Snowscape(float snowLevel) {
+    settings.grid.quadsPerPatch = 8;
+    settings.frameSeconds = 0.1;
+    weather.conditions.temperature = -6.f;
+    glm::vec3 sun = snowfieldTowardsSun();
+    weather.conditions.sunDirection = {sun.x, sun.y, sun.z};
+    weather.levels.snow = snowLevel;
+    renderer = std::make_unique<SceneRenderer>(*snowContext(), makeSnowfieldScene(settings),
+                                               std::string(WG_SOURCE_DIR) + "/graphs");
+    animation = std::make_unique<SnowfieldAnimation>(*snowContext(), settings, weather);
+    renderer->setSnowDeformation(&animation->deformationImage());
+  }
+  RenderRequest request(const SnowfieldMoment& m) const {
+    RenderRequest r;
+    r.width = 240;
+    r.height = 135;
+    r.weather = weather;
+    r.cameraPose = m.camera;
+    r.objectModels = m.objectModels;
+    return r;
+  }
 };
 
-// The layer alone, as albedo, at each time (small grid and image: the shading is per
-// pixel from the 4 cm map, the grid only carries the displacement).
-Frames renderLayer(float snowLevel, const std::vector<double>& times) {
-  SnowfieldSettings settings;
-  settings.grid.quadsPerPatch = 8;
-  settings.frameSeconds = 0.1;
-  WeatherState weather;
-  weather.conditions.temperature = -6.f;
-  glm::vec3 sun = snowfieldTowardsSun();
-  weather.conditions.sunDirection = {sun.x, sun.y, sun.z};
-  weather.levels.snow = snowLevel;
-  SceneRenderer renderer(*snowContext(), makeSnowfieldScene(settings), std::string(WG_SOURCE_DIR) + "/graphs");
-  SnowfieldAnimation animation(*snowContext(), settings, weather);
-  renderer.setSnowDeformation(&animation.deformationImage());
-  Frames out;
+// The layer alone, as albedo, at each time.
+std::vector<RenderedFrame> renderLayer(float snowLevel, const std::vector<double>& times) {
+  Snowscape scape(snowLevel);
+  std::vector<RenderedFrame> out;
   for (double t : times) {
-    SnowfieldMoment m = animation.advanceTo(t);
-    RenderRequest request;
-    request.width = 240;
-    request.height = 135;
-    request.weather = weather;
+    RenderRequest request = scape.request(scape.animation->advanceTo(t));
     request.debugView = albedoView();
     request.onlyObject = kSnowLayerObject;
-    request.cameraPose = m.camera;
-    request.objectModels = m.objectModels;
-    out.frames.push_back(renderer.render(request));
+    out.push_back(scape.renderer->render(request));
   }
   return out;
 }
@@ -73,25 +84,65 @@ using Snowfield = testing::ValidatedGpuTest;
 
 TEST_F(Snowfield, PrintsShowAsPackedSnowAndComeBackAfterTheRoundTrip) {
   // Prints formed; the camera 60 m away (out of the window); back at the start.
-  Frames r = renderLayer(1.f, {11.0, 34.0, 58.0});
-  int before = packedPixels(r.frames[0]), away = packedPixels(r.frames[1]), back = packedPixels(r.frames[2]);
+  auto r = renderLayer(1.f, {11.0, 34.0, 58.0});
+  int before = packedPixels(r[0]), away = packedPixels(r[1]), back = packedPixels(r[2]);
   EXPECT_GT(before, 200) << "trails and ruts should cover hundreds of pixels";
   EXPECT_EQ(away, 0) << "stored prints must not ghost into the window elsewhere";
   EXPECT_EQ(back, before);
   double sum = 0.0;
   float worst = 0.f;
-  for (std::size_t i = 0; i < r.frames[0].rgba.size(); ++i) {
-    float d = std::abs(r.frames[0].rgba[i] - r.frames[2].rgba[i]);
+  for (std::size_t i = 0; i < r[0].rgba.size(); ++i) {
+    float d = std::abs(r[0].rgba[i] - r[2].rgba[i]);
     sum += d;
     worst = std::max(worst, d);
   }
-  EXPECT_LT(sum / double(r.frames[0].rgba.size()), 1e-4);
+  EXPECT_LT(sum / double(r[0].rgba.size()), 1e-4);
   EXPECT_LT(worst, 0.05f);
 }
 
 TEST_F(Snowfield, NoSnowNoPrints) {
-  Frames r = renderLayer(0.f, {11.0});
-  EXPECT_EQ(packedPixels(r.frames[0]), 0);
+  EXPECT_EQ(packedPixels(renderLayer(0.f, {11.0})[0]), 0);
+}
+
+// Snow puffs against the scene's depth (seed 3.3.2): a puff in the air in front of the
+// camera shows; the same puff under the snow surface is faded out completely, because
+// the fragment stage compares with the scene's D32 depth at full precision.
+TEST_F(Snowfield, PuffsShowInTheAirAndFadeIntoTheSnow) {
+  Snowscape scape(1.f);
+  RenderRequest request = scape.request(scape.animation->advanceTo(0.5));
+  SceneRenderer& renderer = *scape.renderer;
+  RenderedFrame plain = renderer.render(request);
+  auto changedBy = [&](float y) {
+    SnowPuffs puffs(*snowContext());
+    glm::vec3 at(0.f, y, 1.f);  // 5 m in front of the camera, clear of walkers and rocks
+    puffs.emit(std::span(&at, 1));
+    puffs.simulate(0.05, glm::vec2(0.f));
+    RenderRequest withPuffs = request;
+    withPuffs.afterColourPass = [&](const ColourPassTargets& t) { puffs.record(t); };
+    RenderedFrame f = renderer.render(withPuffs);
+    int changed = 0;
+    for (std::size_t i = 0; i < f.rgba.size(); i += 4) changed += std::abs(f.rgba[i] - plain.rgba[i]) > 0.02f;
+    return changed;
+  };
+  EXPECT_GT(changedBy(0.5f), 30) << "a puff above the 0.3 m snow";
+  EXPECT_EQ(changedBy(-0.6f), 0) << "a puff under the snow, at every point behind its surface";
+}
+
+// Bloom (seed 3.5.1): sunlit snow glows, so the frame gets brighter, never darker.
+TEST_F(Snowfield, BloomOnlyAddsLight) {
+  Snowscape scape(1.f);
+  SceneRenderer& renderer = *scape.renderer;
+  RenderRequest request = scape.request(scape.animation->advanceTo(0.0));
+  BloomPass bloom(*snowContext());
+  RenderedFrame plain = renderer.render(request);
+  request.afterColourPass = [&](const ColourPassTargets& t) { bloom.record(t.cmd, *t.colour); };
+  RenderedFrame bloomed = renderer.render(request);
+  double added = 0.0;
+  for (std::size_t i = 0; i < plain.rgba.size(); ++i) {
+    ASSERT_GE(bloomed.rgba[i], plain.rgba[i] - 1e-6f) << i;
+    added += bloomed.rgba[i] - plain.rgba[i];
+  }
+  EXPECT_GT(added / double(plain.rgba.size()), 0.01) << "sunlit snow is above the threshold";
 }
 
 }  // namespace

@@ -1,0 +1,255 @@
+#include "runtime/snow/snow_puffs.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "nodes/lattice_noise.hpp"
+#include "runtime/material_resources.hpp"
+#include "runtime/snow/snow_puff_shaders.hpp"
+#include "runtime/vulkan/material_pipeline.hpp"
+#include "runtime/vulkan/compute_barriers.hpp"
+#include "runtime/vulkan/runtime_shader.hpp"
+
+namespace wg::snow {
+
+namespace {
+constexpr std::uint32_t kVerticesPerParticle = 6;
+constexpr float kTwoPi = 6.2831853f;
+// Spread of each particle's attributes around the settings (uniform, +-).
+constexpr float kLifeSpread = 0.3f, kSizeSpread = 0.3f, kSpeedLow = 0.5f, kJitter = 0.05f;
+// Launch elevation: most snow is kicked up and forward, little sideways.
+constexpr float kMinElevation = 0.7f, kMaxElevation = 1.35f;  // radians
+// Display brightness of the puffs: sunlit dust, a touch brighter than the snow under it
+// (which the tone curve puts near 0.9), so it reads against it and blooms.
+constexpr float kLowestShade = 0.95f, kBrightestShade = 1.1f;
+constexpr float kOpacity = 0.6f;
+
+struct StepConstants {
+  float wind[2];
+  float dt, gravity, drag;
+  std::uint32_t count;
+};
+struct ViewConstants {
+  glm::mat4 viewProjection;
+  glm::vec4 right, up;
+  glm::vec4 fade;  // near, far, softness, opacity
+};
+
+// Deterministic draws in [0, 1): the lattice-noise hash of (particle, draw number).
+struct Draws {
+  std::int32_t particle;
+  std::int32_t next = 0;
+  float unit() { return float(latticeHash(particle, next++) >> 8) / float(1u << 24); }
+  float around(float spread) { return 1.f + spread * (2.f * unit() - 1.f); }
+};
+}  // namespace
+
+SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
+    : ctx_(ctx), settings_(settings),
+      particles_(ctx, settings.capacity * sizeof(Particle), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+  std::memset(particles_.mapped(), 0, particles_.size());
+  VkDevice d = ctx_.device();
+  auto simulate = vk::compileRuntimeShader(puffSimulateSource(), vk::RuntimeStage::Compute, "snow puff step");
+  auto vertex = vk::compileRuntimeShader(puffVertexSource(), vk::RuntimeStage::Vertex, "snow puff vertex");
+  auto fragment = vk::compileRuntimeShader(puffFragmentSource(), vk::RuntimeStage::Fragment, "snow puff fragment");
+  simulateSet_ = std::make_unique<vk::ReflectedDescriptorSet>(ctx_, std::vector{simulate.interface}, VK_SHADER_STAGE_COMPUTE_BIT);
+  drawSet_ = std::make_unique<vk::ReflectedDescriptorSet>(ctx_, std::vector{vertex.interface, fragment.interface},
+                                                          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  if (simulateSet_->pushConstantBytes() != sizeof(StepConstants) || drawSet_->pushConstantBytes() != sizeof(ViewConstants))
+    throw std::runtime_error("snow puff shaders: push constants disagree with StepConstants / ViewConstants");
+  simulateSet_->bindBuffer("Particles", particles_);
+  drawSet_->bindBuffer("Particles", particles_);
+  depthSampler_ = createSampler(ctx_, "clamp", "nearest");
+  drawSet_->bindSampler("DepthSampler", depthSampler_);
+  simulateLocalSize_ = simulate.interface.localSize[0];
+
+  simulateModule_ = vk::createShaderModule(ctx_, simulate.words);
+  simulatePipeline_ = vk::createComputePipeline(ctx_, simulateModule_, simulateSet_->pipelineLayout());
+
+  // Draws over the finished colour: load it, keep it; no depth attachment, the
+  // fragment stage compares against the sampled scene depth itself.
+  VkAttachmentDescription colour{};
+  colour.format = vk::kColourFormat;
+  colour.samples = VK_SAMPLE_COUNT_1_BIT;
+  colour.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  colour.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  colour.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &ref;
+  VkSubpassDependency before{};
+  before.srcSubpass = VK_SUBPASS_EXTERNAL;
+  before.dstSubpass = 0;
+  before.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  before.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  before.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  before.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  VkRenderPassCreateInfo passInfo{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  passInfo.attachmentCount = 1;
+  passInfo.pAttachments = &colour;
+  passInfo.subpassCount = 1;
+  passInfo.pSubpasses = &subpass;
+  passInfo.dependencyCount = 1;
+  passInfo.pDependencies = &before;
+  vk::check(vkCreateRenderPass(d, &passInfo, nullptr, &pass_), "vkCreateRenderPass");
+
+  vertexModule_ = vk::createShaderModule(ctx_, vertex.words);
+  fragmentModule_ = vk::createShaderModule(ctx_, fragment.words);
+  VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vertexModule_;
+  stages[0].pName = "main";
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = fragmentModule_;
+  stages[1].pName = "main";
+  VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.lineWidth = 1.f;
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineColorBlendAttachmentState blend{};
+  blend.blendEnable = VK_TRUE;  // premultiplied alpha
+  blend.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+  blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blend.colorBlendOp = VK_BLEND_OP_ADD;
+  blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blend.alphaBlendOp = VK_BLEND_OP_ADD;
+  blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  VkPipelineColorBlendStateCreateInfo blendState{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blendState.attachmentCount = 1;
+  blendState.pAttachments = &blend;
+  VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = 2;
+  dynamic.pDynamicStates = dynamicStates;
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = 2;
+  info.pStages = stages;
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pColorBlendState = &blendState;
+  info.pDynamicState = &dynamic;
+  info.layout = drawSet_->pipelineLayout();
+  info.renderPass = pass_;
+  vk::check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &drawPipeline_), "vkCreateGraphicsPipelines");
+}
+
+SnowPuffs::~SnowPuffs() {
+  VkDevice d = ctx_.device();
+  vkDeviceWaitIdle(d);
+  if (framebuffer_) vkDestroyFramebuffer(d, framebuffer_, nullptr);
+  vkDestroyPipeline(d, drawPipeline_, nullptr);
+  vkDestroyPipeline(d, simulatePipeline_, nullptr);
+  vkDestroyRenderPass(d, pass_, nullptr);
+  for (VkShaderModule m : {simulateModule_, vertexModule_, fragmentModule_}) vkDestroyShaderModule(d, m, nullptr);
+  vkDestroySampler(d, depthSampler_, nullptr);
+}
+
+void SnowPuffs::emit(std::span<const glm::vec3> footfalls) {
+  auto* slots = static_cast<Particle*>(particles_.mapped());
+  for (glm::vec3 at : footfalls)
+    for (int i = 0; i < settings_.particlesPerFootfall; ++i) {
+      Draws draw{static_cast<std::int32_t>(++emitted_)};
+      float azimuth = kTwoPi * draw.unit();
+      float elevation = kMinElevation + (kMaxElevation - kMinElevation) * draw.unit();
+      float speed = settings_.launchSpeed * (kSpeedLow + (1.f - kSpeedLow) * draw.unit());
+      glm::vec3 direction(std::cos(azimuth) * std::cos(elevation), std::sin(elevation), std::sin(azimuth) * std::cos(elevation));
+      glm::vec3 jitter(draw.unit() - 0.5f, 0.f, draw.unit() - 0.5f);
+      Particle& p = slots[next_];
+      p.positionAge = glm::vec4(at + jitter * (2.f * kJitter), 0.f);
+      p.velocityLife = glm::vec4(direction * speed, settings_.lifetime * draw.around(kLifeSpread));
+      p.sizeShade = glm::vec4(settings_.radius * draw.around(kSizeSpread),
+                              kLowestShade + (kBrightestShade - kLowestShade) * draw.unit(), at.y, 0.f);
+      next_ = (next_ + 1) % settings_.capacity;
+    }
+}
+
+void SnowPuffs::simulate(double seconds, glm::vec2 wind) {
+  if (!(seconds > 0.0)) return;
+  StepConstants c{{wind.x, wind.y}, float(seconds), settings_.gravity, settings_.drag, settings_.capacity};
+  ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+    VkDescriptorSet set = simulateSet_->set();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, simulatePipeline_);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, simulateSet_->pipelineLayout(), 0, 1, &set, 0, nullptr);
+    vkCmdPushConstants(cmd, simulateSet_->pipelineLayout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof c, &c);
+    vkCmdDispatch(cmd, (settings_.capacity + simulateLocalSize_ - 1) / simulateLocalSize_, 1, 1);
+    vk::computeToHostBarrier(cmd);  // emit() writes the ring from the host
+  });
+}
+
+void SnowPuffs::record(const ColourPassTargets& t) {
+  VkDevice d = ctx_.device();
+  // The previous frame has been submitted and waited for: its framebuffer can go.
+  if (framebuffer_) vkDestroyFramebuffer(d, framebuffer_, nullptr);
+  VkImageView view = t.colour->view();
+  VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  fb.renderPass = pass_;
+  fb.attachmentCount = 1;
+  fb.pAttachments = &view;
+  fb.width = t.colour->width();
+  fb.height = t.colour->height();
+  fb.layers = 1;
+  vk::check(vkCreateFramebuffer(d, &fb, nullptr, &framebuffer_), "vkCreateFramebuffer");
+  drawSet_->bindImage("SceneDepth", t.depth->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  vk::Image2D::transition(t.cmd, t.depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  // Billboards face the camera: its right and up directions, unprojected from the
+  // centre of the screen.
+  glm::mat4 inverse = glm::inverse(t.viewProjection);
+  auto unproject = [&](glm::vec3 ndc) {
+    glm::vec4 p = inverse * glm::vec4(ndc, 1.f);
+    return glm::vec3(p) / p.w;
+  };
+  glm::vec3 centre = unproject({0.f, 0.f, 0.5f});
+  glm::vec3 right = glm::normalize(unproject({1.f, 0.f, 0.5f}) - centre);
+  glm::vec3 up = glm::normalize(unproject({0.f, -1.f, 0.5f}) - centre);  // clip y points down
+  ViewConstants c{t.viewProjection, glm::vec4(right, 0.f), glm::vec4(up, 0.f),
+                  {t.nearPlane, t.farPlane, settings_.softness, kOpacity}};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = pass_;
+  begin.framebuffer = framebuffer_;
+  begin.renderArea = {{0, 0}, {t.colour->width(), t.colour->height()}};
+  vkCmdBeginRenderPass(t.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  VkViewport viewport{0.f, 0.f, float(t.colour->width()), float(t.colour->height()), 0.f, 1.f};
+  VkRect2D scissor{{0, 0}, {t.colour->width(), t.colour->height()}};
+  vkCmdSetViewport(t.cmd, 0, 1, &viewport);
+  vkCmdSetScissor(t.cmd, 0, 1, &scissor);
+  VkDescriptorSet set = drawSet_->set();
+  vkCmdBindPipeline(t.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, drawPipeline_);
+  vkCmdBindDescriptorSets(t.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, drawSet_->pipelineLayout(), 0, 1, &set, 0, nullptr);
+  vkCmdPushConstants(t.cmd, drawSet_->pipelineLayout(), drawSet_->stages(), 0, sizeof c, &c);
+  vkCmdDraw(t.cmd, settings_.capacity * kVerticesPerParticle, 1, 0, 0);
+  vkCmdEndRenderPass(t.cmd);
+  vk::Image2D::transition(t.cmd, t.depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+}
+
+std::span<const Particle> SnowPuffs::particles() const {
+  return {static_cast<const Particle*>(particles_.mapped()), settings_.capacity};
+}
+
+std::size_t SnowPuffs::live() const {
+  std::size_t n = 0;
+  for (const Particle& p : particles()) n += p.velocityLife.w > 0.f;
+  return n;
+}
+
+}  // namespace wg::snow
