@@ -198,6 +198,27 @@ TEST(DeformationMap, PrintsSurviveRecentringAndARoundTripOutOfTheWindow) {
   EXPECT_TRUE(std::equal(now.begin(), now.end(), snapshot.begin()));
 }
 
+TEST(DeformationMap, RecentringTouchesOnlyTheTilesThatLeaveAndEnter) {
+  DeformationMap map(kSmall);
+  std::vector<Stamp> stamps;
+  for (float x = -2.4f; x < 2.4f; x += 0.3f)
+    for (float z = -2.4f; z < 2.4f; z += 0.3f) stamps.push_back(capsule({x, z}, {x, z}, 0.05f, kDeep, 0.1f));
+  map.apply(stamps);
+  std::vector<std::uint32_t> before(map.texels().heights.begin(), map.texels().heights.end());
+  TexelRect old = map.window().rect();
+  // One tile east: one column of tiles leaves (west) and one enters (east).
+  Recentring r = map.follow({kSmall.texelSize * float(kSmall.tileTexels) + 0.01f, 0.f});
+  const int tilesPerSide = int(kSmall.resolution / kSmall.tileTexels);
+  EXPECT_EQ(r.evicted, std::size_t(tilesPerSide));
+  TexelRect stays = old.intersect(map.window().rect());
+  EXPECT_EQ(stays.size.x, old.size.x - int(kSmall.tileTexels));
+  for (int z = stays.min.y; z < stays.min.y + stays.size.y; ++z)
+    for (int x = stays.min.x; x < stays.min.x + stays.size.x; ++x) {
+      std::size_t i = map.window().storageIndex({x, z});
+      ASSERT_EQ(map.texels().heights[i], before[i]) << "texel " << x << "," << z << " stayed but changed";
+    }
+}
+
 TEST(DeformationMap, StoredPrintsCatchUpOnTheRefillTheyMissed) {
   DeformationMap map(kSmall);
   Stamp s = capsule({0.f, 0.f}, {0.f, 0.f}, 0.3f, SnowCover{0.3f}, 0.1f);
