@@ -136,6 +136,7 @@ int runSnowWalk(vk::Context& ctx, double minutes) {
               minutes, frames, stamps, kCompanions + 1, seconds * kWalkSpeed);
   std::printf("| what | memory |\n|---|---|\n");
   std::printf("| deformation map (heights + normals, 1024², 2 x 32 bit) | %.2f MiB |\n", map.mapBytes() / kMiB);
+  std::printf("| surface image the snow layer samples (RGBA16F) | %.2f MiB |\n", map.surfaceImage().byteSize() / kMiB);
   std::printf("| print store: %zu tiles of 32² texels | %.2f MiB (peak %.2f MiB) |\n", map.store().tileCount(),
               map.store().memoryBytes() / kMiB, peakStore / kMiB);
   return kExitOk;

@@ -45,6 +45,10 @@ DeformationPass::~DeformationPass() {
 
 void DeformationPass::bind(const std::string& block, const vk::Buffer& buffer) { set_->bindBuffer(block, buffer); }
 
+void DeformationPass::bindSurface(const vk::Image2D& image) {
+  set_->bindImage("Surface", image.view(), VK_IMAGE_LAYOUT_GENERAL);
+}
+
 void DeformationPass::dispatch(VkCommandBuffer cmd, const Pipeline& p, const WindowConstants& window,
                                glm::ivec2 extent, std::uint32_t layers) const {
   std::uint32_t gx = groups(extent.x, p.localSize[0]), gy = groups(extent.y, p.localSize[1]);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "runtime/vulkan/gpu_buffer.hpp"
+#include "runtime/vulkan/gpu_image.hpp"
 #include "runtime/vulkan/reflected_descriptor_set.hpp"
 
 namespace wg::snow {
@@ -34,6 +35,8 @@ class DeformationPass {
   // Points the block named `block` (Heights, Normals, Stamps, StampBoxes, NormalRects)
   // at a buffer. Every block must be bound before the first record.
   void bind(const std::string& block, const vk::Buffer& buffer);
+  // The surface image the normal stage writes (GENERAL layout while the pass runs).
+  void bindSurface(const vk::Image2D& image);
 
   // Stamp layers, then a barrier, then normal layers; `stampExtent` / `rectExtent` are
   // the largest box and rectangle sizes (texels).

@@ -19,8 +19,9 @@ layout(push_constant) uniform Window {
 layout(std430, set = 0, binding = 0) buffer Heights { uint heights[]; };
 const float kDepthQuantum = 1e-4;
 const uint kMaxQuanta = 0xFFFFu;
+ivec2 storageSlot(ivec2 texel) { return (window.originSlot + (texel - window.origin)) % window.resolution; }
 uint storageIndex(ivec2 texel) {
-  ivec2 slot = (window.originSlot + (texel - window.origin)) % window.resolution;
+  ivec2 slot = storageSlot(texel);
   return uint(slot.y * window.resolution + slot.x);
 }
 uint toQuanta(float metres) {
@@ -78,9 +79,12 @@ void main() {
 )";
 
 // Central differences of the decoded height, neighbours clamped to the window; one
-// workgroup layer per rectangle (each stamp's box grown by one texel).
+// workgroup layer per rectangle (each stamp's box grown by one texel). The same texels
+// of the surface image the snow layer samples (height, world normal; same toroidal
+// order) are rewritten too, so nothing is resolved or uploaded from the CPU.
 constexpr std::string_view kNormals = R"(
 layout(std430, set = 0, binding = 1) writeonly buffer Normals { uint normals[]; };
+layout(set = 0, binding = 5, rgba16f) uniform writeonly image2D Surface;
 layout(std430, set = 0, binding = 4) readonly buffer NormalRects { ivec4 normalRects[]; };
 float heightAt(ivec2 texel) {
   texel = clamp(texel, window.origin, window.origin + window.resolution - 1);
@@ -96,6 +100,7 @@ void main() {
   float dz = (heightAt(t + ivec2(0, 1)) - heightAt(t - ivec2(0, 1))) / span;
   vec3 n = normalize(vec3(-dx, 1.0, -dz));
   normals[storageIndex(t)] = packSnorm2x16(vec2(n.x, n.z));
+  imageStore(Surface, storageSlot(t), vec4(heightAt(t), n));
 }
 )";
 

@@ -13,6 +13,9 @@ namespace {
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 // Stamp buffers start with room for this many and double when a frame needs more.
 constexpr std::size_t kInitialStamps = 64;
+// Half floats hold the height to ~0.2 mm and the normal to ~1e-3: plenty for shading,
+// half the memory of RGBA32F.
+constexpr VkFormat kSurfaceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
 
 glm::ivec4 packRect(const TexelRect& r) { return {r.min.x, r.min.y, r.size.x, r.size.y}; }
@@ -28,6 +31,20 @@ GpuDeformationMap::GpuDeformationMap(vk::Context& ctx, const WindowSettings& set
   std::memset(normals_.mapped(), 0, bytes);
   pass_.bind("Heights", heights_);
   pass_.bind("Normals", normals_);
+  surface_ = vk::Image2D(ctx_, settings.resolution, settings.resolution, kSurfaceFormat,
+                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT);  // cleared at start; read back by tests
+  pass_.bindSurface(surface_);
+  ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+    // Untouched snow: no offset, normal straight up.
+    vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                            VK_IMAGE_LAYOUT_GENERAL);
+    VkClearColorValue flat{{0.f, 0.f, 1.f, 0.f}};
+    VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd, surface_.handle(), VK_IMAGE_LAYOUT_GENERAL, &flat, 1, &all);
+    vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  });
   reserve(kInitialStamps);
   VkQueryPoolCreateInfo query{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   query.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -68,9 +85,13 @@ WindowConstants GpuDeformationMap::constants(std::uint32_t refillQuanta) const {
 double GpuDeformationMap::submit(const std::function<void(VkCommandBuffer)>& record) {
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
     vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
+    vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                            VK_IMAGE_LAYOUT_GENERAL);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
     record(cmd);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+    vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     vk::computeToHostBarrier(cmd);  // host reads of the map (recentring, tests)
   });
   std::uint64_t ticks[2] = {0, 0};
@@ -120,7 +141,24 @@ double GpuDeformationMap::refill(double metresPerSecond, double seconds) {
 }
 
 Recentring GpuDeformationMap::follow(glm::vec2 camera) {
-  return recentre(window_, texels(), camera, store_, refill_.totalQuanta());
+  Recentring r = recentre(window_, texels(), camera, store_, refill_.totalQuanta());
+  if (r.moved()) renormal(r.enteredRects);
+  return r;
+}
+
+void GpuDeformationMap::renormal(const std::vector<TexelRect>& rects) {
+  reserve(rects.size());
+  auto* out = static_cast<glm::ivec4*>(normalRects_.mapped());
+  glm::ivec2 extent(0);
+  std::uint32_t count = 0;
+  for (const TexelRect& r : rects) {
+    if (r.empty()) continue;
+    out[count++] = packRect(r);
+    extent = glm::max(extent, r.size);
+  }
+  if (count == 0) return;
+  WindowConstants c = constants(0);
+  submit([&](VkCommandBuffer cmd) { pass_.recordNormals(cmd, c, count, extent); });
 }
 
 MapTexels GpuDeformationMap::texels() {

@@ -1,8 +1,11 @@
 // The deformation height map on the GPU: the window's two texel planes in storage
 // buffers, stamped and re-normalled by the compute pass over touched texels only, and
-// refilled by a global pass on the frames a refill quantum is due. Recentring and the
-// print store run on the CPU over the buffers' mapped memory (every submit here waits,
-// so the GPU is idle then); they touch only the tiles that leave or enter.
+// refilled by a global pass on the frames a refill quantum is due. The normal stage also
+// writes the surface image materials sample (snowDeformation: RGBA16F height and world
+// normal, toroidal order), so rendering needs no CPU resolve. Recentring and the print
+// store run on the CPU over the buffers' mapped memory (every submit here waits, so the
+// GPU is idle then); they touch only the tiles that leave or enter, and the surface
+// image is redone on the GPU for the tiles that entered.
 #pragma once
 #include <functional>
 #include <memory>
@@ -40,18 +43,25 @@ class GpuDeformationMap {
   glm::vec3 normalAt(glm::vec2 world);
 
   std::size_t mapBytes() const { return heights_.size() + normals_.size(); }
+  // In SHADER_READ_ONLY_OPTIMAL between calls; sample with a repeat sampler at
+  // world xz / extent.
+  const vk::Image2D& surfaceImage() const { return surface_; }
   const vk::Buffer& heightBuffer() const { return heights_; }
   const vk::Buffer& normalBuffer() const { return normals_; }
 
  private:
   WindowConstants constants(std::uint32_t refillQuanta) const;
   void reserve(std::size_t stamps);
+  // Records `record` between timestamps, with the surface image writable in between.
   double submit(const std::function<void(VkCommandBuffer)>& record);
+  // Normals (and the surface image) over `rects`.
+  void renormal(const std::vector<TexelRect>& rects);
 
   vk::Context& ctx_;
   SnowWindow window_;
   DeformationPass pass_;
   vk::Buffer heights_, normals_, stamps_, stampBoxes_, normalRects_;
+  vk::Image2D surface_;
   std::size_t capacity_ = 0;
   PrintTileStore store_;
   DeformationRefill refill_;

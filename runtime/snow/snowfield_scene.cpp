@@ -6,8 +6,6 @@
 #include <cstdio>
 
 #include "runtime/scene/shapes.hpp"
-#include "runtime/snow/cpu_stamping.hpp"
-#include "runtime/snow/deformation_texel.hpp"
 
 namespace wg::snow {
 
@@ -98,15 +96,10 @@ SnowfieldAnimation::SnowfieldAnimation(vk::Context& ctx, const SnowfieldSettings
     : settings_(settings),
       weather_(weather),
       map_(ctx, settings.window, {kStart.x, kStart.z}),
-      ctx_(ctx),
-      image_(ctx, settings.window.resolution, settings.window.resolution, VK_FORMAT_R32G32B32A32_SFLOAT,
-             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
       walkers_(scriptedWalkers()),
       vehicle_(scriptedVehicle()),
       puffs_(ctx),
-      bloom_(ctx) {
-  resolve();
-}
+      bloom_(ctx) {}
 
 // The first moment is just after a footfall (walker 0 steps at 2.68 s), so a puff hangs.
 std::vector<double> SnowfieldAnimation::keyTimes() { return {2.8, 11.0, 24.0, 34.0, 58.0}; }
@@ -148,21 +141,6 @@ void SnowfieldAnimation::step(double t0, double t1) {
   stamps_ += stamps.size();
 }
 
-void SnowfieldAnimation::resolve() {
-  // Storage order is the image's order: uv = world xz / extent, wrapped by the repeat
-  // sampler, lands on the toroidal texel (docs/deformable-snow.md).
-  MapTexels t = map_.texels();
-  std::vector<float> texels(t.heights.size() * 4);
-  for (std::size_t i = 0; i < t.heights.size(); ++i) {
-    glm::vec3 n = unpackNormal(t.normals[i]);
-    texels[4 * i + 0] = texelHeight(t.heights[i]);
-    texels[4 * i + 1] = n.x;
-    texels[4 * i + 2] = n.y;
-    texels[4 * i + 3] = n.z;
-  }
-  image_.upload(ctx_, texels.data(), texels.size() * sizeof(float));
-}
-
 std::function<void(const ColourPassTargets&)> SnowfieldAnimation::postPasses() {
   return [this](const ColourPassTargets& t) {
     puffs_.record(t);
@@ -178,7 +156,6 @@ SnowfieldMoment SnowfieldAnimation::advanceTo(double seconds) {
     step(time_, next);
     time_ = next;
   }
-  resolve();
   SnowfieldMoment m;
   m.time = time_;
   glm::vec3 eye = cameraEye(time_);

@@ -45,10 +45,10 @@ class SnowfieldAnimation {
  public:
   SnowfieldAnimation(vk::Context& ctx, const SnowfieldSettings& settings, const WeatherState& weather);
 
-  // Advances the simulation to `seconds` (never backwards) and resolves the map into
-  // the image the renderer samples.
+  // Advances the simulation to `seconds` (never backwards).
   SnowfieldMoment advanceTo(double seconds);
-  const vk::Image2D& deformationImage() const { return image_; }
+  // What the snow layer samples as snowDeformation (kept current by the map's passes).
+  const vk::Image2D& deformationImage() const { return map_.surfaceImage(); }
   // Snow puffs and bloom, to record after the colour pass (RenderRequest::afterColourPass).
   std::function<void(const ColourPassTargets&)> postPasses();
   const SnowPuffs& puffs() const { return puffs_; }
@@ -60,13 +60,10 @@ class SnowfieldAnimation {
 
  private:
   void step(double t0, double t1);
-  void resolve();
 
   SnowfieldSettings settings_;
   WeatherState weather_;
   GpuDeformationMap map_;
-  vk::Context& ctx_;
-  vk::Image2D image_;
   std::vector<Walker> walkers_;
   Vehicle vehicle_;
   SnowPuffs puffs_;

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/packing.hpp>
+
 #include <algorithm>
 #include <memory>
 
@@ -162,6 +164,39 @@ TEST_F(GpuDeformation, PrintsSurviveRecentringAndARoundTrip) {
   Stamp again = capsule({0.f, 0.f}, {0.f, 0.f}, 0.1f, SnowCover{0.3f}, 0.1f);
   gpu.apply(std::span(&again, 1));
   EXPECT_NEAR(gpu.depthAt({0.f, 0.f}), 0.1f, kDepthQuantum);
+}
+
+// The surface image the snow layer samples holds, per toroidal slot, the texel's height
+// and normal: after stamps, a round trip out of the window and a refill.
+TEST_F(GpuDeformation, SurfaceImageFollowsTheMap) {
+  GpuDeformationMap gpu(*snowContext(), kSmall);
+  auto expectSurfaceMatches = [&](const char* when) {
+    // download() only reads the image (it is not const-qualified).
+    auto& image = const_cast<vk::Image2D&>(gpu.surfaceImage());
+    auto raw = image.download(*snowContext(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    const auto* halves = reinterpret_cast<const std::uint16_t*>(raw.data());
+    auto t = gpu.texels();
+    int deformed = 0, wrong = 0;
+    for (std::size_t i = 0; i < t.heights.size(); ++i) {
+      glm::vec4 s(glm::unpackHalf1x16(halves[4 * i]), glm::unpackHalf1x16(halves[4 * i + 1]),
+                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
+      bool height = std::abs(s.x - texelHeight(t.heights[i])) <= 5e-4f;
+      bool normal = glm::dot(glm::vec3(s.y, s.z, s.w), unpackNormal(t.normals[i])) > 0.999f;
+      wrong += !(height && normal);
+      deformed += t.heights[i] != 0;
+    }
+    EXPECT_EQ(wrong, 0) << when;
+    return deformed;
+  };
+  for (const auto& stamps : scriptedFrames(3.0, kCover)) gpu.apply(stamps);
+  EXPECT_GT(expectSurfaceMatches("after stamping"), 500);
+  for (float x = 0.f; x <= 30.f; x += 0.9f) gpu.follow({x, 0.f});
+  EXPECT_EQ(expectSurfaceMatches("away"), 0);
+  for (float x = 30.f; x >= 0.f; x -= 0.9f) gpu.follow({x, 0.f});
+  gpu.follow({0.f, 0.f});
+  EXPECT_GT(expectSurfaceMatches("back"), 500);
+  gpu.refill(0.01 / 3600.0, 3600.0);
+  expectSurfaceMatches("refilled");
 }
 
 TEST_F(GpuDeformation, RefillReducesPrintDepthAtTheConfiguredRate) {
