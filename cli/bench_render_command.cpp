@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/bundled_graphs_directory.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "runtime/scene_renderer.hpp"
@@ -62,6 +63,11 @@ int runBenchRenderCommand(int argc, char** argv) {
     std::fprintf(stderr, "weathergen: error WG9001: --size takes WxH\n");
     return kExitUsage;
   }
+  const std::string graphsDir = bundledGraphsDirectory();
+  if (graphsDir.empty()) {
+    std::fprintf(stderr, "weathergen: error WG9001: cannot find the bundled graphs next to this executable\n");
+    return kExitUsage;
+  }
   std::vector<std::string> scenes;
   if (sceneArg == "all")
     for (auto n : scene::sceneNames()) scenes.emplace_back(n);
@@ -85,7 +91,7 @@ int runBenchRenderCommand(int argc, char** argv) {
       return kExitUsage;
     }
     glm::vec3 sun = scene->towardsSun;
-    SceneRenderer renderer(*ctx, std::move(*scene), WG_DEFAULT_GRAPHS_DIR);
+    SceneRenderer renderer(*ctx, std::move(*scene), graphsDir);
     auto measure = [&](const RenderRequest& request) {
       std::vector<double> times;
       for (int i = 0; i < kWarmUpFrames + frames; ++i) {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 
+#include "cli/bundled_graphs_directory.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
@@ -52,7 +53,8 @@ Options:
                             (default: the CPU device, lavapipe)
   --validation              enable the Vulkan validation layers; any message fails
   --no-shadows              draw without the sun shadow map
-  --graphs DIR              where the bundled graphs live (default: the source tree's)
+  --graphs DIR              where the bundled graphs live (default: found next to the
+                            executable: the source tree, or share/weathergen/graphs)
   -q, --quiet               no progress output
 )";
 
@@ -123,7 +125,7 @@ int renderSnowfieldScene(const std::vector<std::string>& weatherLists, RenderReq
 
 int runRenderCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2);
-  std::string sceneName, camera, output, timelinePath, aov = "lit", device, graphsDir = WG_DEFAULT_GRAPHS_DIR, framesDir;
+  std::string sceneName, camera, output, timelinePath, aov = "lit", device, graphsDir = bundledGraphsDirectory(), framesDir;
   std::optional<std::string> preset;
   std::vector<std::string> weatherLists;
   RenderRequest request;
@@ -181,6 +183,7 @@ int runRenderCommand(int argc, char** argv) {
   if (sceneName.empty()) return usageError("no scene; pass --scene NAME (valley, rocks, river, road or snowfield)");
   if (output.empty()) return usageError("no output; pass -o OUT.png");
   if (!timelinePath.empty() && !weatherLists.empty()) return usageError("--weather and --timeline exclude each other");
+  if (graphsDir.empty()) return usageError("cannot find the bundled graphs next to this executable; pass --graphs DIR");
   if (sceneName == snow::kSnowfieldScene) {
     if (!timelinePath.empty() || !camera.empty()) return usageError("the snowfield scene has its own camera path and timeline");
     return renderSnowfieldScene(weatherLists, request, aov, preset, output, framesDir, device, graphsDir, validation, quiet);

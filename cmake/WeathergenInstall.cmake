@@ -6,6 +6,8 @@ include(GNUInstallDirs)
 set(WG_PACKAGE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/weathergen")
 
 install(TARGETS weathergen EXPORT weathergenTargets RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+# The bundled graphs: `weathergen render` finds them at ../share/weathergen/graphs.
+install(DIRECTORY graphs/ DESTINATION "${CMAKE_INSTALL_DATADIR}/weathergen/graphs" FILES_MATCHING PATTERN "*.json")
 install(EXPORT weathergenTargets NAMESPACE weathergen:: DESTINATION "${WG_PACKAGE_DIR}")
 
 configure_package_config_file(cmake/weathergenConfig.cmake.in

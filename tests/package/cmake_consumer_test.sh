@@ -53,6 +53,15 @@ for f in bin/weathergen lib/cmake/weathergen/weathergenConfig.cmake \
   [[ -e "$tmp/prefix/$f" ]] || fail "cmake --install did not install $f"
 done
 
+# The installed binary knows nothing of the tree it was built in (cache keys stay the
+# same across checkouts, docs/scaling.md) and finds the installed bundled graphs.
+[[ -e "$tmp/prefix/share/weathergen/graphs/rock.json" ]] || fail "cmake --install did not install the bundled graphs"
+if grep -q -F -- "$source_dir" "$tmp/prefix/bin/weathergen"; then
+  fail "the installed binary holds the source path $source_dir"
+fi
+(cd "$tmp" && "$tmp/prefix/bin/weathergen" render --scene rocks --size 32x18 -o "$tmp/rocks.png" -q) ||
+  fail "the installed weathergen cannot render with its installed graphs"
+
 # A copy, so touching its files leaves the source tree alone.
 cp -R "$source_dir/examples/cmake-consumer" "$tmp/src"
 "$cmake" -S "$tmp/src" -B "$tmp/build" -G Ninja -DCMAKE_MAKE_PROGRAM="$ninja" \
