@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
-# The main job: set up, build, compile every bundled graph into out/materials, and
+# The main job: set up, build, compile every bundled graph into out/materials (and
+# every static-switch variant into out/variants), and
 # render the gallery into out/gallery (every scene, every weather stage, both backends).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/bootstrap.sh
 scripts/build.sh
-rm -rf out/materials out/gallery
+rm -rf out/materials out/variants out/gallery
 build/weathergen compile graphs/*.json -o out/materials --target all
 echo "main: wrote $(ls out/materials | wc -l) files for $(ls graphs/*.json | wc -l) materials to out/materials"
+# Every static-switch variant, files keyed by content hash; NAME.variants.json maps them.
+build/weathergen compile graphs/*.json -o out/variants --variants all
+echo "main: wrote $(ls out/variants | wc -l) files for every variant to out/variants (see out/variants/rock.variants.json)"
 mkdir -p out/gallery
 for scene in valley rocks river road; do
   for backend in glsl hlsl; do
