@@ -55,7 +55,8 @@ Options:
                              C++ structs laid out as std140, with a static_assert on
                              every offset (docs/engine-api.md)
   --depfile FILE             write a Make-syntax depfile: each material's outputs
-                             depend on its graph and its image files
+                             depend on its graph, its graph libraries and its
+                             image files
   --variants all|LIST        compile static-switch variants (docs/graph-format.md): all
                              permutations, or LIST = SWITCH[=VALUE|VALUE...],... where a
                              bare SWITCH means all its values; others keep their default
@@ -321,11 +322,13 @@ int runCompileCommand(int argc, char** argv) {
       ++written;
     }
     rule.inputs.push_back(outputs[g].graph);
-    std::set<std::string> textures;
-    for (const CompiledMaterial* m : outputs[g].variants)
+    std::set<std::string> readFiles;  // graph libraries and image files, over every variant
+    for (const CompiledMaterial* m : outputs[g].variants) {
+      readFiles.insert(m->ir.includedFiles.begin(), m->ir.includedFiles.end());
       for (const auto& t : m->ir.textures)
-        if (!t.file.empty()) textures.insert(t.resolvedPath);
-    rule.inputs.insert(rule.inputs.end(), textures.begin(), textures.end());
+        if (!t.file.empty()) readFiles.insert(t.resolvedPath);
+    }
+    rule.inputs.insert(rule.inputs.end(), readFiles.begin(), readFiles.end());
     rules.push_back(std::move(rule));
     compiled += outputs[g].variants.size();
   }

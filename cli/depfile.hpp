@@ -1,5 +1,6 @@
 // Make-syntax dependency files for Ninja, Make and CMake's add_custom_command(DEPFILE):
-// every output of a material depends on its graph and the image files it reads.
+// every output of a material depends on its graph, its graph libraries and the image
+// files it reads.
 #pragma once
 #include <string>
 #include <vector>

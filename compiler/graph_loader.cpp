@@ -10,6 +10,7 @@
 #include "compiler/literal.hpp"
 #include "compiler/static_switches.hpp"
 #include "nodes/image_file.hpp"
+#include "nodes/op_registry.hpp"
 #include "nodes/texture_generators.hpp"
 
 namespace wg {
@@ -72,26 +73,33 @@ constexpr int kMaxTextureSize = 2048;
 
 class Loader {
  public:
-  Loader(const JsonDocument& doc, DiagnosticList& diags) : doc_(doc), diags_(diags) {}
+  // Where the elements being loaded come from: the graph itself, or a library it
+  // includes, whose names get the alias as a prefix ("stone.albedo").
+  struct Scope {
+    std::string pointer;                // prefix of every pointer: "" or "/include/stone"
+    std::string names;                  // prefix of every name: "" or "stone."
+    std::filesystem::path fileBase;     // file textures are found relative to this
+    std::filesystem::path writtenBase;  // ... and reported relative to the graph with this
+  };
 
-  std::optional<MaterialGraph> run() {
+  Loader(JsonDocument& doc, DiagnosticList& diags, MaterialGraph& graph, Scope scope)
+      : doc_(doc), diags_(diags), graph_(graph), scope_(std::move(scope)) {}
+
+  bool runGraph() {
     const auto& root = doc_.root();
-    if (!expectKind(root, "", nlohmann::json::value_t::object, "the document", "an object")) return std::nullopt;
-    checkFields(root, "", {"$schema", "name", "description", "parameters", "textures", "switches", "nodes", "output",
-                           "weather", "alphaCutoff"});
+    if (!expectKind(root, "", nlohmann::json::value_t::object, "the document", "an object")) return false;
+    checkFields(root, "", {"$schema", "name", "description", "include", "parameters", "textures", "switches", "nodes",
+                           "output", "weather", "alphaCutoff"});
     graph_.sourceFile = doc_.file();
     if (auto* name = required(root, "", "name", nlohmann::json::value_t::string, "a string")) {
       graph_.name = name->get<std::string>();
       if (graph_.name.empty()) report(DiagCode::InvalidSetting, "/name", {"the material name is empty", "give the material a name"});
     }
-    if (root.contains("parameters") && expectKind(root["parameters"], "/parameters", nlohmann::json::value_t::object, "'parameters'", "an object"))
-      for (const auto& [key, value] : root["parameters"].items()) loadParameter(key, value);
-    if (root.contains("textures") && expectKind(root["textures"], "/textures", nlohmann::json::value_t::object, "'textures'", "an object"))
-      for (const auto& [key, value] : root["textures"].items()) loadTexture(key, value);
+    loadDeclarations(root);
+    if (root.contains("include") && expectKind(root["include"], "/include", nlohmann::json::value_t::object, "'include'", "an object"))
+      for (const auto& [alias, path] : root["include"].items()) loadLibrary(alias, path);
     if (root.contains("switches") && expectKind(root["switches"], "/switches", nlohmann::json::value_t::object, "'switches'", "an object"))
       for (const auto& [key, value] : root["switches"].items()) loadSwitch(key, value);
-    if (auto* nodes = required(root, "", "nodes", nlohmann::json::value_t::array, "an array"))
-      for (std::size_t i = 0; i < nodes->size(); ++i) loadNode((*nodes)[i], appendPointer("/nodes", i));
     if (auto* output = required(root, "", "output", nlohmann::json::value_t::object, "an object"))
       loadOutput(*output);
     if (root.contains("weather")) {
@@ -112,11 +120,82 @@ class Loader {
       else
         graph_.alphaCutoff = static_cast<float>(v);
     }
-    if (failed_) return std::nullopt;
-    return std::move(graph_);
+    sortAndCheckNames();
+    return !failed_;
   }
 
  private:
+  // Parameters, textures and nodes: what a graph and a library both declare.
+  void loadDeclarations(const nlohmann::json& root) {
+    std::string at = scope_.pointer;
+    if (root.contains("parameters") && expectKind(root["parameters"], at + "/parameters", nlohmann::json::value_t::object, "'parameters'", "an object"))
+      for (const auto& [key, value] : root["parameters"].items()) loadParameter(key, value);
+    if (root.contains("textures") && expectKind(root["textures"], at + "/textures", nlohmann::json::value_t::object, "'textures'", "an object"))
+      for (const auto& [key, value] : root["textures"].items()) loadTexture(key, value);
+    if (auto* nodes = required(root, at, "nodes", nlohmann::json::value_t::array, "an array"))
+      for (std::size_t i = 0; i < nodes->size(); ++i) loadNode((*nodes)[i], appendPointer(at + "/nodes", i));
+  }
+
+  // "include": {"stone": "lib/stone.json"}: the library's parameters, textures and
+  // nodes join the graph as "stone.NAME". Libraries do not include others.
+  void loadLibrary(const std::string& alias, const nlohmann::json& path) {
+    std::string at = appendPointer("/include", alias);
+    if (!isSwitchWord(alias)) {
+      report(DiagCode::InvalidSetting, at, {"include alias '" + quoteUserText(alias) + "' is not a plain word", kSwitchWordHint});
+      return;
+    }
+    if (!expectKind(path, at, nlohmann::json::value_t::string, "an include", "the path of a graph library")) return;
+    std::filesystem::path written = path.get<std::string>();
+    std::filesystem::path resolved = (std::filesystem::path(doc_.file()).parent_path() / written).lexically_normal();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(resolved, ec)) {
+      report(DiagCode::FileUnreadable, at, {quoteUserText(written.string()), "no such library file", "include paths are relative to the including graph"});
+      return;
+    }
+    // A library is never empty; files that claim size 0 include /proc entries whose
+    // reads can block, and bad input must never hang the compiler.
+    if (std::filesystem::file_size(resolved, ec) == 0 || ec) {
+      report(DiagCode::FileUnreadable, at, {quoteUserText(written.string()), "the file is empty", "include a graph library file"});
+      return;
+    }
+    graph_.includedFiles.push_back(resolved.string());
+    auto text = readGraphFile(resolved.string(), diags_);
+    auto library = text ? parseJsonDocument(resolved.string(), std::move(*text), diags_) : std::nullopt;
+    if (!library) {
+      failed_ = true;
+      return;
+    }
+    auto shared = std::make_shared<const JsonDocument>(std::move(*library));
+    doc_.mount(at, shared);  // from here on, pointers under `at` locate in the library
+    Loader child(doc_, diags_, graph_, {at, alias + ".", resolved.parent_path(), written.parent_path()});
+    child.runLibrary(shared->root());
+    failed_ = failed_ || child.failed_;
+  }
+
+  void runLibrary(const nlohmann::json& root) {
+    if (!expectKind(root, scope_.pointer, nlohmann::json::value_t::object, "a graph library", "an object")) return;
+    if (root.contains("include"))
+      report(DiagCode::UnknownField, appendPointer(scope_.pointer, "include"),
+             {"include", "a library cannot include other libraries; include each one from the graph"});
+    checkFields(root, scope_.pointer, {"$schema", "description", "include", "parameters", "textures", "nodes"});
+    loadDeclarations(root);
+  }
+
+  // Names stay sorted, and one declared in a library may not also be the graph's.
+  void sortAndCheckNames() {
+    auto byName = [](const auto& a, const auto& b) { return a.name < b.name; };
+    std::stable_sort(graph_.parameters.begin(), graph_.parameters.end(), byName);
+    std::stable_sort(graph_.textures.begin(), graph_.textures.end(), byName);
+    for (std::size_t i = 1; i < graph_.parameters.size(); ++i)
+      if (graph_.parameters[i].name == graph_.parameters[i - 1].name)
+        report(DiagCode::InvalidParameter, graph_.parameters[i].pointer,
+               {quoteUserText(graph_.parameters[i].name), "it is also declared at " + graph_.parameters[i - 1].pointer, "rename one of them"});
+    for (std::size_t i = 1; i < graph_.textures.size(); ++i)
+      if (graph_.textures[i].name == graph_.textures[i - 1].name)
+        report(DiagCode::TextureUnsupported, graph_.textures[i].pointer,
+               {quoteUserText(graph_.textures[i].name), "it is also declared at " + graph_.textures[i - 1].pointer, "rename one of them"});
+  }
+
   Diagnostic& report(DiagCode code, const std::string& pointer, std::initializer_list<std::string_view> args) {
     failed_ = true;
     return diags_.report(code, doc_.locate(pointer), args);
@@ -165,11 +244,11 @@ class Loader {
   }
 
   void loadParameter(const std::string& name, const nlohmann::json& j) {
-    std::string pointer = appendPointer("/parameters", name);
+    std::string pointer = appendPointer(scope_.pointer + "/parameters", name);
     if (!expectKind(j, pointer, nlohmann::json::value_t::object, "a parameter", "an object")) return;
     checkFields(j, pointer, {"type", "default", "min", "max", "label", "description"});
     ParameterDecl p;
-    p.name = name;
+    p.name = scope_.names + name;
     p.pointer = pointer;
     std::string shown = quoteUserText(name);
     if (name.empty()) report(DiagCode::InvalidParameter, pointer, {shown, "the name is empty", "give the parameter a name"});
@@ -241,11 +320,11 @@ class Loader {
   }
 
   void loadTexture(const std::string& name, const nlohmann::json& j) {
-    std::string pointer = appendPointer("/textures", name);
+    std::string pointer = appendPointer(scope_.pointer + "/textures", name);
     std::string shown = quoteUserText(name);
     if (!expectKind(j, pointer, nlohmann::json::value_t::object, "a texture", "an object")) return;
     TextureDecl t;
-    t.name = name;
+    t.name = scope_.names + name;
     t.pointer = pointer;
     if (name.empty())
       report(DiagCode::TextureUnsupported, pointer, {shown, "the texture name is empty", "give the texture a name"});
@@ -272,9 +351,9 @@ class Loader {
       checkFields(j, pointer, {"file", "wrap", "filter", "description"});
       auto* file = optionalString(j, pointer, "file");
       if (!file) return;
-      t.file = file->get<std::string>();
-      std::filesystem::path base = std::filesystem::path(doc_.file()).parent_path();
-      t.resolvedPath = (base / t.file).lexically_normal().string();
+      // A library's file is reported relative to the including graph, like the graph's own.
+      t.file = (scope_.writtenBase / file->get<std::string>()).lexically_normal().string();
+      t.resolvedPath = (scope_.fileBase / file->get<std::string>()).lexically_normal().string();
       int width = 0, height = 0;
       std::string error;
       switch (probeImageFile(t.resolvedPath, width, height, error)) {
@@ -358,12 +437,13 @@ class Loader {
     auto* id = required(j, pointer, "id", nlohmann::json::value_t::string, "a string");
     auto* op = required(j, pointer, "op", nlohmann::json::value_t::string, "a string");
     if (!id || !op) return;
-    n.id = id->get<std::string>();
+    n.id = scope_.names + id->get<std::string>();
     n.op = op->get<std::string>();
-    if (n.id.empty()) report(DiagCode::InvalidSetting, appendPointer(pointer, "id"), {"the node id is empty", "give the node an id"});
-    if (auto* param = optionalString(j, pointer, "param")) n.param = param->get<std::string>();
+    if (id->get<std::string>().empty()) report(DiagCode::InvalidSetting, appendPointer(pointer, "id"), {"the node id is empty", "give the node an id"});
+    if (auto* param = optionalString(j, pointer, "param")) n.param = scope_.names + param->get<std::string>();
     if (n.op == kSwitchOp) {
       loadSwitchNode(j, n);
+      for (auto& [value, source] : n.cases) renameLocal(source, false);
       graph_.nodes.push_back(std::move(n));
       return;
     }
@@ -374,10 +454,21 @@ class Loader {
       const auto& inputs = j["inputs"];
       std::string ip = appendPointer(pointer, "inputs");
       if (expectKind(inputs, ip, nlohmann::json::value_t::object, "'inputs'", "an object"))
-        for (const auto& [port, value] : inputs.items())
-          n.inputs.emplace_back(port, loadInput(value, appendPointer(ip, port)));
+        for (const auto& [port, value] : inputs.items()) {
+          InputSource source = loadInput(value, appendPointer(ip, port));
+          // A Text port's string is a setting (swizzle channels), not a name.
+          const OpDef* def = findOp(n.op);
+          const PortSpec* spec = def ? def->findInput(port) : nullptr;
+          renameLocal(source, spec && spec->type == PortType::Text);
+          n.inputs.emplace_back(port, std::move(source));
+        }
     }
     graph_.nodes.push_back(std::move(n));
+  }
+
+  // Inside a library, links and texture names refer to the library's own elements.
+  void renameLocal(InputSource& source, bool isSetting) const {
+    if (!scope_.names.empty() && source.kind == InputSource::Kind::Link && !isSetting) source.text = scope_.names + source.text;
   }
 
   // {"type": "bool", "default": true} or {"values": ["low", "high"], "default": "high"}.
@@ -471,16 +562,20 @@ class Loader {
       if (auto field = findPbrField(key)) graph_.outputs[*field] = loadInput(value, appendPointer("/output", key));
   }
 
-  const JsonDocument& doc_;
+  JsonDocument& doc_;
   DiagnosticList& diags_;
-  MaterialGraph graph_;
+  MaterialGraph& graph_;
+  Scope scope_;
   bool failed_ = false;
 };
 
 }  // namespace
 
-std::optional<MaterialGraph> loadMaterialGraph(const JsonDocument& document, DiagnosticList& diagnostics) {
-  return Loader(document, diagnostics).run();
+std::optional<MaterialGraph> loadMaterialGraph(JsonDocument& document, DiagnosticList& diagnostics) {
+  MaterialGraph graph;
+  std::filesystem::path dir = std::filesystem::path(document.file()).parent_path();
+  if (!Loader(document, diagnostics, graph, {"", "", dir, ""}).runGraph()) return std::nullopt;
+  return graph;
 }
 
 }  // namespace wg

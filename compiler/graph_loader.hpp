@@ -13,7 +13,8 @@ namespace wg {
 // Reads a graph file's bytes (WG1002 when unreadable, WG1007 when too large).
 std::optional<std::string> readGraphFile(const std::string& path, DiagnosticList& diagnostics);
 
-// Returns a graph when no error was reported; all errors found are reported.
-std::optional<MaterialGraph> loadMaterialGraph(const JsonDocument& document, DiagnosticList& diagnostics);
+// Returns a graph when no error was reported; all errors found are reported. Graph
+// libraries it includes are mounted on `document`, so their diagnostics name their file.
+std::optional<MaterialGraph> loadMaterialGraph(JsonDocument& document, DiagnosticList& diagnostics);
 
 }  // namespace wg

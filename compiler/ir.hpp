@@ -60,6 +60,7 @@ struct IrGraph {
   std::array<Operand, kIrOutputCount> outputs;
   std::vector<ParameterDecl> parameters;
   std::vector<TextureDecl> textures;
+  std::vector<std::string> includedFiles;  // graph libraries read: inputs for depfiles, not part of the hash
   float alphaCutoff = 0.5f;
   bool alphaTested = false;  // opacity was given
   WeatherConfig weather;  // what the weather-inject pass adds; preset "none" adds nothing

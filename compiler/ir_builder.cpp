@@ -76,6 +76,7 @@ class Builder {
     if (!checkDepth()) return std::nullopt;
     ir_.name = graph_.name;
     ir_.parameters = graph_.parameters;
+    ir_.includedFiles = graph_.includedFiles;
     ir_.textures = graph_.textures;
     ir_.alphaCutoff = graph_.alphaCutoff;
     irIndex_.assign(pending_.size(), kNoNode);

@@ -304,7 +304,22 @@ void JsonDocument::buildIndex() const {
                [](const std::string&, int, int, const std::string&) {});
 }
 
+void JsonDocument::mount(std::string prefix, std::shared_ptr<const JsonDocument> document) {
+  mounts_.emplace_back(std::move(prefix), std::move(document));
+}
+
+const JsonDocument* JsonDocument::mountedAt(const std::string& pointer, std::string& inner) const {
+  for (const auto& [prefix, document] : mounts_)
+    if (pointer.compare(0, prefix.size(), prefix) == 0 && (pointer.size() == prefix.size() || pointer[prefix.size()] == '/')) {
+      inner = pointer.substr(prefix.size());
+      return document.get();
+    }
+  return nullptr;
+}
+
 SourceLocation JsonDocument::locateKey(const std::string& pointer) const {
+  std::string inner;
+  if (const JsonDocument* mounted = mountedAt(pointer, inner)) return mounted->locateKey(inner);
   buildIndex();
   auto it = keys_->find(pointer);
   if (it == keys_->end()) return locate(pointer);
@@ -312,6 +327,8 @@ SourceLocation JsonDocument::locateKey(const std::string& pointer) const {
 }
 
 SourceLocation JsonDocument::locate(const std::string& pointer) const {
+  std::string inner;
+  if (const JsonDocument* mounted = mountedAt(pointer, inner)) return mounted->locate(inner);
   buildIndex();
   std::string p = pointer;
   while (true) {

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "compiler/diagnostic.hpp"
 
@@ -24,11 +26,19 @@ class JsonDocument {
   // Location of the key naming the object member at `pointer` (for unknown fields).
   SourceLocation locateKey(const std::string& pointer) const;
 
+  // Pointers under `prefix` locate in `document` from then on: a graph library's
+  // elements keep pointers of the including graph ("/include/stone/nodes/2"), and
+  // their diagnostics still name the library's file, line and column.
+  void mount(std::string prefix, std::shared_ptr<const JsonDocument> document);
+
  private:
   std::string file_;
   std::string text_;
   nlohmann::json root_;
   void buildIndex() const;
+  // The mounted document holding `pointer`, with the pointer inside it; or nullptr.
+  const JsonDocument* mountedAt(const std::string& pointer, std::string& inner) const;
+  std::vector<std::pair<std::string, std::shared_ptr<const JsonDocument>>> mounts_;
   using PositionIndex = std::unordered_map<std::string, std::pair<int, int>>;
   mutable std::unique_ptr<PositionIndex> values_;  // built on the first diagnostic
   mutable std::unique_ptr<PositionIndex> keys_;

@@ -68,6 +68,7 @@ struct NodeDecl {
 struct MaterialGraph {
   std::string name;
   std::string sourceFile;
+  std::vector<std::string> includedFiles;  // graph libraries, resolved paths, include order
   std::vector<ParameterDecl> parameters;  // sorted by name
   std::vector<TextureDecl> textures;      // sorted by name
   std::vector<SwitchDecl> switches;       // sorted by name

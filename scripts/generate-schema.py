@@ -201,6 +201,10 @@ schema = {
         "parameters": {"type": "object", "propertyNames": {"minLength": 1},
                        "additionalProperties": {"$ref": "#/$defs/parameter"}},
         "textures": {"type": "object", "additionalProperties": {"$ref": "#/$defs/texture"}},
+        "include": {"type": "object", "propertyNames": {"$ref": "#/$defs/switchWord"},
+                    "additionalProperties": {"type": "string", "minLength": 1},
+                    "description": "graph libraries: alias -> path relative to this file; their parameters, "
+                                   "textures and nodes join the graph as ALIAS.NAME (docs/graph-format.md)"},
         "switches": {"type": "object", "propertyNames": {"$ref": "#/$defs/switchWord"},
                      "additionalProperties": {"$ref": "#/$defs/switch"},
                      "description": "static switches: each permutation is one shader variant (weathergen compile --variants)"},
@@ -288,3 +292,17 @@ def fmt(o, depth=0, col=0):
     return "[\n" + ",\n".join(items) + "\n" + end + "]"
 
 open(os.path.join(ROOT, 'graphs', 'schema', 'material-graph.schema.json'), 'w').write(fmt(schema) + "\n")
+
+# A graph library: what a graph includes. Same parameters, textures and nodes; no name,
+# output, weather or switches of its own, and no includes.
+library = {
+    "$schema": "https://json-schema.org/draft/2020-12/schema",
+    "title": "weathergen graph library",
+    "description": "Parameters, textures and nodes that material graphs include as ALIAS.NAME. See docs/graph-format.md.",
+    "type": "object",
+    "required": ["nodes"],
+    "additionalProperties": False,
+    "properties": {key: schema["properties"][key] for key in ["$schema", "description", "parameters", "textures", "nodes"]},
+    "$defs": defs,
+}
+open(os.path.join(ROOT, 'graphs', 'schema', 'graph-library.schema.json'), 'w').write(fmt(library) + "\n")

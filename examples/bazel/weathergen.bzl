@@ -55,12 +55,12 @@ def _weathergen_materials_impl(ctx):
         if ctx.attr.emit_header:
             args.add("--emit-header")
 
-        # Every texture is an input of every graph: file paths are relative to the graph
-        # and only known to weathergen, so the sandbox must hold them all.
+        # Every texture and library is an input of every graph: file paths are relative
+        # to the graph and only known to weathergen, so the sandbox must hold them all.
         ctx.actions.run(
             executable = ctx.executable.compiler,
             arguments = [args],
-            inputs = [graph] + ctx.files.textures,
+            inputs = [graph] + ctx.files.textures + ctx.files.libraries,
             outputs = outputs,
             mnemonic = "WeathergenCompile",
             progress_message = "Compiling material %s" % name,
@@ -81,6 +81,10 @@ weathergen_materials = rule(
         "textures": attr.label_list(
             allow_files = True,
             doc = "Image files the graphs reference, at their paths relative to the graphs.",
+        ),
+        "libraries": attr.label_list(
+            allow_files = [".json"],
+            doc = "Graph libraries the graphs include, at their paths relative to the graphs.",
         ),
         "targets": attr.string_list(
             default = ["glsl", "hlsl", "spirv"],

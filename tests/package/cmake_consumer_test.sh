@@ -87,6 +87,11 @@ touch_after_build "$tmp/src/materials/textures/brick_normal.png"
 expect_rebuilt "brick_wall" "after touching brick_wall's normal map"
 expect_no_work "after rebuilding brick_wall"
 
+# A graph library is in the depfile of the graph that includes it, and of no other.
+touch_after_build "$tmp/src/materials/lib/wear.json"
+expect_rebuilt "painted_metal" "after touching the library painted_metal includes"
+expect_no_work "after rebuilding painted_metal"
+
 # A graph edit also re-runs CMake (the output names come from the graph's "name").
 touch_after_build "$tmp/src/materials/painted_metal.json"
 expect_rebuilt "painted_metal" "after touching painted_metal.json"
