@@ -6,7 +6,6 @@
 
 #include "bench/bench_common.hpp"
 #include "compiler/batch_compile.hpp"
-#include "compiler/graph_loader.hpp"
 
 namespace {
 
@@ -18,12 +17,8 @@ std::vector<wg::CompileJob> everyVariant() {
   wg::VariantSelection all;
   all.all = true;
   for (const auto& g : wg::bench::bundledGraphs()) {
-    wg::DiagnosticList ignored;
-    auto text = wg::readGraphFile(g.path, ignored);
-    auto document = text ? wg::parseJsonDocument(g.path, *text, ignored) : std::nullopt;
-    auto graph = document ? wg::loadMaterialGraph(*document, ignored) : std::nullopt;
     std::string error;
-    for (auto& v : wg::enumerateVariants(graph ? graph->switches : std::vector<wg::SwitchDecl>{}, all, error))
+    for (auto& v : wg::enumerateVariants(wg::declaredSwitchesOf(g.path), all, error))
       jobs.push_back({g.path, std::move(v)});
   }
   return jobs;

@@ -2,30 +2,15 @@
 
 #include <set>
 
-#include "compiler/graph_loader.hpp"
 #include "compiler/literal.hpp"
 
 namespace wg {
-
-namespace {
-
-std::vector<SwitchDecl> declaredSwitches(const std::string& path) {
-  DiagnosticList ignored;  // the compile reports them, once, with the rest
-  auto text = readGraphFile(path, ignored);
-  if (!text) return {};
-  auto document = parseJsonDocument(path, std::move(*text), ignored);
-  if (!document) return {};
-  auto graph = loadMaterialGraph(*document, ignored);
-  return graph ? graph->switches : std::vector<SwitchDecl>{};
-}
-
-}  // namespace
 
 std::string planVariants(const std::vector<std::string>& graphs, const std::optional<VariantSelection>& selection,
                          VariantPlan& plan) {
   std::set<std::string> declaredAnywhere;
   for (std::size_t g = 0; g < graphs.size(); ++g) {
-    plan.switchesOf.push_back(selection ? declaredSwitches(graphs[g]) : std::vector<SwitchDecl>{});
+    plan.switchesOf.push_back(selection ? declaredSwitchesOf(graphs[g]) : std::vector<SwitchDecl>{});
     std::vector<SwitchValues> variants(1);
     if (selection) {
       for (const auto& s : plan.switchesOf.back()) declaredAnywhere.insert(s.name);

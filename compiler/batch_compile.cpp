@@ -8,27 +8,26 @@ namespace wg {
 
 std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, const CompileOptions& options, int jobs,
                                         const std::function<void(std::size_t, std::size_t)>& onDone) {
-  const std::vector<CompileJob>& graphs = batch;
-  std::vector<CompileResult> results(graphs.size());
+  std::vector<CompileResult> results(batch.size());
   std::mutex reportLock;
   std::size_t completed = 0;
   auto compileOne = [&](std::size_t i) {
     CompileOptions variant = options;
-    variant.switches = graphs[i].switches;
-    results[i] = compileMaterialFile(graphs[i].graph, variant);
+    variant.switches = batch[i].switches;
+    results[i] = compileMaterialFile(batch[i].graph, variant);
     std::lock_guard<std::mutex> lock(reportLock);
     ++completed;
     if (onDone) onDone(i, completed);
   };
-  if (graphs.empty()) return results;
+  if (batch.empty()) return results;
   // The first compile runs alone: glslang sets up process-wide tables on first use
   // (Filament's matc does the same).
   compileOne(0);
   std::atomic<std::size_t> next{1};
   auto worker = [&] {
-    for (std::size_t i = next++; i < graphs.size(); i = next++) compileOne(i);
+    for (std::size_t i = next++; i < batch.size(); i = next++) compileOne(i);
   };
-  std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), graphs.size() - 1);
+  std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), batch.size() - 1);
   std::vector<std::thread> pool;
   for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();

@@ -96,6 +96,12 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 }
 }  // namespace
 
+std::string listNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
 std::string suggestClosest(std::string_view word, const std::vector<std::string_view>& candidates) {
   if (word.size() > 64) return "";
   std::string_view best;

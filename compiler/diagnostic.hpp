@@ -53,4 +53,7 @@ std::string formatDiagnosticsJson(const std::vector<Diagnostic>& list);
 // "did you mean 'x'?" from candidates by edit distance, or "" when none is close.
 std::string suggestClosest(std::string_view word, const std::vector<std::string_view>& candidates);
 
+// "a, b, c": names listed in a hint.
+std::string listNames(const std::vector<std::string>& names);
+
 }  // namespace wg

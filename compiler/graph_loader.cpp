@@ -50,21 +50,15 @@ std::optional<std::int64_t> integralValue(const nlohmann::json& j) {
 }
 
 // Switch names and values appear in variant names ("quality=low,snow=on") and on the
-// command line, so they are plain words.
+// command line, and include aliases prefix names ("stone.albedo"), so all are plain words.
 constexpr std::size_t kMaxSwitchValues = 16;
-constexpr const char* kSwitchWordHint = "use letters, digits, '_' and '-' only, starting with a letter";
+constexpr const char* kPlainWordHint = "use letters, digits, '_' and '-' only, starting with a letter";
 
-bool isSwitchWord(std::string_view word) {
+bool isPlainWord(std::string_view word) {
   constexpr std::size_t kMaxWord = 32;
   if (word.empty() || word.size() > kMaxWord || !std::isalpha(static_cast<unsigned char>(word[0]))) return false;
   return std::all_of(word.begin(), word.end(),
                      [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
-}
-
-std::string joinWords(const std::vector<std::string>& words) {
-  std::string out;
-  for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
-  return out;
 }
 
 // Texture sizes: powers of two keep procedural tiles seamless and mips complete.
@@ -140,8 +134,8 @@ class Loader {
   // nodes join the graph as "stone.NAME". Libraries do not include others.
   void loadLibrary(const std::string& alias, const nlohmann::json& path) {
     std::string at = appendPointer("/include", alias);
-    if (!isSwitchWord(alias)) {
-      report(DiagCode::InvalidSetting, at, {"include alias '" + quoteUserText(alias) + "' is not a plain word", kSwitchWordHint});
+    if (!isPlainWord(alias)) {
+      report(DiagCode::InvalidSetting, at, {"include alias '" + quoteUserText(alias) + "' is not a plain word", kPlainWordHint});
       return;
     }
     if (!expectKind(path, at, nlohmann::json::value_t::string, "an include", "the path of a graph library")) return;
@@ -480,8 +474,8 @@ class Loader {
     SwitchDecl sw;
     sw.name = name;
     sw.pointer = pointer;
-    if (!isSwitchWord(name))
-      report(DiagCode::InvalidSwitch, pointer, {shown, "the name is not a plain word", kSwitchWordHint});
+    if (!isPlainWord(name))
+      report(DiagCode::InvalidSwitch, pointer, {shown, "the name is not a plain word", kPlainWordHint});
     bool isBool = false;
     if (auto* type = optionalString(j, pointer, "type")) {
       isBool = type->get<std::string>() == "bool";
@@ -510,8 +504,8 @@ class Loader {
         std::string at = appendPointer(vp, i);
         if (!expectKind(values[i], at, nlohmann::json::value_t::string, "a switch value", "a string")) return;
         std::string v = values[i].get<std::string>();
-        if (!isSwitchWord(v)) {
-          report(DiagCode::InvalidSwitch, at, {shown, "value '" + quoteUserText(v) + "' is not a plain word", kSwitchWordHint});
+        if (!isPlainWord(v)) {
+          report(DiagCode::InvalidSwitch, at, {shown, "value '" + quoteUserText(v) + "' is not a plain word", kPlainWordHint});
           return;
         }
         if (std::find(sw.values.begin(), sw.values.end(), v) != sw.values.end()) {
@@ -535,7 +529,7 @@ class Loader {
       sw.defaultValue = it->get<std::string>();
       if (std::find(sw.values.begin(), sw.values.end(), sw.defaultValue) == sw.values.end()) {
         report(DiagCode::InvalidSwitch, dp, {shown, "the default '" + quoteUserText(sw.defaultValue) + "' is not one of its values",
-                                             "use one of: " + joinWords(sw.values)});
+                                             "use one of: " + listNames(sw.values)});
         return;
       }
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 
+#include "compiler/graph_loader.hpp"
 #include "compiler/literal.hpp"
 
 namespace wg {
@@ -14,12 +15,6 @@ std::string variantName(const SwitchValues& values) {
 }
 
 namespace {
-
-std::string listOf(const std::vector<std::string>& words) {
-  std::string out;
-  for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
-  return out;
-}
 
 class SwitchResolver {
  public:
@@ -60,7 +55,7 @@ class SwitchResolver {
       candidates.push_back(s.name);
     }
     if (std::string hint = suggestClosest(missing, candidates); !hint.empty()) return hint;
-    return names.empty() ? "the graph declares no switches; add them under \"switches\"" : "declared switches: " + listOf(names);
+    return names.empty() ? "the graph declares no switches; add them under \"switches\"" : "declared switches: " + listNames(names);
   }
 
   void chooseValues(const SwitchValues& requested) {
@@ -73,7 +68,7 @@ class SwitchResolver {
       }
       if (std::find(s->values.begin(), s->values.end(), value) == s->values.end()) {
         report(DiagCode::InvalidSwitch, s->pointer,
-               {quoteUserText(name), "'" + quoteUserText(value) + "' is not one of its values", "use one of: " + listOf(s->values)});
+               {quoteUserText(name), "'" + quoteUserText(value) + "' is not one of its values", "use one of: " + listNames(s->values)});
         continue;
       }
       values_[name] = value;
@@ -108,13 +103,13 @@ class SwitchResolver {
       if (std::find(s.values.begin(), s.values.end(), value) == s.values.end())
         report(DiagCode::InvalidSwitch, source.pointer,
                {shown, "node '" + quoteUserText(n.id) + "' has a case '" + quoteUserText(value) + "', which is not one of its values",
-                "cases are the switch's values: " + listOf(s.values)});
+                "cases are the switch's values: " + listNames(s.values)});
     for (const auto& value : s.values) {
       bool covered = std::any_of(n.cases.begin(), n.cases.end(), [&](const auto& c) { return c.first == value; });
       if (!covered)
         report(DiagCode::InvalidSwitch, appendPointer(n.pointer, "cases"),
                {shown, "node '" + quoteUserText(n.id) + "' has no case for value '" + value + "'",
-                "add a case for every value: " + listOf(s.values)});
+                "add a case for every value: " + listNames(s.values)});
     }
   }
 
@@ -198,7 +193,7 @@ class SwitchResolver {
       const auto& v = (*when)[i];
       if (!v.is_string() || std::find(s->values.begin(), s->values.end(), v.get<std::string>()) == s->values.end()) {
         report(DiagCode::InvalidSwitch, appendPointer(whenPointer, i),
-               {quoteUserText(s->name), "'when' lists something that is not one of its values", "use: " + listOf(s->values)});
+               {quoteUserText(s->name), "'when' lists something that is not one of its values", "use: " + listNames(s->values)});
         return std::nullopt;
       }
       on = on || v.get<std::string>() == value;
@@ -219,6 +214,14 @@ class SwitchResolver {
 bool resolveStaticSwitches(MaterialGraph& graph, const SwitchValues& requested, const JsonDocument& document,
                            DiagnosticList& diagnostics) {
   return SwitchResolver(graph, document, diagnostics).run(requested);
+}
+
+std::vector<SwitchDecl> declaredSwitchesOf(const std::string& path) {
+  DiagnosticList ignored;
+  auto text = readGraphFile(path, ignored);
+  auto document = text ? parseJsonDocument(path, std::move(*text), ignored) : std::nullopt;
+  auto graph = document ? loadMaterialGraph(*document, ignored) : std::nullopt;
+  return graph ? graph->switches : std::vector<SwitchDecl>{};
 }
 
 std::optional<VariantSelection> parseVariantSelection(std::string_view text, std::string& error) {
@@ -272,7 +275,7 @@ std::vector<SwitchValues> enumerateVariants(const std::vector<SwitchDecl>& switc
         if (std::find(chosen->second.begin(), chosen->second.end(), v) != chosen->second.end()) values.push_back(v);
       for (const auto& v : chosen->second)
         if (std::find(s.values.begin(), s.values.end(), v) == s.values.end()) {
-          error = "switch '" + s.name + "' has no value '" + quoteUserText(v) + "' (values: " + listOf(s.values) + ")";
+          error = "switch '" + s.name + "' has no value '" + quoteUserText(v) + "' (values: " + listNames(s.values) + ")";
           return {};
         }
     } else {

@@ -35,6 +35,10 @@ std::string variantName(const SwitchValues& values);
 bool resolveStaticSwitches(MaterialGraph& graph, const SwitchValues& requested, const JsonDocument& document,
                            DiagnosticList& diagnostics);
 
+// The switches a graph file declares: empty when it declares none or does not load
+// (its compile reports why, once, with the rest).
+std::vector<SwitchDecl> declaredSwitchesOf(const std::string& path);
+
 // The CLI's --variants: "all", or a comma-separated list of SWITCH (all its values) and
 // SWITCH=V1|V2 (those values). Switches not named keep their default.
 struct VariantSelection {
