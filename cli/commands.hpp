@@ -11,5 +11,6 @@ int runEvalCommand(int argc, char** argv);
 int runRenderCommand(int argc, char** argv);
 int runBenchRenderCommand(int argc, char** argv);
 int runBenchSnowCommand(int argc, char** argv);
+int runImportCommand(int argc, char** argv);
 
 }  // namespace wg

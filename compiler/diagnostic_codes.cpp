@@ -7,6 +7,7 @@ namespace wg {
 namespace {
 using enum DiagCode;
 constexpr auto E = Severity::Error;
+constexpr auto W = Severity::Warning;
 constexpr auto In = DiagCategory::Input;
 constexpr auto Use = DiagCategory::Usage;
 constexpr auto Bug = DiagCategory::Internal;
@@ -57,6 +58,20 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
     {TextureUnsupported, "WG3003", E, In, "texture-unsupported", "texture '{0}': {1}", "{2}"},
     {UnknownWeatherPreset, "WG4001", E, In, "unknown-weather-preset", "unknown weather preset '{0}'", "{1}"},
     {InvalidWeatherSetting, "WG4002", E, In, "invalid-weather-setting", "{0}", "{1}"},
+    {GltfContainer, "WG5001", E, In, "gltf-container", "not a readable glTF 2.0 file: {0}", "{1}"},
+    {GltfSchema, "WG5002", E, In, "gltf-schema", "{0} must be {1}, not {2}",
+     "see the glTF 2.0 schema for this property; re-export the model or fix the file"},
+    {GltfBadReference, "WG5003", E, In, "gltf-bad-reference", "{0}", "{1}"},
+    {GltfResource, "WG5004", E, In, "gltf-resource", "{0}: {1}", "{2}"},
+    {GltfRequiredExtension, "WG5005", E, In, "gltf-required-extension",
+     "the model requires extension '{0}', which weathergen cannot read", "{1}"},
+    {GltfNodeHierarchy, "WG5006", E, In, "gltf-node-hierarchy", "{0}",
+     "glTF nodes form strict trees: each node has at most one parent and is never its own ancestor"},
+    {GltfInvalidData, "WG5007", E, In, "gltf-invalid-data", "{0}", "{1}"},
+    {GltfExtensionIgnored, "WG5101", W, In, "gltf-extension-ignored",
+     "material {0} uses extension '{1}', which the import does not map; it is ignored",
+     "the graph keeps the core metallic-roughness model; edit the graph to add what the extension did"},
+    {GltfFeatureIgnored, "WG5102", W, In, "gltf-feature-ignored", "{0}", "{1}"},
     {UsageError, "WG9001", E, Use, "usage", "{0}", "run 'weathergen --help' for usage"},
     {InternalShaderError, "WG9901", E, Bug, "internal-shader-error",
      "emitted {0} failed to compile: {1}", "this is a weathergen bug; please report it"},

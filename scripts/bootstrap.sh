@@ -9,6 +9,8 @@ packages=(
   nlohmann-json3-dev libglm-dev libstb-dev
   libgtest-dev libbenchmark-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  libtinygltf-dev     # glTF 2.0 import
+  assimp-testmodels   # real glTF files the import and model tests read
   bazel-bootstrap  # examples/bazel's cache test (Bazel 4.2 and a JDK)
   "$@"
 )

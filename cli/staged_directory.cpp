@@ -1,0 +1,67 @@
+#include "cli/staged_directory.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+namespace wg {
+
+namespace {
+std::string systemError(const std::string& what, const std::filesystem::path& path) {
+  return what + " '" + path.string() + "': " + std::strerror(errno);
+}
+}  // namespace
+
+StagedDirectory::~StagedDirectory() {
+  if (staging_.empty()) return;
+  std::error_code ec;
+  std::filesystem::remove_all(staging_, ec);
+}
+
+std::string StagedDirectory::ensureStaging() {
+  if (!staging_.empty()) return "";
+  std::error_code ec;
+  std::filesystem::create_directories(directory_, ec);
+  if (ec) return "cannot create the output directory '" + directory_.string() + "': " + ec.message();
+  std::string pattern = (directory_ / ".weathergen-staging-XXXXXX").string();
+  if (!::mkdtemp(pattern.data())) return systemError("cannot create a staging folder in", directory_);
+  staging_ = pattern;
+  return "";
+}
+
+std::string StagedDirectory::stage(const std::string& name, std::string_view bytes) {
+  if (std::string e = ensureStaging(); !e.empty()) return e;
+  std::filesystem::path path = staging_ / name;
+  int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0) return systemError("cannot write", directory_ / name);
+  for (std::size_t done = 0; done < bytes.size();) {
+    ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      std::string e = systemError("cannot write", directory_ / name);
+      ::close(fd);
+      return e;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) return systemError("cannot write", directory_ / name);
+  names_.push_back(name);
+  return "";
+}
+
+std::string StagedDirectory::publish() {
+  for (const auto& name : names_) {
+    std::filesystem::path target = directory_ / name;
+    std::error_code ec;
+    if (std::filesystem::is_directory(std::filesystem::symlink_status(target, ec)))
+      return "cannot write '" + target.string() + "': a directory has that name";
+  }
+  for (const auto& name : names_)
+    if (::rename((staging_ / name).c_str(), (directory_ / name).c_str()) != 0) return systemError("cannot write", directory_ / name);
+  return "";
+}
+
+}  // namespace wg

@@ -1,0 +1,30 @@
+// All-or-nothing output: files are written into a private staging folder inside the
+// output directory (created exclusively, so nothing planted there is followed), and
+// only when every one of them is written are they renamed into place. A failed run
+// leaves the output directory as it was.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace wg {
+
+class StagedDirectory {
+ public:
+  explicit StagedDirectory(std::filesystem::path directory) : directory_(std::move(directory)) {}
+  ~StagedDirectory();
+  StagedDirectory(const StagedDirectory&) = delete;
+  StagedDirectory& operator=(const StagedDirectory&) = delete;
+
+  // Each returns "" or a one-line error with the system's reason.
+  std::string stage(const std::string& name, std::string_view bytes);
+  std::string publish();
+
+ private:
+  std::string ensureStaging();
+  std::filesystem::path directory_, staging_;
+  std::vector<std::string> names_;
+};
+
+}  // namespace wg

@@ -1,0 +1,25 @@
+// The binary glTF container (GLB, glTF 2.0 section 4.4): a 12-byte header, a JSON chunk
+// and an optional BIN chunk. Every length is checked against the bytes actually there,
+// so a file whose header or chunk lengths lie is an error here, before any parser
+// trusts them.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace wg::gltf {
+
+struct GlbChunks {
+  std::string_view json;
+  std::span<const std::uint8_t> bin;  // empty when the file has no BIN chunk
+};
+
+// True when the bytes start with the GLB magic "glTF".
+bool looksLikeGlb(std::span<const std::uint8_t> bytes);
+
+// Splits a GLB file; on failure returns nullopt and says why in `error` (one line).
+std::optional<GlbChunks> splitGlb(std::span<const std::uint8_t> bytes, std::string& error);
+
+}  // namespace wg::gltf

@@ -1,0 +1,213 @@
+#include "import/gltf_asset.hpp"
+
+#include <stb_image.h>
+
+#include <array>
+#include <cstring>
+
+#include "compiler/literal.hpp"
+#include "import/glb_container.hpp"
+#include "import/gltf_resources.hpp"
+#include "import/gltf_schema.hpp"
+#include "import/node_hierarchy.hpp"
+#include "nodes/image_file.hpp"
+
+namespace wg::gltf {
+
+namespace {
+
+constexpr JsonLimits kJsonLimits{64u << 20, 64};  // glTF JSON of large scenes runs to tens of MiB
+
+// What the tinygltf callbacks share: the model's folder and the images they accept.
+struct LoadContext {
+  std::filesystem::path folder;
+  std::vector<EncodedImage> images;
+  std::vector<std::string> imageErrors;  // per image index, "" when fine
+};
+
+std::string imageExtension(const unsigned char* bytes, int size) {
+  static constexpr std::array<unsigned char, 8> kPng = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+  if (size >= 8 && std::memcmp(bytes, kPng.data(), kPng.size()) == 0) return ".png";
+  if (size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF) return ".jpg";
+  return "";
+}
+
+// Keeps the encoded bytes; reads only the header (the graph loader decodes later, with
+// its own limits), so a header claiming 60000x60000 pixels allocates nothing.
+bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
+                 const unsigned char* bytes, int size, void* user) {
+  auto& ctx = *static_cast<LoadContext*>(user);
+  if (index < 0) return false;
+  auto slot = static_cast<std::size_t>(index);
+  if (ctx.images.size() <= slot) ctx.images.resize(slot + 1), ctx.imageErrors.resize(slot + 1);
+  EncodedImage& out = ctx.images[slot];
+  out.extension = imageExtension(bytes, size);
+  int components = 0;
+  if (out.extension.empty()) ctx.imageErrors[slot] = "it is neither PNG nor JPEG";
+  else if (!stbi_info_from_memory(bytes, size, &out.width, &out.height, &components))
+    ctx.imageErrors[slot] = "its header cannot be read";
+  else if (out.width > kMaxImageFileDimension || out.height > kMaxImageFileDimension)
+    ctx.imageErrors[slot] = "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) +
+                            " pixels; the limit is " + std::to_string(kMaxImageFileDimension) + " on each side";
+  if (!ctx.imageErrors[slot].empty()) {
+    *err += "image " + std::to_string(index) + ": " + ctx.imageErrors[slot];
+    return false;
+  }
+  out.bytes.assign(bytes, bytes + size);
+  image->width = out.width;
+  image->height = out.height;
+  image->component = components;
+  return true;
+}
+
+bool fileExists(const std::string& path, void* user) {
+  auto& ctx = *static_cast<LoadContext*>(user);
+  return !confinedPath(ctx.folder, std::filesystem::path(path).lexically_relative(ctx.folder).string()).empty() &&
+         std::filesystem::is_regular_file(path);
+}
+
+std::string expandPath(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+
+bool readConfined(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  auto& ctx = *static_cast<LoadContext*>(user);
+  std::filesystem::path inside = confinedPath(ctx.folder, std::filesystem::path(path).lexically_relative(ctx.folder).string());
+  if (inside.empty()) {
+    *err += "refused to read outside the model's folder";
+    return false;
+  }
+  std::vector<std::uint8_t> bytes;
+  if (std::string e = readWholeFile(inside, bytes); !e.empty()) {
+    *err += e;
+    return false;
+  }
+  out->assign(bytes.begin(), bytes.end());
+  return true;
+}
+
+bool writeNothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  *err += "the importer never writes through tinygltf";
+  return false;
+}
+
+bool checkRequiredExtensions(const JsonDocument& doc, DiagnosticList& diags) {
+  auto it = doc.root().find("extensionsRequired");
+  if (it == doc.root().end()) return true;
+  bool ok = true;
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    std::string name = (*it)[i].get<std::string>();
+    if (canReadRequiredExtension(name)) continue;
+    ok = false;
+    std::string hint = name == "KHR_draco_mesh_compression"
+                           ? "decompress the meshes first (for example 'gltf-transform decompress', or re-export from Blender without Draco)"
+                           : "re-export the model without this extension";
+    diags.report(DiagCode::GltfRequiredExtension, doc.locate(appendPointer("/extensionsRequired", i)), {quoteUserText(name), hint});
+  }
+  return ok;
+}
+
+// tinygltf reports everything as text; images we refused have a better message already.
+void reportParseFailure(const Asset& asset, const LoadContext& ctx, const std::string& err, DiagnosticList& diags) {
+  bool reported = false;
+  for (std::size_t i = 0; i < ctx.imageErrors.size(); ++i) {
+    if (ctx.imageErrors[i].empty()) continue;
+    reported = true;
+    std::string pointer = appendPointer("/images", i), what = "image " + std::to_string(i);
+    if (ctx.imageErrors[i].find("the limit") != std::string::npos)
+      diags.report(DiagCode::GltfInvalidData, asset.locate(pointer),
+                   {what + ": " + ctx.imageErrors[i], "resize the image to at most 8192 pixels on each side"});
+    else
+      diags.report(DiagCode::GltfResource, asset.locate(pointer), {what, ctx.imageErrors[i], "store images as PNG or JPEG"});
+  }
+  if (!reported)
+    diags.report(DiagCode::GltfContainer, asset.locate(""),
+                 {quoteUserText(err, 300), "check that the file is glTF 2.0 and that its buffers are complete"});
+}
+
+bool parseWithTinygltf(Asset& asset, const std::vector<std::uint8_t>& bytes, bool glb, const std::filesystem::path& folder,
+                       DiagnosticList& diags) {
+  LoadContext ctx{folder, {}, {}};
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(acceptImage, &ctx);
+  loader.SetFsCallbacks({fileExists, expandPath, readConfined, writeNothing, &ctx});
+  std::string err, warn, base = folder.string();
+  bool ok = glb ? loader.LoadBinaryFromMemory(&asset.model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()), base)
+                : loader.LoadASCIIFromString(&asset.model, &err, &warn, asset.document->text().data(),
+                                             static_cast<unsigned>(asset.document->text().size()), base);
+  if (!ok) {
+    reportParseFailure(asset, ctx, err, diags);
+    return false;
+  }
+  ctx.images.resize(asset.model.images.size());
+  asset.images = std::move(ctx.images);
+  return true;
+}
+
+// tinygltf trusts byteLength and byteOffset; every later read relies on these holding.
+bool checkBufferRanges(const Asset& asset, DiagnosticList& diags) {
+  bool ok = true;
+  const auto& m = asset.model;
+  for (std::size_t i = 0; i < m.buffers.size(); ++i) {
+    // The schema check made byteLength present and an integer.
+    auto byteLength = asset.document->root()["buffers"][i]["byteLength"].get<std::uint64_t>();
+    if (m.buffers[i].data.size() >= byteLength) continue;
+    ok = false;
+    diags.report(DiagCode::GltfResource, asset.locate(appendPointer("/buffers", i)),
+                 {"buffer " + std::to_string(i),
+                  "it declares " + std::to_string(byteLength) + " bytes but holds " + std::to_string(m.buffers[i].data.size()),
+                  "re-export the model; its binary data is truncated"});
+  }
+  for (std::size_t i = 0; i < m.bufferViews.size(); ++i) {
+    const auto& v = m.bufferViews[i];
+    std::uint64_t end = std::uint64_t(v.byteOffset) + v.byteLength;
+    std::size_t have = static_cast<std::size_t>(v.buffer) < m.buffers.size() ? m.buffers[v.buffer].data.size() : 0;
+    if (end <= have) continue;
+    ok = false;
+    diags.report(DiagCode::GltfInvalidData, asset.locate(appendPointer("/bufferViews", i)),
+                 {"buffer view " + std::to_string(i) + " ends at byte " + std::to_string(end) + ", past the end of buffer " +
+                      std::to_string(v.buffer) + " (" + std::to_string(have) + " bytes)",
+                  "re-export the model; its buffer views do not fit their buffers"});
+  }
+  return ok;
+}
+
+}  // namespace
+
+bool canReadRequiredExtension(std::string_view name) {
+  return name == "KHR_texture_transform" || name == "KHR_materials_emissive_strength" || name == "KHR_mesh_quantization";
+}
+
+std::optional<Asset> loadAsset(const std::string& path, DiagnosticList& diags) {
+  std::vector<std::uint8_t> bytes;
+  if (std::string e = readWholeFile(path, bytes); !e.empty()) {
+    diags.report(DiagCode::FileUnreadable, {path, "", 0, 0},
+                 {quoteUserText(path), std::filesystem::exists(path) ? e : "no such file", "pass the path of a .gltf or .glb file"});
+    return std::nullopt;
+  }
+  std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
+  bool glb = looksLikeGlb(bytes);
+  std::string text;
+  if (glb) {
+    std::string error;
+    auto chunks = splitGlb(bytes, error);
+    if (!chunks) {
+      diags.report(DiagCode::GltfContainer, {path, "", 0, 0}, {error, "the .glb file is truncated or corrupt; re-export it"});
+      return std::nullopt;
+    }
+    text = std::string(chunks->json);
+  } else {
+    text.assign(bytes.begin(), bytes.end());
+  }
+  auto document = parseJsonDocument(path, std::move(text), diags, kJsonLimits);
+  if (!document) return std::nullopt;
+  Asset asset;
+  asset.file = path;
+  asset.document = std::make_shared<const JsonDocument>(std::move(*document));
+  if (!checkSchema(*asset.document, diags) || !checkRequiredExtensions(*asset.document, diags) ||
+      !checkResourceUris(*asset.document, folder, diags))
+    return std::nullopt;
+  if (!parseWithTinygltf(asset, bytes, glb, folder, diags) || !checkBufferRanges(asset, diags) || !checkNodeHierarchy(asset, diags))
+    return std::nullopt;
+  return asset;
+}
+
+}  // namespace wg::gltf

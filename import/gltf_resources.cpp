@@ -1,0 +1,142 @@
+#include "import/gltf_resources.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <string_view>
+
+#include "compiler/literal.hpp"
+
+namespace wg::gltf {
+
+namespace {
+
+bool isBase64Char(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '+' || c == '/';
+}
+
+// Strict RFC 4648 base64: the alphabet, whole quads, and '=' only as final padding.
+std::string base64Problem(std::string_view data) {
+  if (data.size() % 4 != 0) return "its length " + std::to_string(data.size()) + " is not a multiple of 4";
+  std::size_t padding = 0;
+  while (padding < 2 && padding < data.size() && data[data.size() - 1 - padding] == '=') ++padding;
+  for (std::size_t i = 0; i + padding < data.size(); ++i)
+    if (!isBase64Char(data[i])) return "character " + std::to_string(i) + " is not base64";
+  return "";
+}
+
+// "data:MEDIA;base64,PAYLOAD": "" or what is wrong.
+std::string dataUriProblem(std::string_view uri, bool image) {
+  std::size_t comma = uri.find(',');
+  if (comma == std::string_view::npos) return "the data: URI has no ',' before its data";
+  std::string_view header = uri.substr(5, comma - 5);
+  constexpr std::string_view kBase64 = ";base64";
+  if (!header.ends_with(kBase64)) return "the data: URI is not base64-encoded";
+  std::string_view media = header.substr(0, header.size() - kBase64.size());
+  bool allowed = image ? (media == "image/png" || media == "image/jpeg")
+                       : (media == "application/octet-stream" || media == "application/gltf-buffer");
+  if (!allowed)
+    return "media type '" + quoteUserText(media) + "' is not " +
+           (image ? "image/png or image/jpeg" : "application/octet-stream or application/gltf-buffer");
+  if (std::string p = base64Problem(uri.substr(comma + 1)); !p.empty()) return "the data: URI is not valid base64: " + p;
+  return "";
+}
+
+int hexValue(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// Percent-decodes a URI reference; "" in `problem` unless it is malformed or holds NUL.
+std::string percentDecode(std::string_view uri, std::string& problem) {
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] != '%') {
+      out += uri[i];
+      continue;
+    }
+    int hi = i + 2 < uri.size() ? hexValue(uri[i + 1]) : -1, lo = i + 2 < uri.size() ? hexValue(uri[i + 2]) : -1;
+    if (hi < 0 || lo < 0) {
+      problem = "a '%' is not followed by two hex digits";
+      return "";
+    }
+    out += static_cast<char>(hi * 16 + lo);
+    i += 2;
+  }
+  if (out.find('\0') != std::string::npos) problem = "the path holds a NUL character";
+  return out;
+}
+
+// "" or what is wrong with a relative file reference.
+std::string fileUriProblem(std::string_view uri, const std::filesystem::path& folder) {
+  std::string problem;
+  std::string path = percentDecode(uri, problem);
+  if (!problem.empty()) return problem;
+  if (path.empty()) return "the URI is empty";
+  if (uri.find("://") != std::string_view::npos || uri.starts_with("file:")) return "only relative file paths are read, not URLs";
+  std::filesystem::path resolved = confinedPath(folder, path);
+  if (resolved.empty()) return "the path leaves the model's folder; images and buffers must sit beside the model or below it";
+  std::error_code ec;
+  auto status = std::filesystem::status(resolved, ec);
+  if (ec || !std::filesystem::exists(status)) return "no such file beside the model";
+  if (!std::filesystem::is_regular_file(status)) return "it is not a regular file";
+  if (std::filesystem::file_size(resolved, ec) > kMaxResourceBytes) return "the file is larger than 512 MiB";
+  return "";
+}
+
+void checkUris(const JsonDocument& doc, const char* collection, bool image, const std::filesystem::path& folder,
+               DiagnosticList& diags, bool& ok) {
+  auto it = doc.root().find(collection);
+  if (it == doc.root().end() || !it->is_array()) return;
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    const auto& element = (*it)[i];
+    auto uri = element.find("uri");
+    if (uri == element.end() || !uri->is_string()) continue;
+    std::string text = uri->get<std::string>();
+    std::string problem = text.starts_with("data:") ? dataUriProblem(text, image) : fileUriProblem(text, folder);
+    if (problem.empty()) continue;
+    ok = false;
+    std::string pointer = appendPointer(appendPointer(appendPointer("", collection), i), "uri");
+    diags.report(DiagCode::GltfResource, doc.locate(pointer),
+                 {std::string(image ? "image " : "buffer ") + std::to_string(i) + " ('" + quoteUserText(text) + "')", problem,
+                  "fix the URI, or re-export the model as a self-contained .glb"});
+  }
+}
+
+}  // namespace
+
+std::filesystem::path confinedPath(const std::filesystem::path& folder, const std::string& path) {
+  std::filesystem::path relative(path);
+  if (relative.is_absolute() || relative.has_root_name()) return {};
+  std::error_code ec;
+  std::filesystem::path root = std::filesystem::weakly_canonical(folder, ec);
+  if (ec) return {};
+  std::filesystem::path resolved = std::filesystem::weakly_canonical(root / relative, ec);
+  if (ec) return {};
+  auto [rootEnd, unused] = std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end());
+  return rootEnd == root.end() ? resolved : std::filesystem::path{};
+}
+
+std::string readWholeFile(const std::filesystem::path& path, std::vector<std::uint8_t>& out) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return "not a regular file";
+  auto size = std::filesystem::file_size(path, ec);
+  if (ec) return ec.message();
+  if (size > kMaxResourceBytes) return "larger than 512 MiB";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::strerror(errno);
+  out.resize(size);
+  if (size && !in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(size))) return "read error";
+  return "";
+}
+
+bool checkResourceUris(const JsonDocument& document, const std::filesystem::path& folder, DiagnosticList& diagnostics) {
+  bool ok = true;
+  checkUris(document, "buffers", false, folder, diagnostics, ok);
+  checkUris(document, "images", true, folder, diagnostics, ok);
+  return ok;
+}
+
+}  // namespace wg::gltf

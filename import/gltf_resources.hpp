@@ -1,0 +1,30 @@
+// The files and data: URIs a glTF names for its buffers and images. Every reference is
+// checked before anything is read: data: URIs must be strict base64 of an allowed media
+// type, and a relative path must stay inside the model's folder (no "..", no absolute
+// path, no NUL), name a regular file and fit the size limit. The same confinement
+// guards the file callbacks tinygltf reads through.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostic.hpp"
+#include "compiler/json_document.hpp"
+
+namespace wg::gltf {
+
+// Largest model, external buffer or image file read (bytes).
+inline constexpr std::uintmax_t kMaxResourceBytes = 512ull << 20;
+
+// Checks every buffers[*].uri and images[*].uri; reports WG5004. Returns false on error.
+bool checkResourceUris(const JsonDocument& document, const std::filesystem::path& folder, DiagnosticList& diagnostics);
+
+// `path` resolved inside `folder`, or "" if it leaves it (through "..", an absolute
+// path or a symbolic link).
+std::filesystem::path confinedPath(const std::filesystem::path& folder, const std::string& path);
+
+// Reads a whole regular file of at most kMaxResourceBytes; "" or the reason it failed.
+std::string readWholeFile(const std::filesystem::path& path, std::vector<std::uint8_t>& out);
+
+}  // namespace wg::gltf

@@ -1,0 +1,284 @@
+#include "import/gltf_schema.hpp"
+
+#include <array>
+#include <string_view>
+
+#include "compiler/literal.hpp"
+
+namespace wg::gltf {
+
+namespace {
+
+enum class Type : std::uint8_t {
+  Root, Asset, Scene, Node, Mesh, Primitive, Accessor, BufferView, Buffer, Material, Pbr, TextureInfo,
+  Texture, Image, Sampler, TextureTransform, EmissiveStrength, Opaque
+};
+
+enum class Kind : std::uint8_t {
+  Index, Number, String, Bool, Object, IndexArray, NumberArray, StringArray, ObjectArray, IndexMap, Any
+};
+
+struct Rule {
+  Type owner;
+  std::string_view key;
+  Kind kind;
+  Type child = Type::Opaque;      // for Object and ObjectArray
+  std::string_view refersTo = {};  // top-level collection an Index names
+  int length = 0;                  // exact NumberArray length; 0: any
+  bool required = false;
+};
+
+using enum Type;
+using K = Kind;
+constexpr bool kRequired = true;
+
+// glTF 2.0 schema, restricted to what the importer and the model renderer read.
+constexpr std::array kRules = {
+    Rule{Root, "asset", K::Object, Asset, {}, 0, kRequired},
+    Rule{Root, "scene", K::Index, Opaque, "scenes"},
+    Rule{Root, "scenes", K::ObjectArray, Scene},
+    Rule{Root, "nodes", K::ObjectArray, Node},
+    Rule{Root, "meshes", K::ObjectArray, Mesh},
+    Rule{Root, "accessors", K::ObjectArray, Accessor},
+    Rule{Root, "bufferViews", K::ObjectArray, BufferView},
+    Rule{Root, "buffers", K::ObjectArray, Buffer},
+    Rule{Root, "materials", K::ObjectArray, Material},
+    Rule{Root, "textures", K::ObjectArray, Texture},
+    Rule{Root, "images", K::ObjectArray, Image},
+    Rule{Root, "samplers", K::ObjectArray, Sampler},
+    Rule{Root, "skins", K::ObjectArray},
+    Rule{Root, "cameras", K::ObjectArray},
+    Rule{Root, "animations", K::ObjectArray},
+    Rule{Root, "extensionsUsed", K::StringArray},
+    Rule{Root, "extensionsRequired", K::StringArray},
+    Rule{Asset, "version", K::String, Opaque, {}, 0, kRequired},
+    Rule{Asset, "minVersion", K::String},
+    Rule{Asset, "generator", K::String},
+    Rule{Asset, "copyright", K::String},
+    Rule{Scene, "nodes", K::IndexArray, Opaque, "nodes"},
+    Rule{Node, "children", K::IndexArray, Opaque, "nodes"},
+    Rule{Node, "mesh", K::Index, Opaque, "meshes"},
+    Rule{Node, "camera", K::Index, Opaque, "cameras"},
+    Rule{Node, "skin", K::Index, Opaque, "skins"},
+    Rule{Node, "matrix", K::NumberArray, Opaque, {}, 16},
+    Rule{Node, "rotation", K::NumberArray, Opaque, {}, 4},
+    Rule{Node, "scale", K::NumberArray, Opaque, {}, 3},
+    Rule{Node, "translation", K::NumberArray, Opaque, {}, 3},
+    Rule{Node, "weights", K::NumberArray},
+    Rule{Mesh, "primitives", K::ObjectArray, Primitive, {}, 0, kRequired},
+    Rule{Mesh, "weights", K::NumberArray},
+    Rule{Primitive, "attributes", K::IndexMap, Opaque, "accessors", 0, kRequired},
+    Rule{Primitive, "indices", K::Index, Opaque, "accessors"},
+    Rule{Primitive, "material", K::Index, Opaque, "materials"},
+    Rule{Primitive, "mode", K::Index},
+    Rule{Primitive, "targets", K::ObjectArray},
+    Rule{Accessor, "bufferView", K::Index, Opaque, "bufferViews"},
+    Rule{Accessor, "byteOffset", K::Index},
+    Rule{Accessor, "componentType", K::Index, Opaque, {}, 0, kRequired},
+    Rule{Accessor, "normalized", K::Bool},
+    Rule{Accessor, "count", K::Index, Opaque, {}, 0, kRequired},
+    Rule{Accessor, "type", K::String, Opaque, {}, 0, kRequired},
+    Rule{Accessor, "max", K::NumberArray},
+    Rule{Accessor, "min", K::NumberArray},
+    Rule{Accessor, "sparse", K::Object},
+    Rule{BufferView, "buffer", K::Index, Opaque, "buffers", 0, kRequired},
+    Rule{BufferView, "byteOffset", K::Index},
+    Rule{BufferView, "byteLength", K::Index, Opaque, {}, 0, kRequired},
+    Rule{BufferView, "byteStride", K::Index},
+    Rule{BufferView, "target", K::Index},
+    Rule{Buffer, "uri", K::String},
+    Rule{Buffer, "byteLength", K::Index, Opaque, {}, 0, kRequired},
+    Rule{Material, "pbrMetallicRoughness", K::Object, Pbr},
+    Rule{Material, "normalTexture", K::Object, TextureInfo},
+    Rule{Material, "occlusionTexture", K::Object, TextureInfo},
+    Rule{Material, "emissiveTexture", K::Object, TextureInfo},
+    Rule{Material, "emissiveFactor", K::NumberArray, Opaque, {}, 3},
+    Rule{Material, "alphaMode", K::String},
+    Rule{Material, "alphaCutoff", K::Number},
+    Rule{Material, "doubleSided", K::Bool},
+    Rule{Pbr, "baseColorFactor", K::NumberArray, Opaque, {}, 4},
+    Rule{Pbr, "baseColorTexture", K::Object, TextureInfo},
+    Rule{Pbr, "metallicFactor", K::Number},
+    Rule{Pbr, "roughnessFactor", K::Number},
+    Rule{Pbr, "metallicRoughnessTexture", K::Object, TextureInfo},
+    Rule{TextureInfo, "index", K::Index, Opaque, "textures", 0, kRequired},
+    Rule{TextureInfo, "texCoord", K::Index},
+    Rule{TextureInfo, "scale", K::Number},
+    Rule{TextureInfo, "strength", K::Number},
+    Rule{Texture, "sampler", K::Index, Opaque, "samplers"},
+    Rule{Texture, "source", K::Index, Opaque, "images"},
+    Rule{Image, "uri", K::String},
+    Rule{Image, "mimeType", K::String},
+    Rule{Image, "bufferView", K::Index, Opaque, "bufferViews"},
+    Rule{Sampler, "magFilter", K::Index},
+    Rule{Sampler, "minFilter", K::Index},
+    Rule{Sampler, "wrapS", K::Index},
+    Rule{Sampler, "wrapT", K::Index},
+    Rule{TextureTransform, "offset", K::NumberArray, Opaque, {}, 2},
+    Rule{TextureTransform, "rotation", K::Number},
+    Rule{TextureTransform, "scale", K::NumberArray, Opaque, {}, 2},
+    Rule{TextureTransform, "texCoord", K::Index},
+    Rule{EmissiveStrength, "emissiveStrength", K::Number},
+};
+
+// The extensions whose contents the importer reads, and the object type they hold.
+Type extensionType(std::string_view name) {
+  if (name == "KHR_texture_transform") return TextureTransform;
+  if (name == "KHR_materials_emissive_strength") return EmissiveStrength;
+  return Opaque;
+}
+
+bool isIndex(const nlohmann::json& j) { return j.is_number_unsigned() || (j.is_number_integer() && j.get<std::int64_t>() >= 0); }
+
+std::string_view expected(const Rule& r) {
+  switch (r.kind) {
+    case K::Index: return "a non-negative integer";
+    case K::Number: return "a number";
+    case K::String: return "a string";
+    case K::Bool: return "true or false";
+    case K::Object: return "an object";
+    case K::IndexArray: return "an array of non-negative integers";
+    case K::NumberArray: return "an array of numbers";
+    case K::StringArray: return "an array of strings";
+    case K::ObjectArray: return "an array of objects";
+    case K::IndexMap: return "an object of non-negative integers";
+    case K::Any: return "any value";
+  }
+  return "";
+}
+
+bool allOf(const nlohmann::json& j, bool (*pred)(const nlohmann::json&)) {
+  if (!j.is_array()) return false;
+  for (const auto& e : j)
+    if (!pred(e)) return false;
+  return true;
+}
+
+bool hasKind(const nlohmann::json& j, const Rule& r) {
+  switch (r.kind) {
+    case K::Index: return isIndex(j);
+    case K::Number: return j.is_number();
+    case K::String: return j.is_string();
+    case K::Bool: return j.is_boolean();
+    case K::Object: return j.is_object();
+    case K::IndexArray: return allOf(j, isIndex);
+    case K::NumberArray:
+      return allOf(j, [](const nlohmann::json& e) { return e.is_number(); }) &&
+             (r.length == 0 || j.size() == static_cast<std::size_t>(r.length));
+    case K::StringArray: return allOf(j, [](const nlohmann::json& e) { return e.is_string(); });
+    case K::ObjectArray: return allOf(j, [](const nlohmann::json& e) { return e.is_object(); });
+    case K::IndexMap:
+      if (!j.is_object()) return false;
+      for (const auto& [k, v] : j.items())
+        if (!isIndex(v)) return false;
+      return true;
+    case K::Any: return true;
+  }
+  return false;
+}
+
+class SchemaChecker {
+ public:
+  SchemaChecker(const JsonDocument& doc, DiagnosticList& diags) : doc_(doc), diags_(diags) {}
+
+  bool run() {
+    if (!doc_.root().is_object()) {
+      diags_.report(DiagCode::GltfSchema, doc_.locate(""), {"the document", "an object", describeJsonKind(doc_.root())});
+      return false;
+    }
+    checkObject(doc_.root(), Root, "");
+    return ok_;
+  }
+
+ private:
+  void checkObject(const nlohmann::json& j, Type type, const std::string& pointer) {
+    for (const Rule& r : kRules) {
+      if (r.owner != type) continue;
+      std::string at = appendPointer(pointer, r.key);
+      auto it = j.find(std::string(r.key));
+      if (it == j.end()) {
+        if (r.required) fail(DiagCode::GltfSchema, pointer, {"'" + std::string(r.key) + "' at " + shownPointer(pointer), std::string(expected(r)), "missing"});
+        continue;
+      }
+      if (!hasKind(*it, r)) {
+        std::string shape = r.length ? std::string(expected(r)) + " of length " + std::to_string(r.length) : std::string(expected(r));
+        fail(DiagCode::GltfSchema, at, {shown(at), shape, describeJsonKind(*it)});
+        continue;
+      }
+      checkReferences(*it, r, at);
+      checkChildren(*it, r, at);
+    }
+    checkName(j, type, pointer);
+    checkExtensions(j, pointer);
+  }
+
+  // Every glTF object but the root may carry a user-facing name.
+  void checkName(const nlohmann::json& j, Type type, const std::string& pointer) {
+    auto it = j.find("name");
+    if (type == Root || it == j.end() || it->is_string()) return;
+    std::string at = appendPointer(pointer, "name");
+    fail(DiagCode::GltfSchema, at, {shown(at), "a string", describeJsonKind(*it)});
+  }
+
+  void checkChildren(const nlohmann::json& j, const Rule& r, const std::string& at) {
+    if (r.child == Opaque) return;
+    if (r.kind == K::Object) checkObject(j, r.child, at);
+    if (r.kind == K::ObjectArray)
+      for (std::size_t i = 0; i < j.size(); ++i) checkObject(j[i], r.child, appendPointer(at, i));
+  }
+
+  void checkExtensions(const nlohmann::json& j, const std::string& pointer) {
+    auto it = j.find("extensions");
+    if (it == j.end()) return;
+    std::string at = appendPointer(pointer, "extensions");
+    if (!it->is_object()) return fail(DiagCode::GltfSchema, at, {shown(at), "an object", describeJsonKind(*it)});
+    for (const auto& [name, value] : it->items()) {
+      std::string inner = appendPointer(at, name);
+      if (!value.is_object()) {
+        fail(DiagCode::GltfSchema, inner, {shown(inner), "an object", describeJsonKind(value)});
+        continue;
+      }
+      if (Type t = extensionType(name); t != Opaque) checkObject(value, t, inner);
+    }
+  }
+
+  void checkReferences(const nlohmann::json& j, const Rule& r, const std::string& at) {
+    if (r.refersTo.empty()) return;
+    if (r.kind == K::Index) return checkIndex(j, r.refersTo, at);
+    if (r.kind == K::IndexArray)
+      for (std::size_t i = 0; i < j.size(); ++i) checkIndex(j[i], r.refersTo, appendPointer(at, i));
+    if (r.kind == K::IndexMap)
+      for (const auto& [k, v] : j.items()) checkIndex(v, r.refersTo, appendPointer(at, k));
+  }
+
+  void checkIndex(const nlohmann::json& index, std::string_view collection, const std::string& at) {
+    std::size_t size = 0;
+    if (auto it = doc_.root().find(std::string(collection)); it != doc_.root().end() && it->is_array()) size = it->size();
+    auto value = index.get<std::uint64_t>();
+    if (value < size) return;
+    fail(DiagCode::GltfBadReference, at,
+         {shown(at) + " is " + std::to_string(value) + ", but the file has " + std::to_string(size) + " '" + std::string(collection) + "'",
+          size ? "use an index from 0 to " + std::to_string(size - 1) + ", or re-export the model"
+               : "the file has no '" + std::string(collection) + "'; remove the reference or re-export the model"});
+  }
+
+  static std::string shown(const std::string& pointer) { return quoteUserText(pointer, 200); }
+  static std::string shownPointer(const std::string& pointer) { return pointer.empty() ? "the top level" : shown(pointer); }
+
+  void fail(DiagCode code, const std::string& pointer, std::initializer_list<std::string_view> args) {
+    ok_ = false;
+    diags_.report(code, doc_.locate(pointer), args);
+  }
+
+  const JsonDocument& doc_;
+  DiagnosticList& diags_;
+  bool ok_ = true;
+};
+
+}  // namespace
+
+bool checkSchema(const JsonDocument& document, DiagnosticList& diagnostics) {
+  return SchemaChecker(document, diagnostics).run();
+}
+
+}  // namespace wg::gltf

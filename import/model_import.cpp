@@ -1,0 +1,100 @@
+#include "import/model_import.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+
+#include "import/material_graph_writer.hpp"
+
+namespace wg::gltf {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string lowered(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// Graph stems: MODEL_MATERIAL; names that collide (ignoring case, for case-insensitive
+// file systems) all take their material index as a suffix, so no name depends on order.
+std::vector<std::string> graphStems(const tinygltf::Model& model, const std::string& modelStem) {
+  std::vector<std::string> stems;
+  std::map<std::string, int> uses;
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    stems.push_back(modelStem + "_" + fileSafeName(model.materials[i].name, "material" + std::to_string(i)));
+    ++uses[lowered(stems.back())];
+  }
+  ++uses[lowered(modelStem + "_default")];
+  for (std::size_t i = 0; i < stems.size(); ++i)
+    if (uses[lowered(stems[i])] > 1) stems[i] += "_" + std::to_string(i);
+  return stems;
+}
+
+std::string asText(const Json& json) { return json.dump(2) + "\n"; }
+
+}  // namespace
+
+std::string fileSafeName(std::string_view text, std::string_view fallback) {
+  constexpr std::size_t kMaxLength = 48;
+  std::string out;
+  for (char c : text) {
+    if (out.size() == kMaxLength) break;
+    bool safe = std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    if (safe) out += c;
+    else if (!out.empty() && out.back() != '_') out += '_';
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  if (out.empty() || out.front() == '-') out = std::string(fallback) + (out.empty() ? "" : "_" + out);
+  return out;
+}
+
+std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const PresetChoice& presets,
+                                         DiagnosticList& diags) {
+  const auto& model = asset.model;
+  std::string modelStem = fileSafeName(std::filesystem::path(asset.file).stem().string(), "model");
+  ImportedModel out;
+  GraphNaming naming;
+  Json index;
+  index["model"] = std::filesystem::path(asset.file).filename().string();
+  index["generator"] = std::string("weathergen ") + WEATHERGEN_VERSION;
+  index["images"] = Json::array();
+  for (std::size_t i = 0; i < model.images.size(); ++i) {
+    const EncodedImage& image = asset.images[i];
+    std::string file = modelStem + "_image" + std::to_string(i) + image.extension;
+    naming.imageFiles.push_back(file);
+    out.files.push_back({file, std::string(image.bytes.begin(), image.bytes.end())});
+    index["images"].push_back(Json{{"index", i}, {"file", file}, {"width", image.width}, {"height", image.height}});
+  }
+  std::size_t errorsBefore = diags.items().size();
+  auto addGraph = [&](int material, const std::string& stem, const std::string& name) {
+    naming.name = stem;
+    naming.weatherPreset = presets.presetFor(name);
+    out.files.push_back({stem + ".json", asText(materialGraph(asset, material, naming, diags))});
+    return Json{{"index", material}, {"name", name}, {"graph", stem + ".json"}, {"weatherPreset", naming.weatherPreset}};
+  };
+  index["materials"] = Json::array();
+  std::vector<std::string> stems = graphStems(model, modelStem);
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    index["materials"].push_back(addGraph(static_cast<int>(i), stems[i], model.materials[i].name));
+    out.materialGraphs.push_back(stems[i] + ".json");
+  }
+  bool needsDefault = std::any_of(geometry.primitives.begin(), geometry.primitives.end(),
+                                  [](const ModelPrimitive& p) { return p.material < 0; });
+  if (needsDefault) {
+    index["defaultMaterial"] = addGraph(-1, modelStem + "_default", "");
+    out.defaultGraph = modelStem + "_default.json";
+  }
+  index["primitives"] = geometry.primitives.size();
+  index["triangles"] = geometry.triangleCount;
+  DiagnosticList added;
+  for (std::size_t i = errorsBefore; i < diags.items().size(); ++i) added.items().push_back(diags.items()[i]);
+  if (added.hasErrors()) return std::nullopt;
+  out.indexFile = modelStem + ".import.json";
+  out.files.push_back({out.indexFile, asText(index)});
+  return out;
+}
+
+}  // namespace wg::gltf

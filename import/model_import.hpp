@@ -1,0 +1,37 @@
+// `weathergen import`: a checked glTF asset -> one material graph per glTF material,
+// its images as the file stored them, and MODEL.import.json indexing both. The result
+// is bytes in memory; the CLI publishes it all at once or not at all. Names are
+// sanitised and depend only on the file's contents, so re-importing gives identical
+// bytes, and a .gltf, its .glb and its embedded form give identical graphs.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostic.hpp"
+#include "import/gltf_asset.hpp"
+#include "import/model_geometry.hpp"
+#include "import/preset_map.hpp"
+
+namespace wg::gltf {
+
+struct ImportedFile {
+  std::string name;  // file name inside the output directory
+  std::string bytes;
+};
+
+struct ImportedModel {
+  std::vector<ImportedFile> files;
+  std::string indexFile;  // MODEL.import.json
+  // Graph file per glTF material index; defaultGraph for primitives without one.
+  std::vector<std::string> materialGraphs;
+  std::string defaultGraph;  // "" unless some primitive has no material
+};
+
+std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const PresetChoice& presets,
+                                         DiagnosticList& diagnostics);
+
+// A file-name-safe form of any text: [A-Za-z0-9_-], at most 48 characters, never empty.
+std::string fileSafeName(std::string_view text, std::string_view fallback);
+
+}  // namespace wg::gltf

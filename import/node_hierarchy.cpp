@@ -1,0 +1,52 @@
+#include "import/node_hierarchy.hpp"
+
+namespace wg::gltf {
+
+namespace {
+constexpr int kNoParent = -1;
+
+std::string describeCycle(const std::vector<int>& parent, int start) {
+  std::string path = std::to_string(start);
+  for (int n = parent[start], steps = 0; n != start && steps < 8; n = parent[n], ++steps) path = std::to_string(n) + " -> " + path;
+  return std::to_string(start) + " -> ... -> " + path;
+}
+}  // namespace
+
+bool checkNodeHierarchy(const Asset& asset, DiagnosticList& diags) {
+  const auto& nodes = asset.model.nodes;
+  std::vector<int> parent(nodes.size(), kNoParent);
+  for (std::size_t p = 0; p < nodes.size(); ++p)
+    for (std::size_t c = 0; c < nodes[p].children.size(); ++c) {
+      int child = nodes[p].children[c];
+      if (parent[child] == kNoParent) {
+        parent[child] = static_cast<int>(p);
+        continue;
+      }
+      diags.report(DiagCode::GltfNodeHierarchy, asset.locate("/nodes/" + std::to_string(p) + "/children/" + std::to_string(c)),
+                   {"node " + std::to_string(child) + " has two parents, nodes " + std::to_string(parent[child]) + " and " +
+                    std::to_string(p)});
+      return false;
+    }
+  // With one parent each, a node that cannot climb to a root within nodes.size() steps is on a cycle.
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    int at = static_cast<int>(n);
+    std::size_t steps = 0;
+    while (parent[at] != kNoParent && steps <= nodes.size()) at = parent[at], ++steps;
+    if (parent[at] == kNoParent) continue;
+    diags.report(DiagCode::GltfNodeHierarchy, asset.locate("/nodes/" + std::to_string(n)),
+                 {"node " + std::to_string(n) + " is its own ancestor (" + describeCycle(parent, static_cast<int>(n)) + ")"});
+    return false;
+  }
+  for (std::size_t s = 0; s < asset.model.scenes.size(); ++s)
+    for (std::size_t i = 0; i < asset.model.scenes[s].nodes.size(); ++i) {
+      int root = asset.model.scenes[s].nodes[i];
+      if (parent[root] == kNoParent) continue;
+      diags.report(DiagCode::GltfNodeHierarchy, asset.locate("/scenes/" + std::to_string(s) + "/nodes/" + std::to_string(i)),
+                   {"scene " + std::to_string(s) + " lists node " + std::to_string(root) + ", which is a child of node " +
+                    std::to_string(parent[root])});
+      return false;
+    }
+  return true;
+}
+
+}  // namespace wg::gltf
