@@ -1,5 +1,6 @@
-# `cmake --install`: the CLI in bin/ and a CMake package in lib/cmake/weathergen so that
-# other projects can find_package(weathergen) and call weathergen_add_materials().
+# `cmake --install`: the CLI in bin/, the engine library in lib/ with its header, and a
+# CMake package in lib/cmake/weathergen so that other projects can find_package(weathergen),
+# call weathergen_add_materials() and link weathergen::compiler.
 include(CMakePackageConfigHelpers)
 include(GNUInstallDirs)
 
@@ -9,10 +10,17 @@ install(TARGETS weathergen EXPORT weathergenTargets RUNTIME DESTINATION "${CMAKE
 # The bundled graphs: `weathergen render` finds them at ../share/weathergen/graphs.
 install(DIRECTORY graphs/ DESTINATION "${CMAKE_INSTALL_DATADIR}/weathergen/graphs" FILES_MATCHING PATTERN "*.json")
 install(EXPORT weathergenTargets NAMESPACE weathergen:: DESTINATION "${WG_PACKAGE_DIR}")
+# The engine library has an export set of its own: unlike the CLI it is only usable by a
+# consumer with the same pointer size, so the config loads it only then.
+install(TARGETS weathergen_shared EXPORT weathergenCompilerTargets
+        LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+install(FILES include/weathergen/weathergen.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/weathergen")
+install(EXPORT weathergenCompilerTargets NAMESPACE weathergen:: DESTINATION "${WG_PACKAGE_DIR}")
 
 configure_package_config_file(cmake/weathergenConfig.cmake.in
   "${CMAKE_CURRENT_BINARY_DIR}/weathergenConfig.cmake" INSTALL_DESTINATION "${WG_PACKAGE_DIR}")
-# A host tool: usable whatever the consuming project's pointer size. 0.x minors may break.
+# The CLI is a host tool: usable whatever the consuming project's pointer size (the config
+# checks it before loading the library). 0.x minors may break.
 write_basic_package_version_file("${CMAKE_CURRENT_BINARY_DIR}/weathergenConfigVersion.cmake"
   COMPATIBILITY SameMinorVersion ARCH_INDEPENDENT)
 install(FILES "${CMAKE_CURRENT_BINARY_DIR}/weathergenConfig.cmake"

@@ -1,0 +1,31 @@
+# weathergen::compiler: the engine API (include/weathergen/weathergen.hpp) as one shared
+# library, libweathergen.so. The compiler and its static dependencies (glslang,
+# SPIRV-Tools, SPIRV-Cross, nlohmann_json) are linked into it and hidden by a version
+# script, so an engine links one library and needs none of them (docs/engine-api.md).
+include(GNUInstallDirs)
+
+# The static libraries end up in a shared object.
+set_target_properties(weathergen_compiler weathergen_nodes PROPERTIES POSITION_INDEPENDENT_CODE ON)
+
+add_library(weathergen_shared SHARED compiler/public_api.cpp)
+add_library(weathergen::compiler ALIAS weathergen_shared)
+# The public header is the whole interface: consumers see include/ and nothing else.
+target_include_directories(weathergen_shared INTERFACE
+  "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>" "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
+target_compile_features(weathergen_shared INTERFACE cxx_std_17)
+target_link_libraries(weathergen_shared PRIVATE weathergen_compiler)
+
+set(WG_EXPORT_MAP "${CMAKE_CURRENT_SOURCE_DIR}/cmake/weathergen.map")
+target_link_options(weathergen_shared PRIVATE "LINKER:--version-script=${WG_EXPORT_MAP}")
+# Sanitizer and fuzzer runtimes are linked into executables only, so their hooks are
+# undefined in the library there.
+if(NOT WEATHERGEN_SANITIZE AND NOT WEATHERGEN_FUZZ)
+  target_link_options(weathergen_shared PRIVATE "LINKER:--no-undefined")
+endif()
+# 0.x minors may break the ABI (as the package version file says), so the soname has both.
+set_target_properties(weathergen_shared PROPERTIES
+  OUTPUT_NAME weathergen
+  EXPORT_NAME compiler
+  VERSION "${PROJECT_VERSION}"
+  SOVERSION "${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}"
+  LINK_DEPENDS "${WG_EXPORT_MAP}")
