@@ -266,9 +266,9 @@ VkPipeline createPipeline(const Gpu& gpu, VkPipelineLayout layout, const weather
   return pipeline;
 }
 
-// Descriptor-set layouts from the reflection: every uniform block is a uniform buffer,
-// every texture (the material's and the weather maps) a sampled image plus a sampler,
-// each at its reflected set and binding.
+// Descriptor-set layouts from the reflection: every uniform block with members is a
+// uniform buffer, every texture (the material's and the weather maps) a sampled image
+// plus a sampler, each at its reflected set and binding.
 MaterialPipelines createMaterial(const Gpu& gpu, const weathergen::Result& compiled) {
   json reflection = json::parse(compiled.reflectionJson);
   std::vector<std::vector<VkDescriptorSetLayoutBinding>> sets;
@@ -277,7 +277,9 @@ MaterialPipelines createMaterial(const Gpu& gpu, const weathergen::Result& compi
     if (set >= sets.size()) sets.resize(set + 1);
     sets[set].push_back({item.at(bindingKey), type, 1, kStages, nullptr});
   };
-  for (const json& block : reflection.at("blocks")) add(block, "binding", VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+  for (const json& block : reflection.at("blocks"))
+    if (!block.at("members").empty())  // a material without parameters has no block in its shaders
+      add(block, "binding", VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
   for (const char* list : {"textures", "weatherMaps"})
     for (const json& texture : reflection.at(list)) {
       add(texture, "binding", VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE);
