@@ -85,14 +85,16 @@ class GlslSyntax final : public ShaderSyntax {
              "  vec4 wg_worldTangent = vec4(wg_safe_normalize((frame_model * vec4(in_tangent.xyz, 0.0)).xyz), in_tangent.w);\n"
              "  vec2 wg_texcoord = in_texcoord;\n"
              "  vec4 wg_vertexColor = in_color;\n";
+      if (mi.hasTexcoord1()) out += "  vec2 wg_texcoord1 = in_texcoord1;\n";
       out += s.body;
       out += "  wg_worldPosition += wg_offset;\n";
       out += "  v_worldPosition = wg_worldPosition;\n"
              "  v_worldNormal = wg_worldNormal;\n"
              "  v_worldTangent = wg_worldTangent;\n"
              "  v_texcoord = wg_texcoord;\n"
-             "  v_color = wg_vertexColor;\n"
-             "  gl_Position = frame_viewProjection * vec4(wg_worldPosition, 1.0);\n";
+             "  v_color = wg_vertexColor;\n";
+      if (mi.hasTexcoord1()) out += "  v_texcoord1 = wg_texcoord1;\n";
+      out += "  gl_Position = frame_viewProjection * vec4(wg_worldPosition, 1.0);\n";
     } else {
       out += "  vec3 wg_worldPosition = v_worldPosition;\n"
              "  vec3 wg_worldNormal = wg_safe_normalize(v_worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);\n"
@@ -100,13 +102,14 @@ class GlslSyntax final : public ShaderSyntax {
              "  vec4 wg_worldTangent = vec4(wg_tangentAxis, v_worldTangent.w);\n"
              "  vec2 wg_texcoord = v_texcoord;\n"
              "  vec4 wg_vertexColor = v_color;\n";
+      if (mi.hasTexcoord1()) out += "  vec2 wg_texcoord1 = v_texcoord1;\n";
       out += s.body;
       if (s.alphaTested) out += "  if (wg_opacity < " + formatFloat(s.alphaCutoff) + ") discard;\n";
       out += "  vec3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
              "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
              "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
              "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
-      out += "  float wg_alpha = 1.0;\n";
+      out += alphaStatement(s);
       for (const auto& view : s.debugViews) {
         out += "  if (frame_debugView == " + std::to_string(view.id) + "u) ";
         if (view.alpha.empty()) out += "wg_color = " + view.expression + ";\n";

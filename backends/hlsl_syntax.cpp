@@ -109,6 +109,7 @@ class HlslSyntax final : public ShaderSyntax {
              "  float4 wg_worldTangent = float4(wg_safe_normalize(mul(frame_model, float4(in_tangent.xyz, 0.0)).xyz), in_tangent.w);\n"
              "  float2 wg_texcoord = in_texcoord;\n"
              "  float4 wg_vertexColor = in_color;\n";
+      if (mi.hasTexcoord1()) out += "  float2 wg_texcoord1 = in_texcoord1;\n";
       out += s.body;
       out += "  wg_worldPosition += wg_offset;\n";
       out += "  VSOutput wg_out;\n"
@@ -116,8 +117,9 @@ class HlslSyntax final : public ShaderSyntax {
              "  wg_out.v_worldNormal = wg_worldNormal;\n"
              "  wg_out.v_worldTangent = wg_worldTangent;\n"
              "  wg_out.v_texcoord = wg_texcoord;\n"
-             "  wg_out.v_color = wg_vertexColor;\n"
-             "  wg_out.wg_clipPosition = mul(frame_viewProjection, float4(wg_worldPosition, 1.0));\n"
+             "  wg_out.v_color = wg_vertexColor;\n";
+      if (mi.hasTexcoord1()) out += "  wg_out.v_texcoord1 = wg_texcoord1;\n";
+      out += "  wg_out.wg_clipPosition = mul(frame_viewProjection, float4(wg_worldPosition, 1.0));\n"
              "  return wg_out;\n";
     } else {
       out += "\nfloat4 main(PSInput wg_in, bool wg_frontFacing : SV_IsFrontFace) : SV_Target0 {\n";
@@ -127,13 +129,14 @@ class HlslSyntax final : public ShaderSyntax {
              "  float4 wg_worldTangent = float4(wg_tangentAxis, wg_in.v_worldTangent.w);\n"
              "  float2 wg_texcoord = wg_in.v_texcoord;\n"
              "  float4 wg_vertexColor = wg_in.v_color;\n";
+      if (mi.hasTexcoord1()) out += "  float2 wg_texcoord1 = wg_in.v_texcoord1;\n";
       out += s.body;
       if (s.alphaTested) out += "  if (wg_opacity < " + formatFloat(s.alphaCutoff) + ") discard;\n";
       out += "  float3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
              "  float3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
              "  float3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
              "  float3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
-      out += "  float wg_alpha = 1.0;\n";
+      out += alphaStatement(s);
       for (const auto& view : s.debugViews) {
         out += "  if (frame_debugView == " + std::to_string(view.id) + "u) ";
         if (view.alpha.empty()) out += "wg_color = " + view.expression + ";\n";

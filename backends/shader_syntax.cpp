@@ -18,6 +18,10 @@ std::string ShaderSyntax::constant(const Value& value) const {
   return out + ')';
 }
 
+std::string_view ShaderSyntax::alphaStatement(const StageSource& source) {
+  return source.alphaBlended ? "  float wg_alpha = frame_debugView == 0u ? wg_opacity : 1.0;\n" : "  float wg_alpha = 1.0;\n";
+}
+
 std::string ShaderSyntax::parameterRead(const BlockMember& member, ValueType type) const {
   if (type == ValueType::Bool) return "(" + member.identifier + " != 0u)";
   return member.identifier;

@@ -30,10 +30,12 @@ struct StageSource {
   std::vector<const ShaderLibrary*> libraries;  // dependency order
   // Node statements, then the locals the frame reads: wg_baseColor, wg_metallic,
   // wg_roughness, wg_specular, wg_normal, wg_occlusion, wg_emissive, wg_opacity and the
-  // wg_coverage_* terms (fragment), or wg_offset (vertex).
+  // wg_coverage_* terms (fragment), or wg_offset (vertex). The frame provides
+  // wg_texcoord1 when the interface has the "texcoord1" input.
   std::string body;
   bool alphaTested = false;
   float alphaCutoff = 0.5f;
+  bool alphaBlended = false;  // the lit colour's alpha is the opacity (AOVs keep 1)
   std::vector<DebugView> debugViews;
 };
 
@@ -48,6 +50,9 @@ class ShaderSyntax {
   virtual std::string assemble(const StageSource& source) const = 0;
 
   std::string constant(const Value& value) const;
+  // The fragment stage's output alpha: 1, or the opacity in the lit view of a blended
+  // material (AOVs keep 1, so read-backs still tell surface from background).
+  static std::string_view alphaStatement(const StageSource& source);
   // A parameter's value from its block member (bools are stored as uint).
   std::string parameterRead(const BlockMember& member, ValueType type) const;
 };

@@ -14,7 +14,7 @@ namespace {
 
 // Fixed local names of the stage frames; reserved so no node temporary takes them.
 constexpr std::string_view kFrameLocals[] = {
-    "wg_worldPosition", "wg_worldNormal", "wg_worldTangent", "wg_tangentAxis", "wg_texcoord", "wg_vertexColor",
+    "wg_worldPosition", "wg_worldNormal", "wg_worldTangent", "wg_tangentAxis", "wg_texcoord", "wg_texcoord1", "wg_vertexColor",
     "wg_baseColor", "wg_metallic", "wg_roughness", "wg_specular", "wg_normal", "wg_occlusion", "wg_emissive",
     "wg_bitangent", "wg_N", "wg_V", "wg_color", "wg_alpha", "wg_opacity", "wg_offset",
     "wg_coverage_snow", "wg_coverage_wet", "wg_coverage_moss", "wg_coverage_frost", "wg_coverage_ice",
@@ -40,8 +40,9 @@ class StageWriter {
     collectLibraries(source.libraries);
     source.body.reserve(graph_.nodes.size() * kBytesPerStatement);
     emitBody(source.body);
-    source.alphaTested = graph_.alphaTested;
+    source.alphaTested = graph_.alphaTested();
     source.alphaCutoff = graph_.alphaCutoff;
+    source.alphaBlended = graph_.alphaMode == AlphaMode::Blend;
     if (stage_ == ShaderStage::Fragment) {
       for (const auto& view : kDebugViews) {
         std::string expression;
@@ -169,6 +170,7 @@ class StageWriter {
 
   std::string symbol(std::string_view name, const IrNode& node) const {
     if (name == "texcoord") return "wg_texcoord";
+    if (name == "texcoord1") return "wg_texcoord1";
     if (name == "worldPosition") return "wg_worldPosition";
     if (name == "worldNormal") return "wg_worldNormal";
     if (name == "worldTangent") return "wg_worldTangent";

@@ -26,7 +26,7 @@ std::span<float> one(float& x) { return {&x, 1}; }
 
 // Names are the frame block's members (compiler/frame_block.cpp) and the surface
 // attributes; ranges are the runtime's (runtime/weather/weather_state.hpp).
-const std::array<EvalInputSpec, 19> kSpecs = {{
+const std::array<EvalInputSpec, 20> kSpecs = {{
     {"temperature", G::Weather, 1, kMinTemperatureC, kMaxTemperatureC, "air temperature, degrees C",
      [](EvalInputs& in) { return one(in.frame.temperature); }},
     {"precipitation", G::Weather, 1, 0.f, 1.f, "0 dry .. 1 heavy (about 10 mm/h of rain)",
@@ -57,6 +57,8 @@ const std::array<EvalInputSpec, 19> kSpecs = {{
      [](EvalInputs& in) { return std::span<float>(in.surface.tangent); }},
     {"texcoord", G::Surface, 2, -kInf, kInf, "mesh texture coordinate u:v",
      [](EvalInputs& in) { return std::span<float>(in.surface.texcoord); }},
+    {"texcoord1", G::Surface, 2, -kInf, kInf, "mesh texture coordinate set 1 u:v (op texcoord1)",
+     [](EvalInputs& in) { return std::span<float>(in.surface.texcoord1); }},
     {"vertexColor", G::Surface, 3, 0.f, 1.f, "r:g:b[:a] mesh vertex colour",
      [](EvalInputs& in) { return std::span<float>(in.surface.vertexColor); }},
     {"skyExposure", G::Surface, 1, 0.f, 1.f, "open sky above the point (the shared map's value): 1 open, 0 roofed",

@@ -31,6 +31,15 @@ void addValue(StableHasher& h, const Value& v) {
   h.add(static_cast<std::uint64_t>(v.type));
   for (int i = 0; i < v.width(); ++i) h.add(std::bit_cast<std::uint32_t>(v.v[i]));
 }
+// One wrap and filter for both axes and directions, linear: the settings every
+// texture had before per-axis wrap, min/mag filters and colour spaces, hashed as then.
+void addSampler(StableHasher& h, const SamplerState& s) {
+  h.add(static_cast<std::uint64_t>(s.wrapU) * 16 + static_cast<std::uint64_t>(s.magFilter));
+  if (s.wrapV == s.wrapU && s.minFilter == s.magFilter && s.colorSpace == ColorSpace::Linear) return;
+  h.add("sampler");
+  h.add(static_cast<std::uint64_t>(s.wrapV) * 256 + static_cast<std::uint64_t>(s.minFilter) * 16 +
+        static_cast<std::uint64_t>(s.colorSpace));
+}
 void addOperand(StableHasher& h, const Operand& o) {
   h.add(static_cast<std::uint64_t>(o.kind));
   if (o.kind == Operand::Kind::Node) {
@@ -69,11 +78,14 @@ std::string contentHash(const IrGraph& graph) {
     h.add(t.seed);
     h.add(static_cast<std::uint64_t>(t.size));
     h.add(t.options.dump());
-    h.add(static_cast<std::uint64_t>(t.wrap) * 16 + static_cast<std::uint64_t>(t.filter));
+    addSampler(h, t.sampler);
   }
-  h.add(static_cast<std::uint64_t>(graph.alphaTested));
+  h.add(static_cast<std::uint64_t>(graph.alphaTested()));
   h.add(std::bit_cast<std::uint32_t>(graph.alphaCutoff));
   h.add(graph.weather.preset);
+  // Later fields are hashed only when set, so graphs without them keep their hashes.
+  if (graph.alphaMode == AlphaMode::Blend) h.add(alphaModeName(graph.alphaMode));
+  if (graph.doubleSided) h.add("doubleSided");
   return h.hex();
 }
 

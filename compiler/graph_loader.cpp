@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "compiler/literal.hpp"
+#include "compiler/sampler_state_loader.hpp"
 #include "compiler/static_switches.hpp"
 #include "nodes/image_file.hpp"
 #include "nodes/op_registry.hpp"
@@ -83,7 +84,7 @@ class Loader {
     const auto& root = doc_.root();
     if (!expectKind(root, "", nlohmann::json::value_t::object, "the document", "an object")) return false;
     checkFields(root, "", {"$schema", "name", "description", "include", "parameters", "textures", "switches", "nodes",
-                           "output", "weather", "alphaCutoff"});
+                           "output", "weather", "alphaCutoff", "alphaMode", "doubleSided"});
     graph_.sourceFile = doc_.file();
     if (auto* name = required(root, "", "name", nlohmann::json::value_t::string, "a string")) {
       graph_.name = name->get<std::string>();
@@ -114,11 +115,24 @@ class Loader {
       else
         graph_.alphaCutoff = static_cast<float>(v);
     }
+    loadAlphaMode(root);
+    if (root.contains("doubleSided") && expectKind(root["doubleSided"], "/doubleSided", nlohmann::json::value_t::boolean, "'doubleSided'", "true or false"))
+      graph_.doubleSided = root["doubleSided"].get<bool>();
     sortAndCheckNames();
     return !failed_;
   }
 
  private:
+  // "alphaMode": "opaque" | "mask" | "blend"; absent, the rule follows output.opacity.
+  void loadAlphaMode(const nlohmann::json& root) {
+    auto* mode = optionalString(root, "", "alphaMode");
+    if (!mode) return;
+    graph_.alphaMode = parseAlphaMode(mode->get<std::string>());
+    if (!graph_.alphaMode)
+      report(DiagCode::InvalidSetting, "/alphaMode",
+             {"unknown alphaMode '" + quoteUserText(mode->get<std::string>()) + "'", "use opaque, mask or blend"});
+  }
+
   // Parameters, textures and nodes: what a graph and a library both declare.
   void loadDeclarations(const nlohmann::json& root) {
     std::string at = scope_.pointer;
@@ -322,19 +336,8 @@ class Loader {
     t.pointer = pointer;
     if (name.empty())
       report(DiagCode::TextureUnsupported, pointer, {shown, "the texture name is empty", "give the texture a name"});
-    if (auto* wrap = optionalString(j, pointer, "wrap")) {
-      auto w = parseTextureWrap(wrap->get<std::string>());
-      if (!w) report(DiagCode::TextureUnsupported, appendPointer(pointer, "wrap"),
-                     {shown, "unknown wrap mode '" + quoteUserText(wrap->get<std::string>()) + "'", "use repeat, clamp or mirror"});
-      else t.wrap = *w;
-    }
-    if (auto* filter = optionalString(j, pointer, "filter")) {
-      auto f = parseTextureFilter(filter->get<std::string>());
-      if (!f) report(DiagCode::TextureUnsupported, appendPointer(pointer, "filter"),
-                     {shown, "unknown filter '" + quoteUserText(filter->get<std::string>()) + "'", "use linear or nearest"});
-      else t.filter = *f;
-    }
     bool hasFile = j.contains("file"), hasGenerator = j.contains("generator");
+    if (!loadSamplerState(j, pointer, shown, hasGenerator && !hasFile, doc_, diags_, t.sampler)) failed_ = true;
     if (hasFile == hasGenerator) {
       report(DiagCode::TextureUnsupported, pointer,
              {shown, hasFile ? "both 'file' and 'generator' are set" : "neither 'file' nor 'generator' is set",
@@ -342,7 +345,7 @@ class Loader {
       return;
     }
     if (hasFile) {
-      checkFields(j, pointer, {"file", "wrap", "filter", "description"});
+      checkFields(j, pointer, {"file", "wrap", "filter", "colorSpace", "description"});
       auto* file = optionalString(j, pointer, "file");
       if (!file) return;
       // A library's file is reported relative to the including graph, like the graph's own.
@@ -399,7 +402,8 @@ class Loader {
       }
       nlohmann::json options = nlohmann::json::object();
       for (const auto& [key, value] : j.items())
-        if (key != "generator" && key != "seed" && key != "size" && key != "wrap" && key != "filter" && key != "description")
+        if (key != "generator" && key != "seed" && key != "size" && key != "wrap" && key != "filter" && key != "colorSpace" &&
+            key != "description")
           options[key] = value;
       std::string error = validateGeneratorOptions(*spec, options);
       if (!error.empty())

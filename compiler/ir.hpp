@@ -62,7 +62,10 @@ struct IrGraph {
   std::vector<TextureDecl> textures;
   std::vector<std::string> includedFiles;  // graph libraries read: inputs for depfiles, not part of the hash
   float alphaCutoff = 0.5f;
-  bool alphaTested = false;  // opacity was given
+  // Declared, or (when the graph leaves it out) mask once opacity is given, else opaque.
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  bool alphaModeDeclared = false;
+  bool doubleSided = false;
   WeatherConfig weather;  // what the weather-inject pass adds; preset "none" adds nothing
   // The bindings as they were before weather-inject. Shaders use them while every
   // weather level is 0 and run the weather nodes only otherwise (one uniform branch).
@@ -82,6 +85,9 @@ struct IrGraph {
     if (weatherGuarded)
       for (const auto& o : unweathered) f(o);
   }
+
+  // Fragments with opacity below alphaCutoff are discarded.
+  bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
 
   Operand& output(PbrField field) { return outputs[static_cast<std::size_t>(field)]; }
   const Operand& output(PbrField field) const { return outputs[static_cast<std::size_t>(field)]; }

@@ -79,6 +79,9 @@ class Builder {
     ir_.includedFiles = graph_.includedFiles;
     ir_.textures = graph_.textures;
     ir_.alphaCutoff = graph_.alphaCutoff;
+    ir_.alphaMode = graph_.alphaMode.value_or(graph_.outputs.contains(PbrField::Opacity) ? AlphaMode::Mask : AlphaMode::Opaque);
+    ir_.alphaModeDeclared = graph_.alphaMode.has_value();
+    ir_.doubleSided = graph_.doubleSided;
     irIndex_.assign(pending_.size(), kNoNode);
     for (std::uint32_t n : order_) typeNode(n);
     bindOutputs();
@@ -443,7 +446,6 @@ class Builder {
       auto it = graph_.outputs.find(info.field);
       if (it == graph_.outputs.end()) continue;
       const InputSource& source = it->second;
-      if (info.field == PbrField::Opacity) ir_.alphaTested = true;
       std::string what = "output '" + std::string(info.name) + "'";
       if (source.kind == InputSource::Kind::Literal) {
         if (auto operand = literalOperand(source, what, info.min, info.max)) {

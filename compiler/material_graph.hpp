@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/alpha_mode.hpp"
 #include "compiler/json_document.hpp"
 #include "compiler/pbr_output.hpp"
 #include "compiler/value.hpp"
@@ -39,8 +40,7 @@ struct TextureDecl {
   std::uint32_t seed = 0;
   int size = 256;
   nlohmann::json options = nlohmann::json::object();
-  TextureWrap wrap = TextureWrap::Repeat;
-  TextureFilter filter = TextureFilter::Linear;
+  SamplerState sampler;  // wrap per axis, min/mag filter, colour space
   std::string pointer;
 };
 
@@ -77,6 +77,8 @@ struct MaterialGraph {
   std::optional<nlohmann::json> weather;
   std::string weatherPointer;
   float alphaCutoff = 0.5f;
+  std::optional<AlphaMode> alphaMode;  // nullopt: mask when output.opacity is set, else opaque
+  bool doubleSided = false;
 };
 
 }  // namespace wg

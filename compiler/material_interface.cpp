@@ -34,6 +34,10 @@ std::pair<std::uint32_t, std::uint32_t> std140AlignAndSize(InterfaceType type) {
   return {4, 4};
 }
 constexpr std::uint32_t kStd140BlockAlignment = 16;
+
+bool usesOp(const IrGraph& graph, std::string_view op) {
+  return std::any_of(graph.nodes.begin(), graph.nodes.end(), [&](const IrNode& n) { return n.op->name == op; });
+}
 }  // namespace
 
 void layoutStd140(UniformBlock& block) {
@@ -46,6 +50,10 @@ void layoutStd140(UniformBlock& block) {
     offset += size;
   }
   block.size = (offset + kStd140BlockAlignment - 1) / kStd140BlockAlignment * kStd140BlockAlignment;
+}
+
+bool MaterialInterface::hasTexcoord1() const {
+  return std::any_of(vertexInputs.begin(), vertexInputs.end(), [](const StageVariable& v) { return v.name == "texcoord1"; });
 }
 
 MaterialInterface buildMaterialInterface(const IrGraph& graph) {
@@ -125,6 +133,14 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
     auto [name, type] = kVaryings[i];
     mi.varyings.push_back({std::string(name), "v_" + std::string(name), type, i});
     mi.globals.reserve(mi.varyings.back().identifier);
+  }
+  // The second texture coordinate set only when a node reads it, so other materials
+  // keep their vertex format.
+  if (usesOp(graph, "texcoord1")) {
+    mi.vertexInputs.push_back({"texcoord1", "in_texcoord1", InterfaceType::Vec2, static_cast<std::uint32_t>(kAttributes.size())});
+    mi.varyings.push_back({"texcoord1", "v_texcoord1", InterfaceType::Vec2, static_cast<std::uint32_t>(kVaryings.size())});
+    mi.globals.reserve("in_texcoord1");
+    mi.globals.reserve("v_texcoord1");
   }
   return mi;
 }

@@ -54,8 +54,9 @@ struct MaterialInterface {
   // Shared weather maps (set 0) that some op of this material samples; their
   // bindings are fixed so every material agrees.
   std::vector<TextureBinding> weatherMaps;
-  std::vector<StageVariable> vertexInputs;
+  std::vector<StageVariable> vertexInputs;  // "texcoord1" only when the graph reads it
   std::vector<StageVariable> varyings;
+  bool hasTexcoord1() const;
   IdentifierScope globals;  // every global name above; stages copy it for locals
 };
 

@@ -38,6 +38,18 @@ Json blockJson(const UniformBlock& block, const IrGraph* graph) {
           {"binding", block.binding}, {"size", block.size}, {"members", std::move(members)}};
 }
 
+// "wrap" and "filter" appear when both axes (directions) agree, as before per-axis
+// settings existed; "wrapU"/"wrapV", "minFilter"/"magFilter" and "colorSpace" always.
+void addSamplerJson(Json& texture, const SamplerState& s) {
+  if (s.wrapU == s.wrapV) texture["wrap"] = textureWrapName(s.wrapU);
+  if (s.minFilter == s.magFilter) texture["filter"] = textureFilterName(s.magFilter);
+  texture["wrapU"] = textureWrapName(s.wrapU);
+  texture["wrapV"] = textureWrapName(s.wrapV);
+  texture["minFilter"] = textureFilterName(s.minFilter);
+  texture["magFilter"] = textureFilterName(s.magFilter);
+  texture["colorSpace"] = colorSpaceName(s.colorSpace);
+}
+
 Json stageVariablesJson(const std::vector<StageVariable>& vars) {
   Json out = Json::array();
   for (const auto& v : vars)
@@ -71,10 +83,12 @@ std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& m
       source = {{"kind", "procedural"}, {"generator", t.generator}, {"seed", t.seed}, {"size", t.size},
                 {"options", Json::parse(t.options.dump())}};
     }
-    textures.push_back({{"name", b.name}, {"set", b.set}, {"binding", b.textureBinding},
-                        {"samplerBinding", b.samplerBinding}, {"textureIdentifier", b.textureIdentifier},
-                        {"samplerIdentifier", b.samplerIdentifier}, {"wrap", textureWrapName(t.wrap)},
-                        {"filter", textureFilterName(t.filter)}, {"source", std::move(source)}});
+    Json texture = {{"name", b.name}, {"set", b.set}, {"binding", b.textureBinding},
+                    {"samplerBinding", b.samplerBinding}, {"textureIdentifier", b.textureIdentifier},
+                    {"samplerIdentifier", b.samplerIdentifier}};
+    addSamplerJson(texture, t.sampler);
+    texture["source"] = std::move(source);
+    textures.push_back(std::move(texture));
   }
   Json weatherMaps = Json::array();
   for (const auto& m : mi.weatherMaps)
@@ -96,8 +110,10 @@ std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& m
       {"material", graph.name},
       {"contentHash", hash},
       {"weather", weatherJson(graph)},
-      {"alphaTested", graph.alphaTested},
+      {"alphaMode", alphaModeName(graph.alphaMode)},
+      {"alphaTested", graph.alphaTested()},
       {"alphaCutoff", graph.alphaCutoff},
+      {"doubleSided", graph.doubleSided},
       {"blocks", Json::array({blockJson(*mi.frame, nullptr), blockJson(mi.material, &graph)})},
       {"textures", std::move(textures)},
       {"vertexInputs", stageVariablesJson(mi.vertexInputs)},

@@ -26,8 +26,7 @@ TextureLoadResult loadTextureSampler(const std::vector<TextureDecl>& textures) {
     }
     if (!image) return {std::nullopt, decl.name, reason};
     sampler.images.push_back(std::move(*image));
-    sampler.wraps.push_back(decl.wrap);
-    sampler.filters.push_back(decl.filter);
+    sampler.states.push_back(decl.sampler);
   }
   return {std::move(sampler), {}, {}};
 }

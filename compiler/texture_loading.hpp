@@ -1,6 +1,6 @@
 // The images of a material's declared textures, made once for CPU evaluation:
 // procedural ones generated from their seed and options (the bytes the runtime
-// uploads), image files decoded from disk, each with its declared wrap and filter.
+// uploads), image files decoded from disk, each with its declared sampler settings.
 #pragma once
 #include <optional>
 #include <string>

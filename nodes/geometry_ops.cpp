@@ -16,6 +16,10 @@ void appendGeometryOps(std::vector<OpDef>& ops) {
                           [](const Value*, const EvalContext& c) {
                             return Value::vec2(c.surface->texcoord[0], c.surface->texcoord[1]);
                           }));
+  ops.push_back(surfaceOp("texcoord1", "mesh texture coordinate 1 (the second set)", ValueType::Vec2, "{@texcoord1}",
+                          [](const Value*, const EvalContext& c) {
+                            return Value::vec2(c.surface->texcoord1[0], c.surface->texcoord1[1]);
+                          }));
   ops.push_back(surfaceOp("world_position", "world-space position (metres)", ValueType::Vec3, "{@worldPosition}",
                           [](const Value*, const EvalContext& c) {
                             const auto& p = c.surface->worldPosition;

@@ -38,6 +38,7 @@ struct SurfacePoint {
   std::array<float, 3> worldNormal{0.f, 1.f, 0.f};
   std::array<float, 4> tangent{1.f, 0.f, 0.f, 1.f};
   std::array<float, 2> texcoord{0.f, 0.f};
+  std::array<float, 2> texcoord1{0.f, 0.f};  // the second set (glTF TEXCOORD_1)
   std::array<float, 4> vertexColor{1.f, 1.f, 1.f, 1.f};
   // What the GPU reads from the shared weather maps at this point.
   float skyExposure = 1.f;  // 1: open sky; 0: fully sheltered

@@ -14,9 +14,9 @@ inline constexpr int kImageChannels = 4;  // always RGBA
 // u in [0, 1/width), which is also the order Vulkan reads an uploaded image in.
 //
 // Texels are 8-bit so the GPU (uploaded as R8G8B8A8_UNORM) and the CPU evaluator decode
-// exactly the same values. They are treated as linear data, never as sRGB: no transfer
-// function is applied on load, on upload or when sampling, so colour images authored in
-// sRGB are used as-is (the graph can convert explicitly if it needs to).
+// exactly the same values. Bytes are kept as stored: no transfer function is applied on
+// load or upload. A texture declared "colorSpace": "srgb" is uploaded as R8G8B8A8_SRGB
+// and decoded when sampled (nodes/texture_sampling.hpp); any other is linear data.
 struct Image {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // width * height * kImageChannels bytes

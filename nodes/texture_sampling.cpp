@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "nodes/srgb_transfer.hpp"
+
 namespace wg {
 
 namespace {
@@ -37,6 +39,13 @@ Value transparentBlack() { return Value::vec4(0.f, 0.f, 0.f, 0.f); }
 
 float clamp01(float x) { return x < 0.f ? 0.f : (x > 1.f ? 1.f : x); }
 
+// Texel (i, j) as the sampler reads it: sRGB colour decoded, alpha as stored.
+std::array<float, 4> readTexel(const Image& image, int i, int j, ColorSpace space) {
+  if (space == ColorSpace::Linear) return image.texel(i, j);
+  const std::uint8_t* p = image.rgba.data() + image.texelOffset(i, j);
+  return {decodeSrgb8(p[0]), decodeSrgb8(p[1]), decodeSrgb8(p[2]), decodeUnorm8(p[3])};
+}
+
 }  // namespace
 
 std::optional<TextureWrap> parseTextureWrap(std::string_view name) {
@@ -49,6 +58,12 @@ std::optional<TextureWrap> parseTextureWrap(std::string_view name) {
 std::optional<TextureFilter> parseTextureFilter(std::string_view name) {
   if (name == "linear") return TextureFilter::Linear;
   if (name == "nearest") return TextureFilter::Nearest;
+  return std::nullopt;
+}
+
+std::optional<ColorSpace> parseColorSpace(std::string_view name) {
+  if (name == "linear") return ColorSpace::Linear;
+  if (name == "srgb") return ColorSpace::Srgb;
   return std::nullopt;
 }
 
@@ -69,7 +84,13 @@ std::string_view textureFilterName(TextureFilter filter) {
   return "linear";
 }
 
+std::string_view colorSpaceName(ColorSpace space) { return space == ColorSpace::Srgb ? "srgb" : "linear"; }
+
 Value sampleImage(const Image& image, float u, float v, TextureWrap wrap, TextureFilter filter) {
+  return sampleImage(image, u, v, SamplerState{wrap, wrap, filter, filter, ColorSpace::Linear});
+}
+
+Value sampleImage(const Image& image, float u, float v, const SamplerState& state) {
   if (!image.valid()) return transparentBlack();
   if (!std::isfinite(u)) u = 0.f;
   if (!std::isfinite(v)) v = 0.f;
@@ -77,22 +98,23 @@ Value sampleImage(const Image& image, float u, float v, TextureWrap wrap, Textur
   const float x = u * static_cast<float>(image.width);
   const float y = v * static_cast<float>(image.height);
 
-  if (filter == TextureFilter::Nearest) {
-    const int i = wrapTexel(std::floor(x), image.width, wrap);
-    const int j = wrapTexel(std::floor(y), image.height, wrap);
-    const auto t = image.texel(i, j);
+  if (state.magFilter == TextureFilter::Nearest) {
+    const int i = wrapTexel(std::floor(x), image.width, state.wrapU);
+    const int j = wrapTexel(std::floor(y), image.height, state.wrapV);
+    const auto t = readTexel(image, i, j, state.colorSpace);
     return Value::vec4(t[0], t[1], t[2], t[3]);
   }
 
   const float xs = x - kTexelCentre, ys = y - kTexelCentre;
   const float x0 = std::floor(xs), y0 = std::floor(ys);
   const float alpha = xs - x0, beta = ys - y0;  // weights of the second texel in x, y
-  const int i0 = wrapTexel(x0, image.width, wrap);
-  const int i1 = wrapTexel(static_cast<double>(x0) + 1, image.width, wrap);
-  const int j0 = wrapTexel(y0, image.height, wrap);
-  const int j1 = wrapTexel(static_cast<double>(y0) + 1, image.height, wrap);
-  const auto t00 = image.texel(i0, j0), t10 = image.texel(i1, j0);
-  const auto t01 = image.texel(i0, j1), t11 = image.texel(i1, j1);
+  const int i0 = wrapTexel(x0, image.width, state.wrapU);
+  const int i1 = wrapTexel(static_cast<double>(x0) + 1, image.width, state.wrapU);
+  const int j0 = wrapTexel(y0, image.height, state.wrapV);
+  const int j1 = wrapTexel(static_cast<double>(y0) + 1, image.height, state.wrapV);
+  const ColorSpace space = state.colorSpace;
+  const auto t00 = readTexel(image, i0, j0, space), t10 = readTexel(image, i1, j0, space);
+  const auto t01 = readTexel(image, i0, j1, space), t11 = readTexel(image, i1, j1, space);
   const float w00 = (1.f - alpha) * (1.f - beta), w10 = alpha * (1.f - beta);
   const float w01 = (1.f - alpha) * beta, w11 = alpha * beta;
   Value out = Value::vec4(0.f, 0.f, 0.f, 0.f);
@@ -106,9 +128,7 @@ Value sampleImage(const Image& image, float u, float v, TextureWrap wrap, Textur
 Value TextureSampler::sample(int index, float u, float v) const {
   if (index < 0 || static_cast<std::size_t>(index) >= images.size()) return transparentBlack();
   const auto i = static_cast<std::size_t>(index);
-  const TextureWrap wrap = i < wraps.size() ? wraps[i] : TextureWrap::Repeat;
-  const TextureFilter filter = i < filters.size() ? filters[i] : TextureFilter::Linear;
-  return sampleImage(images[i], u, v, wrap, filter);
+  return sampleImage(images[i], u, v, i < states.size() ? states[i] : SamplerState{});
 }
 
 }  // namespace wg

@@ -15,11 +15,25 @@ enum class TextureWrap { Repeat, Clamp, Mirror };
 // Vulkan's VK_FILTER_LINEAR / NEAREST (one mip level, no anisotropy).
 enum class TextureFilter { Linear, Nearest };
 
-// Graph spellings: "repeat", "clamp", "mirror"; "linear", "nearest".
+// How texels are stored: linear data, or sRGB-encoded colour that is decoded to linear
+// before filtering, as Vulkan's *_SRGB formats do. Alpha is always linear.
+enum class ColorSpace { Linear, Srgb };
+
+// Graph spellings: "repeat", "clamp", "mirror"; "linear", "nearest"; "linear", "srgb".
 std::optional<TextureWrap> parseTextureWrap(std::string_view name);
 std::optional<TextureFilter> parseTextureFilter(std::string_view name);
+std::optional<ColorSpace> parseColorSpace(std::string_view name);
 std::string_view textureWrapName(TextureWrap wrap);
 std::string_view textureFilterName(TextureFilter filter);
+std::string_view colorSpaceName(ColorSpace space);
+
+// A texture's sampler and format settings: wrap per axis, filter per direction.
+struct SamplerState {
+  TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
+  TextureFilter minFilter = TextureFilter::Linear, magFilter = TextureFilter::Linear;
+  ColorSpace colorSpace = ColorSpace::Linear;
+  friend bool operator==(const SamplerState&, const SamplerState&) = default;
+};
 
 // Samples `image` at normalized (u, v) following the Vulkan specification's texel
 // filtering rules for a single level: texel centres lie at ((i+0.5)/w, (j+0.5)/h);
@@ -30,14 +44,19 @@ std::string_view textureFilterName(TextureFilter filter);
 // (commonly 8 bits), so linear results may differ from the GPU's by up to about 1/256
 // of the difference between neighbouring texels; texel centres and nearest sampling
 // match exactly. An invalid (empty) image samples as transparent black.
+//
+// Each axis uses its own wrap mode. Sampling happens at LOD 0, where the texture is
+// magnified (the runtime's samplers have maxLod 0), so the filter is magFilter. sRGB
+// texels have their colour decoded (decodeSrgb8) before they are blended.
+Value sampleImage(const Image& image, float u, float v, const SamplerState& state);
+// Both axes wrapped alike, one filter, linear data.
 Value sampleImage(const Image& image, float u, float v, TextureWrap wrap, TextureFilter filter);
 
 // The textures a compiled graph declares, by index (the texture Value's v[0]), with
 // their sampler settings. Used by the CPU evaluator (EvalContext::textures).
 struct TextureSampler {
   std::vector<Image> images;
-  std::vector<TextureWrap> wraps;      // missing entries: Repeat
-  std::vector<TextureFilter> filters;  // missing entries: Linear
+  std::vector<SamplerState> states;  // missing entries: SamplerState{}
 
   // An index with no image samples as transparent black, like an unbound descriptor
   // with robustness features enabled.

@@ -69,8 +69,20 @@ defs = {}
 defs["link"] = {"description": "a link to a node output: \"nodeId.output\" (the id is everything before the last dot)",
                 "type": "string", "pattern": "^.+\\.[A-Za-z0-9_]+$"}
 defs["color3"] = vec(3, 0, 1)
-defs["wrap"] = {"description": "addressing outside [0, 1]", "enum": ["repeat", "clamp", "mirror"], "default": "repeat"}
-defs["filter"] = {"description": "texel filtering", "enum": ["linear", "nearest"], "default": "linear"}
+defs["wrapMode"] = {"enum": ["repeat", "clamp", "mirror"]}
+defs["wrap"] = {"description": "addressing outside [0, 1]: one mode for both axes, or [u, v]",
+                "anyOf": [{"$ref": "#/$defs/wrapMode"},
+                          {"type": "array", "items": {"$ref": "#/$defs/wrapMode"}, "minItems": 2, "maxItems": 2}],
+                "default": "repeat"}
+defs["filterMode"] = {"enum": ["linear", "nearest"]}
+defs["filter"] = {"description": "texel filtering: one filter for both directions, or {min, mag} (a direction left out is linear)",
+                  "anyOf": [{"$ref": "#/$defs/filterMode"},
+                            {"type": "object", "additionalProperties": False,
+                             "properties": {"min": {"$ref": "#/$defs/filterMode", "description": "minification"},
+                                            "mag": {"$ref": "#/$defs/filterMode", "description": "magnification"}}}],
+                  "default": "linear"}
+defs["colorSpace"] = {"description": "srgb: colour is sRGB-encoded and decoded to linear before filtering (alpha stays linear)",
+                      "enum": ["linear", "srgb"], "default": "linear"}
 defs["inputValue"] = {
     "description": "a link \"nodeId.output\", a texture name (op sample), swizzle channels (op swizzle), or a literal",
     "anyOf": [{"type": "string"}, {"type": "number"}, {"type": "boolean"},
@@ -113,7 +125,8 @@ defs["fileTexture"] = {
     "description": "an image file (PNG or JPEG, at most 8192x8192), relative to the graph file",
     "type": "object", "required": ["file"], "additionalProperties": False,
     "properties": {"file": {"type": "string"}, "wrap": {"$ref": "#/$defs/wrap"},
-                   "filter": {"$ref": "#/$defs/filter"}, "description": {"type": "string"}},
+                   "filter": {"$ref": "#/$defs/filter"}, "colorSpace": {"$ref": "#/$defs/colorSpace"},
+                   "description": {"type": "string"}},
 }
 common = {
     "generator": None,
@@ -121,7 +134,9 @@ common = {
              "description": "random seed (write a whole number without a decimal point)"},
     "size": {"enum": [16, 32, 64, 128, 256, 512, 1024, 2048], "default": 256,
              "description": "width and height in texels"},
-    "wrap": {"$ref": "#/$defs/wrap"}, "filter": {"$ref": "#/$defs/filter"}, "description": {"type": "string"},
+    "wrap": {"$ref": "#/$defs/wrap"}, "filter": {"$ref": "#/$defs/filter"},
+    "colorSpace": {"const": "linear", "description": "generators make linear values; srgb is for image files"},
+    "description": {"type": "string"},
 }
 branches = []
 for name, g in generators.items():
@@ -220,14 +235,20 @@ schema = {
                 "normal": outputField("vec3, fragment stage: tangent-space normal", "vec3", -1, 1, [0.0, 0.0, 1.0]),
                 "ambientOcclusion": outputField("float, fragment stage", "float", 0, 1, 1.0),
                 "emissive": outputField("vec3, fragment stage: emitted radiance (linear, unbounded)", "vec3", 0, None, [0.0, 0.0, 0.0]),
-                "opacity": outputField("float, fragment stage: setting it makes the material alpha-tested against alphaCutoff", "float", 0, 1, 1.0),
+                "opacity": outputField("float, fragment stage: alpha-tested against alphaCutoff (alphaMode mask, the default once set) or blended (alphaMode blend)", "float", 0, 1, 1.0),
                 "worldPositionOffset": outputField("vec3, VERTEX stage: world-space offset added to each vertex position (metres)", "vec3", None, None, [0.0, 0.0, 0.0]),
             },
         },
         "weather": {"description": "weather response (docs/weather-model.md): a preset name, or a preset with overrides",
                     "anyOf": [{"$ref": "#/$defs/weatherPreset"}, {"$ref": "#/$defs/weatherBlock"}]},
         "alphaCutoff": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.5,
-                        "description": "fragments with opacity below this are discarded (only when output.opacity is set)"},
+                        "description": "fragments with opacity below this are discarded (alphaMode mask only)"},
+        "alphaMode": {"enum": ["opaque", "mask", "blend"],
+                      "enumDescriptions": ["opacity is ignored", "alpha test against alphaCutoff",
+                                           "blended over what lies behind (straight alpha), drawn after opaque objects"],
+                      "description": "how opacity reaches the image; absent: mask when output.opacity is set, else opaque"},
+        "doubleSided": {"type": "boolean", "default": False,
+                        "description": "draw back faces too (their normal is flipped); default false culls them"},
     },
     "$defs": defs,
 }

@@ -191,7 +191,7 @@ class WeatherInjector {
     Operand sheltered = b_.add("multiply", {{"a", snow}, {"b", exposure_}});
     Operand density = b_.add("saturate", {{"in", b_.add("subtract", {{"a", k(1.f)}, {"b", b_.add("multiply", {{"a", sheltered}, {"b", k(cfg_.foliageThinning)}})}})}});
     g_.output(PbrField::Opacity) = b_.add("multiply", {{"a", g_.output(PbrField::Opacity)}, {"b", density}});
-    g_.alphaTested = true;
+    if (!g_.alphaModeDeclared) g_.alphaMode = AlphaMode::Mask;  // a declared mode (blend) stays
     g_.coverage(CoverageTerm::Density) = density;
   }
 

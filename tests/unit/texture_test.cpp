@@ -406,8 +406,10 @@ TEST(TextureSampling, HugeAndNonFiniteCoordinatesAreSafe) {
 TEST(TextureSampling, SamplerUsesEachTexturesSettings) {
   TextureSampler sampler;
   sampler.images = {twoByTwo(), twoByTwo()};
-  sampler.wraps = {TextureWrap::Clamp, TextureWrap::Repeat};
-  sampler.filters = {TextureFilter::Nearest};  // texture 1 falls back to linear
+  SamplerState clampNearest;
+  clampNearest.wrapU = clampNearest.wrapV = TextureWrap::Clamp;
+  clampNearest.minFilter = clampNearest.magFilter = TextureFilter::Nearest;
+  sampler.states = {clampNearest};  // texture 1 falls back to repeat, linear
   EXPECT_NEAR(sampler.sample(0, -0.1f, 0.1f).v[0], 0.f, kSampleTolerance);   // clamp, nearest
   EXPECT_NEAR(sampler.sample(1, -0.1f, 0.25f).v[0], 0.14f, kSampleTolerance);  // repeat, linear
   EXPECT_EQ(sampler.sample(2, 0.5f, 0.5f), Value::vec4(0, 0, 0, 0));
