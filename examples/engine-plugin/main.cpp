@@ -227,16 +227,24 @@ VkPipeline createPipeline(const Gpu& gpu, VkPipelineLayout layout, const weather
   viewport.viewportCount = 1;
   viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.cullMode = reflection.at("alphaTested") ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+  // Render state is the engine's choice; the reflection says what the material needs.
+  const bool twoSided = reflection.at("alphaTested").get<bool>() || reflection.at("doubleSided").get<bool>();
+  const bool blended = reflection.at("alphaMode") == "blend";  // straight alpha, no depth writes
+  raster.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.f;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
+  depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;
   depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
   VkPipelineColorBlendAttachmentState blendAttachment{};
+  blendAttachment.blendEnable = blended ? VK_TRUE : VK_FALSE;
+  blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
   blendAttachment.colorWriteMask = 0xF;
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = 1;
