@@ -17,6 +17,7 @@
 #include "compiler/variant_index.hpp"
 #include "compiler/batch_compile.hpp"
 #include "cli/depfile.hpp"
+#include "compiler/material_input_files.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
@@ -323,11 +324,8 @@ int runCompileCommand(int argc, char** argv) {
     }
     rule.inputs.push_back(outputs[g].graph);
     std::set<std::string> readFiles;  // graph libraries and image files, over every variant
-    for (const CompiledMaterial* m : outputs[g].variants) {
-      readFiles.insert(m->ir.includedFiles.begin(), m->ir.includedFiles.end());
-      for (const auto& t : m->ir.textures)
-        if (!t.file.empty()) readFiles.insert(t.resolvedPath);
-    }
+    for (const CompiledMaterial* m : outputs[g].variants)
+      for (auto& file : materialInputFiles(m->ir)) readFiles.insert(std::move(file));
     rule.inputs.insert(rule.inputs.end(), readFiles.begin(), readFiles.end());
     rules.push_back(std::move(rule));
     compiled += outputs[g].variants.size();

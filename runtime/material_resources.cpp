@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "nodes/image_file.hpp"
+#include "runtime/material_compile_error.hpp"
 #include "nodes/texture_generators.hpp"
 
 namespace wg {
@@ -65,13 +66,9 @@ std::vector<unsigned char> parameterBytes(const vk::ReflectedBlock& block) {
 }  // namespace
 
 MaterialResources::MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options)
-    : ctx_(ctx) {
+    : ctx_(ctx), graphPath_(graphPath) {
   CompileResult result = compileMaterialFile(graphPath, options);
-  if (!result.material) {
-    std::string message = "cannot compile " + graphPath + ":\n";
-    for (const auto& d : result.diagnostics.items()) message += formatDiagnosticText(d);
-    throw std::runtime_error(message);
-  }
+  if (!result.material) throw MaterialCompileError(graphPath, std::move(result.diagnostics.items()));
   compiled_ = std::move(*result.material);
   reflection_ = vk::parseReflection(compiled_.reflectionJson);
   if (!reflection_.material.members.empty()) {

@@ -14,7 +14,7 @@ namespace wg {
 
 class MaterialResources {
  public:
-  // Compiles graphPath (throws std::runtime_error with the diagnostics on failure).
+  // Compiles graphPath (throws MaterialCompileError with the diagnostics on failure).
   MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options);
   ~MaterialResources();
   MaterialResources(const MaterialResources&) = delete;
@@ -24,6 +24,7 @@ class MaterialResources {
   vk::MaterialPipeline& pipeline(ShaderLanguage backend, VkRenderPass colourPass, VkRenderPass depthPass);
   const vk::MaterialReflection& reflection() const { return reflection_; }
   const CompiledMaterial& compiled() const { return compiled_; }
+  const std::string& graphPath() const { return graphPath_; }
   const vk::Buffer* parameterBuffer() const { return parameters_.get(); }
 
   struct BoundTexture {
@@ -36,6 +37,7 @@ class MaterialResources {
 
  private:
   vk::Context& ctx_;
+  std::string graphPath_;
   CompiledMaterial compiled_;
   vk::MaterialReflection reflection_;
   std::unique_ptr<vk::Buffer> parameters_;

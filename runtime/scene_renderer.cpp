@@ -2,9 +2,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <cstring>
+#include <set>
 #include <stdexcept>
 
+#include "compiler/material_input_files.hpp"
 #include "runtime/frame_uniforms.hpp"
+#include "runtime/scene/graph_path.hpp"
 
 namespace wg {
 
@@ -157,13 +160,13 @@ void SceneRenderer::uploadTerrain() {
   terrainHeight_.upload(ctx_, scene_.terrainHeights.data(), scene_.terrainHeights.size() * sizeof(float));
 }
 
-MaterialResources& SceneRenderer::material(const std::string& stem, const std::optional<std::string>& preset) {
-  std::string key = stem + "|" + preset.value_or("");
+MaterialResources& SceneRenderer::material(const std::string& graph, const std::optional<std::string>& preset) {
+  std::string key = graph + "|" + preset.value_or("");
   auto& slot = materials_[key];
   if (!slot) {
     CompileOptions options;
     options.weatherPreset = preset;
-    slot = std::make_unique<MaterialResources>(ctx_, graphsDirectory_ + "/" + stem + ".json", options);
+    slot = std::make_unique<MaterialResources>(ctx_, scene::graphFilePath(graph, graphsDirectory_), options);
   }
   return *slot;
 }
@@ -189,6 +192,15 @@ std::size_t SceneRenderer::gpuMemoryBytes() const {
   for (const auto& o : objects_) n += o->vertices.size() + o->indices.size();
   for (const auto& [key, m] : materials_) n += m->textureBytes();
   return n;
+}
+
+std::vector<std::string> SceneRenderer::materialInputFiles() const {
+  std::set<std::string> files;
+  for (const auto& [key, m] : materials_) {
+    files.insert(m->graphPath());
+    for (auto& file : wg::materialInputFiles(m->compiled().ir)) files.insert(std::move(file));
+  }
+  return {files.begin(), files.end()};
 }
 
 namespace {

@@ -71,6 +71,10 @@ class SceneRenderer {
   glm::vec4 exposureRegion() const { return exposureRegion_; }
   glm::mat4 viewProjection(const std::string& camera, std::uint32_t width, std::uint32_t height) const;
   std::size_t gpuMemoryBytes() const;
+  // Every file the materials compiled so far were read from: each graph file, the
+  // libraries it includes and the images it loads (what `compile --depfile` lists).
+  // Sorted, each once; `render --watch` polls them.
+  std::vector<std::string> materialInputFiles() const;
   // The map materials sample as "snowDeformation" (docs/deformable-snow.md): RGBA32F,
   // sampled with repeat so world xz / extent lands on the toroidal texel. Null: a flat
   // 1x1 stand-in. The image must outlive the renders that use it.
@@ -82,7 +86,7 @@ class SceneRenderer {
  private:
   struct Object;
   struct MaterialSet;
-  MaterialResources& material(const std::string& stem, const std::optional<std::string>& preset);
+  MaterialResources& material(const std::string& graph, const std::optional<std::string>& preset);
   void createPasses();
   void buildExposureMap();
   void uploadTerrain();
@@ -92,7 +96,7 @@ class SceneRenderer {
   scene::Scene scene_;
   std::string graphsDirectory_;
   VkRenderPass colourPass_ = VK_NULL_HANDLE, depthPass_ = VK_NULL_HANDLE;
-  std::map<std::string, std::unique_ptr<MaterialResources>> materials_;  // by stem + preset
+  std::map<std::string, std::unique_ptr<MaterialResources>> materials_;  // by graph + preset
   std::vector<std::unique_ptr<Object>> objects_;
   vk::Image2D terrainHeight_, exposureMap_, shadowMap_, placeholderHeight_, placeholderShadow_, placeholderDeformation_;
   const vk::Image2D* snowDeformation_ = nullptr;
