@@ -31,7 +31,7 @@ Options:
                              names in order, e.g. '*Ground*=terrain,*Leaf*=foliage,*=rock';
                              a material no rule matches gets no weather
   --diagnostics text|json    diagnostic format on stderr (default: text)
-  -q, --quiet                no summary line
+  -q, --quiet                no summary line (on stdout)
 )";
 
 struct ImportOptions {
@@ -107,7 +107,7 @@ int writeImport(const gltf::Asset& asset, const gltf::ImportedModel& imported, c
     if (std::string e = out.stage(f.name, f.bytes); !e.empty()) return usageError(e, o.json);
   if (std::string e = out.publish(); !e.empty()) return usageError(e, o.json);
   if (!o.quiet)
-    std::fprintf(stderr, "import: %zu material graph(s) and %zu image(s) from %s into %s (index: %s)\n",
+    std::printf("import: %zu material graph(s) and %zu image(s) from %s into %s (index: %s)\n",
                  imported.materialGraphs.size() + (imported.defaultGraph.empty() ? 0 : 1), asset.model.images.size(),
                  quoteUserText(asset.file, 200).c_str(), quoteUserText(o.outputDir, 200).c_str(), imported.indexFile.c_str());
   return kExitOk;

@@ -32,6 +32,21 @@ std::string imageExtension(const unsigned char* bytes, int size) {
   return "";
 }
 
+// Width and height from the header alone. PNG's IHDR is read directly: stb refuses to
+// even report sizes it would not decode, and the limit's message should name the size.
+bool headerSize(const unsigned char* bytes, int size, const std::string& extension, int& width, int& height, int& components) {
+  if (extension != ".png") return stbi_info_from_memory(bytes, size, &width, &height, &components) != 0;
+  constexpr int kIhdrEnd = 24;
+  if (size < kIhdrEnd || std::memcmp(bytes + 12, "IHDR", 4) != 0) return false;
+  auto be32 = [&](int at) { return (std::uint32_t(bytes[at]) << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3]; };
+  constexpr std::uint32_t kLargest = 1u << 30;
+  if (be32(16) > kLargest || be32(20) > kLargest) return false;
+  width = static_cast<int>(be32(16));
+  height = static_cast<int>(be32(20));
+  components = 4;
+  return true;
+}
+
 // Keeps the encoded bytes; reads only the header (the graph loader decodes later, with
 // its own limits), so a header claiming 60000x60000 pixels allocates nothing.
 bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
@@ -44,7 +59,7 @@ bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std:
   out.extension = imageExtension(bytes, size);
   int components = 0;
   if (out.extension.empty()) ctx.imageErrors[slot] = "it is neither PNG nor JPEG";
-  else if (!stbi_info_from_memory(bytes, size, &out.width, &out.height, &components))
+  else if (!headerSize(bytes, size, out.extension, out.width, out.height, components))
     ctx.imageErrors[slot] = "its header cannot be read";
   else if (out.width > kMaxImageFileDimension || out.height > kMaxImageFileDimension)
     ctx.imageErrors[slot] = "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) +
