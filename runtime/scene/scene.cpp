@@ -12,6 +12,7 @@
 
 #include "nodes/lattice_noise.hpp"
 #include "nodes/weather_model.hpp"
+#include "runtime/scene/probe_visibility.hpp"
 #include "runtime/scene/shapes.hpp"
 
 namespace wg::scene {
@@ -67,11 +68,6 @@ constexpr float kRockSideMaxUp = 0.35f;
 constexpr float kRockSideMinAlignment = 0.75f;
 // Top probes are on faces within about 20 degrees of level.
 constexpr float kRockTopMinUp = 0.94f;
-
-// Probes: visible when no surface is hit this close (metres) before reaching them.
-constexpr float kProbeVisibilitySlack = 0.02f;
-// Square-viewport frustum test, a little inside the edge.
-constexpr float kFrustumMargin = 0.95f;
 
 float smoothStep(float e0, float e1, float x) {
   float t = std::clamp((x - e0) / (e1 - e0), 0.f, 1.f);
@@ -438,27 +434,12 @@ class SceneBuilder {
     for (const Mesh& m : world_) all.include(bounds(m));
     scene_.boundsMin = all.min;
     scene_.boundsMax = all.max;
-    for (Probe& p : scene_.probes)
-      for (const CameraPreset& c : scene_.cameras)
-        if (sees(c, p)) p.visibleFrom.push_back(c.name);
+    markProbeVisibility(scene_, world_);
     return std::move(scene_);
   }
 
  private:
-  bool sees(const CameraPreset& c, const Probe& p) const {
-    glm::vec3 toProbe = p.position - c.eye;
-    if (glm::dot(p.normal, -toProbe) <= 0.f) return false;  // seen from behind
-    glm::mat4 view = glm::lookAt(c.eye, c.target, kUp);
-    glm::vec3 v = glm::vec3(view * glm::vec4(p.position, 1.f));
-    float limit = std::tan(glm::radians(0.5f * c.fovYDegrees)) * kFrustumMargin;
-    if (v.z >= 0.f || std::abs(v.x) > -v.z * limit || std::abs(v.y) > -v.z * limit) return false;
-    float length = glm::length(toProbe);
-    float slack = kProbeVisibilitySlack / length;
-    for (const Mesh& m : world_) {
-      if (auto hit = raycast(m, c.eye, toProbe); hit && hit->distance < 1.f - slack) return false;
-    }
-    return true;
-  }
+  bool sees(const CameraPreset& c, const Probe& p) const { return cameraSees(c, p, world_); }
 
   Scene scene_;
   float terrainSize_ = 0.f;
@@ -731,6 +712,14 @@ const CameraPreset* Scene::camera(std::string_view cameraName) const {
   for (const auto& c : cameras)
     if (c.name == cameraName) return &c;
   return nullptr;
+}
+
+Bounds Scene::framedBounds() const {
+  if (subject) return *subject;
+  Bounds b;
+  b.include(boundsMin);
+  b.include(boundsMax);
+  return b;
 }
 
 std::vector<std::string_view> sceneNames() { return {"valley", "rocks", "river", "road"}; }

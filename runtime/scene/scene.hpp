@@ -15,8 +15,9 @@ namespace wg::scene {
 
 struct SceneObject {
   std::string name;
-  // Bundled graph file stem (graphs/<graph>.json): "rock", "terrain", "grass",
-  // "foliage", "river", "road" or "snowfield".
+  // A bundled graph's stem ("rock", "terrain", "grass", "foliage", "river", "road",
+  // "snowfield": graphs/<graph>.json), or, ending in ".json", a graph file's path
+  // (absolute or relative to the working directory). See graph_path.hpp.
   std::string graph;
   Mesh mesh;
   glm::mat4 model{1.f};
@@ -51,6 +52,9 @@ struct Scene {
   std::vector<CameraPreset> cameras;
   glm::vec3 towardsSun{0.f, 1.f, 0.f};  // unit
   glm::vec3 boundsMin{0.f}, boundsMax{0.f};  // of every object, world space
+  // What cameras frame and orbit round: the objects a stage stands around (see
+  // stage.hpp). Unset (the bundled scenes): the whole bounds.
+  std::optional<Bounds> subject;
   // World xz -> height-map uv as frame_terrainRegion: (xz - region.xy) * region.zw.
   // Texel centres sit exactly on the terrain mesh's vertices.
   glm::vec4 terrainRegion{0.f};
@@ -64,6 +68,7 @@ struct Scene {
 
   const SceneObject* find(std::string_view objectName) const;
   const CameraPreset* camera(std::string_view cameraName) const;
+  Bounds framedBounds() const;  // `subject`, else the bounds
 };
 
 // "valley", "rocks", "river", "road".

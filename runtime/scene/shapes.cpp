@@ -62,6 +62,105 @@ Mesh box(glm::vec3 min, glm::vec3 max) {
   return m;
 }
 
+// ------------------------------------------------------------------ sphere
+
+Mesh sphere(float radius, int cells) {
+  Mesh m;
+  const int n = std::max(cells, 1);
+  constexpr float kQuarterPi = 0.25f * kPi;
+  for (const FaceFrame& f : kAxisFrames) {
+    auto base = static_cast<std::uint32_t>(m.positions.size());
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i) {
+        // Equal angles across the face, so cells are nearly equal on the sphere.
+        float a = kQuarterPi * (2.f * i / n - 1.f), b = kQuarterPi * (2.f * j / n - 1.f);
+        glm::vec3 d = glm::normalize(f.n + std::tan(a) * f.u + std::tan(b) * f.v);
+        addVertex(m, d * radius, d, glm::vec2(a, b) * radius);
+      }
+    }
+    auto idx = [&](int i, int j) { return base + static_cast<std::uint32_t>(j * (n + 1) + i); };
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        glm::vec3 centre = m.positions[idx(i, j)] + m.positions[idx(i + 1, j + 1)];
+        addQuadFacing(m, idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1), centre);
+      }
+  }
+  computeTangents(m);
+  return m;
+}
+
+// ------------------------------------------------------------- rounded box
+
+namespace {
+// Coordinates across one face, from -half to half: the bevel sampled at equal angles at
+// both ends, the flat middle as one span.
+std::vector<float> roundedFaceCoordinates(float half, float radius, int steps) {
+  std::vector<float> at;
+  for (int k = 0; k <= steps; ++k) at.push_back(-half + radius * (1.f - std::cos(0.5f * kPi * k / steps)));
+  for (int k = steps; k >= 0; --k) at.push_back(half - radius * (1.f - std::cos(0.5f * kPi * k / steps)));
+  return at;
+}
+}  // namespace
+
+Mesh roundedBox(glm::vec3 min, glm::vec3 max, float radius, int bevelSteps) {
+  Mesh m;
+  const glm::vec3 centre = 0.5f * (min + max), half = 0.5f * (max - min);
+  const float r = std::clamp(radius, 0.f, std::min({half.x, half.y, half.z}));
+  const int steps = std::max(bevelSteps, 1);
+  for (const FaceFrame& f : kAxisFrames) {
+    float halfU = glm::dot(glm::abs(f.u), half), halfV = glm::dot(glm::abs(f.v), half);
+    auto us = roundedFaceCoordinates(halfU, r, steps), vs = roundedFaceCoordinates(halfV, r, steps);
+    auto base = static_cast<std::uint32_t>(m.positions.size());
+    for (float v : vs) {
+      for (float u : us) {
+        // A point on the sharp box's face, pulled onto the rounded surface round the
+        // inner box (the box shrunk by r), whose nearest point it is.
+        glm::vec3 q = f.n * glm::dot(glm::abs(f.n), half) + f.u * u + f.v * v;
+        glm::vec3 inner = glm::clamp(q, -(half - r), half - r);
+        glm::vec3 n = glm::length(q - inner) > 0.f ? glm::normalize(q - inner) : f.n;
+        addVertex(m, centre + inner + n * r, n, {u, v});
+      }
+    }
+    const auto columns = static_cast<std::uint32_t>(us.size());
+    for (std::uint32_t j = 0; j + 1 < vs.size(); ++j)
+      for (std::uint32_t i = 0; i + 1 < columns; ++i) {
+        std::uint32_t a = base + j * columns + i;
+        if (glm::distance(m.positions[a], m.positions[a + 1]) == 0.f ||
+            glm::distance(m.positions[a], m.positions[a + columns]) == 0.f)
+          continue;  // the zero-width middle span of a face no wider than its bevels
+        addQuadFacing(m, a, a + 1, a + 1 + columns, a + columns, f.n);
+      }
+  }
+  computeTangents(m);
+  return m;
+}
+
+// -------------------------------------------------------------------- ramp
+
+namespace {
+// A flat polygon (3 or 4 corners in order) facing `normal`, uv in metres on its plane.
+void addFlatFace(Mesh& m, const std::vector<glm::vec3>& corners, glm::vec3 normal) {
+  glm::vec3 u = std::abs(normal.y) > 0.9f ? glm::vec3(1.f, 0.f, 0.f) : glm::normalize(glm::cross(kUp, normal));
+  glm::vec3 v = glm::cross(normal, u);
+  std::vector<std::uint32_t> q;
+  for (glm::vec3 p : corners) q.push_back(addVertex(m, p, normal, {glm::dot(p, u), glm::dot(p, v)}));
+  if (q.size() == 3) addTriangleFacing(m, q[0], q[1], q[2], normal);
+  else addQuadFacing(m, q[0], q[1], q[2], q[3], normal);
+}
+}  // namespace
+
+Mesh ramp(glm::vec3 size) {
+  Mesh m;
+  const float x = 0.5f * size.x, z = 0.5f * size.z, h = size.y;
+  addFlatFace(m, {{-x, 0.f, -z}, {x, 0.f, -z}, {x, 0.f, z}, {-x, 0.f, z}}, -kUp);
+  addFlatFace(m, {{-x, 0.f, -z}, {x, 0.f, -z}, {x, h, -z}, {-x, h, -z}}, {0.f, 0.f, -1.f});
+  addFlatFace(m, {{-x, 0.f, z}, {x, 0.f, z}, {x, h, -z}, {-x, h, -z}}, glm::normalize(glm::vec3(0.f, size.z, h)));
+  for (float side : {-1.f, 1.f})
+    addFlatFace(m, {{side * x, 0.f, z}, {side * x, 0.f, -z}, {side * x, h, -z}}, {side, 0.f, 0.f});
+  computeTangents(m);
+  return m;
+}
+
 // ---------------------------------------------------------------- height field
 
 Mesh heightFieldTerrain(float size, int resolution, const HeightFn& heightFn, float uvTiling) {

@@ -18,6 +18,25 @@ using HeightFn = std::function<float(float x, float z)>;
 // plane coordinates in metres (so materials tile at their own scale).
 Mesh box(glm::vec3 min, glm::vec3 max);
 
+// A sphere centred on the origin, made of a cube's six faces pushed out onto it (each
+// face a `cells` x `cells` grid at equal angles), so no pole pinches the tangents. Each
+// face is its own uv chart in metres along the surface; charts share positions and
+// normals along their seams.
+Mesh sphere(float radius, int cells = 16);
+
+// A closed box from min to max whose edges and corners are rounded with `radius`
+// (quarter circles of `bevelSteps` segments). Normals are smooth across the bevels, so
+// a displacement along the normal (eq. 3.10's snow) stretches the edges instead of
+// tearing the faces apart as it does on box(). Each face is its own uv chart, in metres
+// on its plane.
+Mesh roundedBox(glm::vec3 min, glm::vec3 max, float radius, int bevelSteps = 4);
+
+// A wedge standing on its base: size.x wide (x), size.z deep (z), size.y tall at its
+// back (the -z face, vertical); the slope rises from the front edge (z = +size.z / 2,
+// y = 0) to the back's top edge. The base is centred on the origin. Flat faces, uv in
+// metres in each face's plane.
+Mesh ramp(glm::vec3 size);
+
 // Square height field centred on the world origin: `resolution` x `resolution` cells of
 // size / resolution metres, (resolution + 1)^2 vertices at y = heightFn(x, z), normals
 // from central differences of the samples, uv = world xz / uvTiling.

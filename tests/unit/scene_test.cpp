@@ -265,6 +265,52 @@ TEST(SceneShapes, BoxesAndShelterAreClosedWithOutwardNormals) {
   }
 }
 
+TEST(SceneShapes, SphereLiesOnItsRadiusWithRadialNormals) {
+  constexpr float kRadius = 1.5f;
+  Mesh m = sphere(kRadius, 8);
+  expectWellFormed(m, "sphere");
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    ASSERT_NEAR(glm::length(m.positions[i]), kRadius, 1e-4f);
+    ASSERT_LT(glm::distance(m.normals[i], m.positions[i] / kRadius), 1e-4f);
+  }
+  // Flat facets cut a little off the true sphere.
+  double volume = 4.0 / 3.0 * 3.14159265 * kRadius * kRadius * kRadius;
+  EXPECT_GT(signedVolume(m), 0.97 * volume);
+  EXPECT_LT(signedVolume(m), volume);
+}
+
+TEST(SceneShapes, RoundedBoxIsClosedWithinItsCornersAndSmoothAcrossEdges) {
+  glm::vec3 lo{-1.f, 0.f, -0.5f}, hi{1.f, 0.2f, 0.5f};
+  constexpr float kBevel = 0.08f;
+  Mesh m = roundedBox(lo, hi, kBevel);
+  expectWellFormed(m, "rounded box");
+  EXPECT_TRUE(closedAndConsistent(m));
+  Bounds b = bounds(m);
+  EXPECT_LT(glm::distance(b.min, lo), 1e-5f);
+  EXPECT_LT(glm::distance(b.max, hi), 1e-5f);
+  double full = 2.0 * 0.2 * 1.0;
+  EXPECT_LT(signedVolume(m), full);
+  EXPECT_GT(signedVolume(m), 0.9 * full);
+  // Vertices at one position share one normal: a displacement along it cannot tear.
+  std::map<std::tuple<float, float, float>, glm::vec3> normalAt;
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    auto [it, inserted] = normalAt.try_emplace({m.positions[i].x, m.positions[i].y, m.positions[i].z}, m.normals[i]);
+    ASSERT_LT(glm::distance(it->second, m.normals[i]), 1e-5f) << "vertex " << i;
+  }
+}
+
+TEST(SceneShapes, RampRisesAtItsAngleFromTheFrontEdge) {
+  Mesh m = ramp({2.f, 1.f, 1.f});
+  expectWellFormed(m, "ramp");
+  EXPECT_TRUE(closedAndConsistent(m));
+  EXPECT_NEAR(signedVolume(m), 2.0 * 1.0 * 1.0 / 2.0, 1e-4);
+  auto top = topSurfaceAt(m, 0.f, 0.f);  // halfway up the slope
+  ASSERT_TRUE(top);
+  EXPECT_NEAR(top->position.y, 0.5f, 1e-5f);
+  EXPECT_NEAR(tiltDegrees(top->normal), 45.f, 1e-3f);
+  EXPECT_GT(top->normal.z, 0.f);  // the slope faces +z
+}
+
 TEST(SceneShapes, RocksAreClosedSeededAndDeterministic) {
   Mesh a = rock(7, 2.f, 3), again = rock(7, 2.f, 3), other = rock(8, 2.f, 3);
   expectWellFormed(a, "rock");
