@@ -1,0 +1,32 @@
+// The options of `weathergen render`, as parsed from the command line.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/scene/orbit_camera.hpp"
+#include "runtime/scene_renderer.hpp"
+
+namespace wg {
+
+struct RenderOptions {
+  // Where the scene comes from: exactly one of these (render_scene_source.hpp).
+  std::string sceneName;     // --scene: a bundled scene
+  std::string materialPath;  // --material: a graph file on the preview stand
+  std::string camera;        // --camera: a preset name, or orbit:... (then `orbit` is set)
+  std::optional<scene::Orbit> orbit;
+  std::string output, timelinePath, framesDir, aov = "lit", device, graphsDir;
+  std::optional<std::string> weatherPreset;
+  std::vector<std::string> weatherLists;
+  RenderRequest request;  // size, backend, shadows
+  double step = 300.0;    // --timeline's simulation step, seconds
+  bool validation = false, quiet = false;
+  bool watch = false;
+  std::optional<unsigned> watchRenders;  // --watch-renders: stop after this many
+};
+
+// Parses argv from `first`. Returns an exit code when the command is done (--help, or a
+// usage error already printed), nullopt to go on.
+std::optional<int> parseRenderOptions(int argc, char** argv, int first, RenderOptions& options);
+
+}  // namespace wg

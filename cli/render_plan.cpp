@@ -1,0 +1,92 @@
+#include "cli/render_plan.hpp"
+
+#include <unistd.h>
+
+#include <fstream>
+#include <set>
+
+#include "compiler/debug_views.hpp"
+#include "compiler/literal.hpp"
+
+namespace wg {
+
+namespace {
+
+WeatherState weatherFromFrame(const FrameState& f) {
+  WeatherState s;
+  s.conditions.temperature = f.temperature;
+  s.conditions.precipitation = f.precipitation;
+  s.conditions.windDirection = f.windDirection;
+  s.conditions.windIntensity = f.windIntensity;
+  s.conditions.sunDirection = f.sunDirection;
+  s.conditions.sunIntensity = f.sunIntensity;
+  s.time = f.time;
+  s.levels.snow = f.snowLevel;
+  s.levels.wetness = f.wetnessLevel;
+  s.levels.moss = f.mossLevel;
+  s.levels.frost = f.frostLevel;
+  s.levels.puddles = f.puddleLevel;
+  return s;
+}
+
+// A preset by name, or the framed orbit; "" or a usage message.
+std::string applyCamera(const RenderOptions& o, const scene::Scene& scene, RenderRequest& request) {
+  if (o.orbit) {
+    request.cameraPose = scene::orbitCamera(scene, *o.orbit, float(request.width) / float(request.height));
+    return "";
+  }
+  request.camera = o.camera;
+  if (o.camera.empty() || scene.camera(o.camera)) return "";
+  std::string names;
+  for (const auto& c : scene.cameras) names += (names.empty() ? "" : ", ") + c.name;
+  return "scene '" + scene.name + "' has no camera '" + quoteUserText(o.camera) + "' (cameras: " + names +
+         ", or orbit:AZIMUTH,ELEVATION[,DISTANCE])";
+}
+
+std::string readTimeline(const std::string& path, std::optional<WeatherTimeline>& timeline) {
+  if (path.empty()) return "";
+  std::ifstream in(path);
+  if (!in) return "cannot read timeline '" + quoteUserText(path) + "'";
+  auto json = nlohmann::json::parse(in, nullptr, false);
+  std::string error = json.is_discarded() ? "malformed JSON" : "";
+  if (error.empty()) timeline = parseWeatherTimeline(json, error);
+  if (!timeline) return "timeline " + quoteUserText(path) + ": " + error;
+  return "";
+}
+
+}  // namespace
+
+std::string applyAovAndWeather(const std::string& aov, const std::vector<std::string>& weatherLists, EvalInputs inputs,
+                               RenderRequest& request) {
+  bool foundAov = false;
+  for (const auto& view : kDebugViews)
+    if (view.name == aov) {
+      request.debugView = view.id;
+      foundAov = true;
+    }
+  if (!foundAov) return "unknown --aov '" + quoteUserText(aov) + "'";
+  std::set<std::string> seen;
+  for (const auto& list : weatherLists)
+    if (std::string e = applyEvalInputList(list, EvalInputGroup::Weather, inputs, seen); !e.empty()) return e;
+  if (std::string e = finishEvalInputs(inputs); !e.empty()) return e;
+  request.weather = weatherFromFrame(inputs.frame);
+  return "";
+}
+
+std::string makeRenderPlan(const RenderOptions& o, const scene::Scene& scene, RenderPlan& plan) {
+  plan.request = o.request;
+  plan.request.weatherPreset = o.weatherPreset;
+  plan.step = o.step;
+  plan.output = o.output;
+  plan.framesDir = o.framesDir;
+  plan.aov = o.aov;
+  plan.progress = !o.quiet && ::isatty(STDERR_FILENO);
+  if (std::string e = applyCamera(o, scene, plan.request); !e.empty()) return e;
+  // The weather: eval's names and checks; the sun comes from the scene unless given.
+  EvalInputs inputs = defaultEvalInputs();
+  inputs.frame.sunDirection = {scene.towardsSun.x, scene.towardsSun.y, scene.towardsSun.z};
+  if (std::string e = applyAovAndWeather(o.aov, o.weatherLists, inputs, plan.request); !e.empty()) return e;
+  return readTimeline(o.timelinePath, plan.timeline);
+}
+
+}  // namespace wg

@@ -1,0 +1,31 @@
+// What one `render` of a scene draws: the request (camera, weather, size, AOV), the
+// timeline if any, and where the pictures go. Made from the options for each scene,
+// since the default sun and a framed orbit camera come from the scene.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/eval_inputs.hpp"
+#include "cli/render_options.hpp"
+#include "runtime/weather/weather_timeline.hpp"
+
+namespace wg {
+
+struct RenderPlan {
+  RenderRequest request;
+  std::optional<WeatherTimeline> timeline;
+  double step = 300.0;
+  std::string output, framesDir, aov;
+  bool progress = false;  // lines on stderr
+};
+
+// "" or a usage message (unknown camera, bad weather, unreadable timeline).
+std::string makeRenderPlan(const RenderOptions& options, const scene::Scene& scene, RenderPlan& plan);
+
+// Sets the request's debug view from --aov and its weather from the --weather lists
+// over `inputs` (eval's names and checks). Returns a usage error, or "".
+std::string applyAovAndWeather(const std::string& aov, const std::vector<std::string>& weatherLists, EvalInputs inputs,
+                               RenderRequest& request);
+
+}  // namespace wg

@@ -1,0 +1,22 @@
+// One render of a scene into the output files: a PNG, or for a timeline a labelled
+// contact sheet, OUT.strip.png and optionally each frame. Every file is written
+// atomically, so a failed render keeps the last good pictures.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cli/render_plan.hpp"
+#include "runtime/vulkan/vulkan_context.hpp"
+
+namespace wg {
+
+struct RenderedFiles {
+  int exitCode = 0;                        // ExitCode; errors are printed on stderr
+  std::vector<std::string> materialInputs;  // SceneRenderer::materialInputFiles, on success
+};
+
+// A graph that does not compile prints the compiler's diagnostics and gives
+// kExitBadInput; validation messages and other failures give kExitInternal.
+RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPlan& plan, const std::string& graphsDir);
+
+}  // namespace wg

@@ -1,0 +1,67 @@
+#include "cli/render_watch.hpp"
+
+#include <cstdio>
+#include <ctime>
+#include <thread>
+
+#include "cli/commands.hpp"
+#include "cli/file_stamps.hpp"
+#include "cli/stop_signal.hpp"
+
+namespace wg {
+
+namespace {
+
+std::string clockTime() {
+  std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char text[16];
+  std::strftime(text, sizeof text, "%H:%M:%S", &local);
+  return text;
+}
+
+void printRenderLine(const WatchedRender& result, double milliseconds, const std::string& output) {
+  if (result.exitCode == kExitOk)
+    std::printf("%s  rendered %s in %.0f ms\n", clockTime().c_str(), output.c_str(), milliseconds);
+  else
+    std::printf("%s  failed after %.0f ms; kept the last good %s\n", clockTime().c_str(), milliseconds, output.c_str());
+  std::fflush(stdout);
+}
+
+// Sleeps until a watched file changes or a stop is asked for; false on a stop.
+bool waitForChange(const FileStamps& stamps, const StopSignal& stop, std::chrono::milliseconds interval) {
+  constexpr auto kSlice = std::chrono::milliseconds(50);  // how soon a signal is noticed
+  while (!stop.raised()) {
+    for (auto slept = std::chrono::milliseconds(0); slept < interval && !stop.raised(); slept += kSlice)
+      std::this_thread::sleep_for(kSlice);
+    if (!stop.raised() && !stamps.firstChanged().empty()) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+int watchAndRender(const std::function<WatchedRender()>& render, const WatchSettings& settings) {
+  StopSignal stop;
+  std::vector<std::string> watched = settings.initialFiles;
+  bool announced = !settings.announce;
+  for (unsigned renders = 1;; ++renders) {
+    FileStamps stamps(watched);  // before the render: an edit during it counts
+    auto start = std::chrono::steady_clock::now();
+    WatchedRender result = render();
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    printRenderLine(result, ms, settings.output);
+    if (result.exitCode != kExitOk && result.exitCode != kExitBadInput) return result.exitCode;
+    if (result.exitCode == kExitOk && !result.inputFiles.empty()) {
+      watched = result.inputFiles;
+      stamps = FileStamps(watched, stamps);
+      if (!announced) std::fprintf(stderr, "watch: %zu files; Ctrl-C stops\n", watched.size());
+      announced = true;
+    }
+    if (settings.maxRenders && renders >= *settings.maxRenders) return result.exitCode;
+    if (!waitForChange(stamps, stop, settings.pollInterval)) return kExitOk;
+  }
+}
+
+}  // namespace wg
