@@ -7,22 +7,12 @@
 #include "nodes/image_file.hpp"
 #include "runtime/material_compile_error.hpp"
 #include "nodes/texture_generators.hpp"
+#include "runtime/vulkan/texture_sampler.hpp"
 
 namespace wg {
 
 VkSampler createSampler(vk::Context& ctx, std::string_view wrap, std::string_view filter) {
-  VkSamplerAddressMode mode = wrap == "clamp"    ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE
-                              : wrap == "mirror" ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
-                                                 : VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  VkFilter f = filter == "nearest" ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = info.minFilter = f;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = info.addressModeV = info.addressModeW = mode;
-  info.maxLod = 0.f;  // one level: the CPU evaluator samples level 0 too
-  VkSampler sampler;
-  vk::check(vkCreateSampler(ctx.device(), &info, nullptr, &sampler), "vkCreateSampler");
-  return sampler;
+  return vk::createSampler(ctx, wrap, wrap, filter, filter);
 }
 
 namespace {
@@ -79,9 +69,9 @@ MaterialResources::MaterialResources(vk::Context& ctx, const std::string& graphP
   for (const auto& t : reflection_.textures) {
     Image pixels = textureImage(t, graphPath);
     vk::Image2D image(ctx, static_cast<std::uint32_t>(pixels.width), static_cast<std::uint32_t>(pixels.height),
-                      VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+                      vk::textureFormat(t), VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     image.upload(ctx, pixels.rgba.data(), pixels.rgba.size());
-    textures_.push_back({&t, std::move(image), createSampler(ctx, t.wrap, t.filter)});
+    textures_.push_back({&t, std::move(image), vk::createSampler(ctx, t)});
   }
 }
 

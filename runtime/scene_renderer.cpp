@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "compiler/material_input_files.hpp"
+#include "runtime/draw_order.hpp"
 #include "runtime/frame_uniforms.hpp"
 #include "runtime/scene/graph_path.hpp"
 
@@ -216,6 +217,10 @@ std::vector<float> packVertices(const scene::Mesh& mesh, const vk::VertexLayout&
       else if (name == "tangent")
         out.insert(out.end(), {mesh.tangents[i].x, mesh.tangents[i].y, mesh.tangents[i].z, mesh.tangents[i].w});
       else if (name == "texcoord") out.insert(out.end(), {mesh.texcoords[i].x, mesh.texcoords[i].y});
+      else if (name == "texcoord1") {
+        const glm::vec2 uv = mesh.texcoords1.empty() ? mesh.texcoords[i] : mesh.texcoords1[i];  // set 0 stands in
+        out.insert(out.end(), {uv.x, uv.y});
+      }
       else if (name == "color")
         out.insert(out.end(), {mesh.colors[i].r, mesh.colors[i].g, mesh.colors[i].b, mesh.colors[i].a});
       else throw std::runtime_error("reflection names an unknown vertex input '" + name + "'");
@@ -384,11 +389,14 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   VkDeviceSize slice = (frameBlock.size + alignment - 1) / alignment * alignment;
   vk::Buffer frameBuffer(ctx_, slice * passes.size() * objects_.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   const auto& w = request.weather;
+  auto modelOf = [&](std::size_t i) {
+    auto moved = request.objectModels.find(objects_[i]->source->name);
+    return moved != request.objectModels.end() ? moved->second : objects_[i]->source->model;
+  };
   for (std::size_t p = 0; p < passes.size(); ++p)
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       FrameUniforms f(frameBlock);
-      auto moved = request.objectModels.find(objects_[i]->source->name);
-      glm::mat4 model = moved != request.objectModels.end() ? moved->second : objects_[i]->source->model;
+      glm::mat4 model = modelOf(i);
       f.set("model", model);
       f.set("viewProjection", passes[p].viewProjection);
       f.set("normalMatrix", glm::transpose(glm::inverse(model)));
@@ -450,6 +458,15 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
     }
   vkUpdateDescriptorSets(ctx_.device(), static_cast<std::uint32_t>(writer.writes.size()), writer.writes.data(), 0, nullptr);
 
+  // Blended objects after the others, farthest first; AOVs draw them opaque.
+  std::vector<DrawCandidate> candidates;
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    bool blended = mats[i]->reflection().blended();
+    candidates.push_back({blended, blended ? worldCentre(objects_[i]->source->mesh, modelOf(i)) : glm::vec3(0.f)});
+  }
+  const std::vector<std::size_t> drawOrder = colourDrawOrder(candidates, camera->eye);
+  const bool aov = request.debugView != 0;
+
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
     vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
     for (std::size_t p = 0; p < passes.size(); ++p) {
@@ -471,11 +488,11 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
       if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
       vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
       setViewport(cmd, w, h);
-      for (std::size_t i = 0; i < objects_.size(); ++i) {
+      for (std::size_t i : drawOrder) {
         if (!colourPass && !objects_[i]->source->castsShadow) continue;
         if (colourPass && !request.onlyObject.empty() && objects_[i]->source->name != request.onlyObject) continue;
         auto& pipeline = mats[i]->pipeline(request.backend, colourPass_, depthPass_);
-        drawIndexed(cmd, pipeline, colourPass ? pipeline.colourPipeline() : pipeline.depthPipeline(), sets[p * objects_.size() + i],
+        drawIndexed(cmd, pipeline, colourPass ? pipeline.colourPipeline(aov) : pipeline.depthPipeline(), sets[p * objects_.size() + i],
                     static_cast<std::uint32_t>(slice * (p * objects_.size() + i)), objects_[i]->vertices.handle(),
                     objects_[i]->indices.handle(), objects_[i]->indexCount);
       }

@@ -117,6 +117,10 @@ void append(Mesh& dst, const Mesh& src, const glm::mat4& transform) {
   const glm::mat3 linear(transform);
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
   const bool mirrored = glm::determinant(linear) < 0.f;
+  // A second texture coordinate set stays parallel to the positions once either mesh
+  // has one; where a mesh has none, its set 0 stands in (as packVertices does).
+  const bool secondSet = !src.texcoords1.empty() || !dst.texcoords1.empty();
+  if (secondSet && dst.texcoords1.empty()) dst.texcoords1 = dst.texcoords;
   for (std::size_t i = 0; i < src.positions.size(); ++i) {
     dst.positions.push_back(glm::vec3(transform * glm::vec4(src.positions[i], 1.f)));
     glm::vec3 n = glm::normalize(normalMatrix * src.normals[i]);
@@ -124,6 +128,7 @@ void append(Mesh& dst, const Mesh& src, const glm::mat4& transform) {
     glm::vec4 t = i < src.tangents.size() ? src.tangents[i] : glm::vec4(1.f, 0.f, 0.f, 1.f);
     dst.tangents.push_back(glm::vec4(orthogonalise(linear * glm::vec3(t), n), mirrored ? -t.w : t.w));
     dst.texcoords.push_back(i < src.texcoords.size() ? src.texcoords[i] : glm::vec2(0.f));
+    if (secondSet) dst.texcoords1.push_back(i < src.texcoords1.size() ? src.texcoords1[i] : dst.texcoords.back());
     dst.colors.push_back(i < src.colors.size() ? src.colors[i] : glm::vec4(1.f));
   }
   for (std::size_t t = 0; t + 2 < src.indices.size(); t += 3) {

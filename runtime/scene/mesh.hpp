@@ -18,6 +18,7 @@ struct Mesh {
   // is cross(normal, tangent.xyz) * w, the convention of wg_tangent_to_world.
   std::vector<glm::vec4> tangents;
   std::vector<glm::vec2> texcoords;
+  std::vector<glm::vec2> texcoords1;  // a second set (glTF TEXCOORD_1); empty: texcoord 0 stands in
   std::vector<glm::vec4> colors;
   std::vector<std::uint32_t> indices;  // triangle list
 };

@@ -14,6 +14,20 @@ VkFormat vertexFormat(std::string_view type) {
   throw std::runtime_error("reflection: vertex input type '" + std::string(type) + "' has no vertex format");
 }
 
+// Straight (not premultiplied) alpha, "over": colour = src * a + dst * (1 - a), and
+// the stored alpha accumulates coverage the same way.
+VkPipelineColorBlendAttachmentState straightAlphaBlend() {
+  VkPipelineColorBlendAttachmentState b{};
+  b.blendEnable = VK_TRUE;
+  b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  b.colorBlendOp = VK_BLEND_OP_ADD;
+  b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  b.alphaBlendOp = VK_BLEND_OP_ADD;
+  return b;
+}
+
 constexpr VkShaderStageFlags kAllStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
 void addTextureBindings(std::vector<VkDescriptorSetLayoutBinding>& bindings, const std::vector<ReflectedTexture>& list) {
@@ -62,14 +76,16 @@ MaterialPipeline::MaterialPipeline(Context& ctx, const MaterialReflection& refle
   layoutInfo.setLayoutCount = 2;
   layoutInfo.pSetLayouts = setLayouts_;
   check(vkCreatePipelineLayout(ctx.device(), &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
-  colour_ = build(colourPass, false);
-  depth_ = build(depthPass, true);
+  colour_ = build(colourPass, Kind::Colour);
+  if (reflection.blended()) aov_ = build(colourPass, Kind::Aov);
+  depth_ = build(depthPass, Kind::Depth);
 }
 
 MaterialPipeline::~MaterialPipeline() {
   VkDevice d = ctx_.device();
   vkDestroyPipeline(d, colour_, nullptr);
   vkDestroyPipeline(d, depth_, nullptr);
+  vkDestroyPipeline(d, aov_, nullptr);
   vkDestroyPipelineLayout(d, layout_, nullptr);
   for (auto l : setLayouts_) vkDestroyDescriptorSetLayout(d, l, nullptr);
   vkDestroyShaderModule(d, vertexModule_, nullptr);
@@ -85,7 +101,9 @@ VkShaderModule MaterialPipeline::module(const SpirvWords& words) {
   return m;
 }
 
-VkPipeline MaterialPipeline::build(VkRenderPass pass, bool depthOnly) {
+VkPipeline MaterialPipeline::build(VkRenderPass pass, Kind kind) {
+  const bool depthOnly = kind == Kind::Depth;
+  const bool blended = kind == Kind::Colour && reflection_.blended();
   VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -108,17 +126,19 @@ VkPipeline MaterialPipeline::build(VkRenderPass pass, bool depthOnly) {
   viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
-  // Alpha-tested cards are two-sided; depth maps see every face (thin roofs included).
-  raster.cullMode = (depthOnly || reflection_.alphaTested) ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+  // Alpha-tested cards and double-sided materials show both faces; depth maps see every
+  // face (thin roofs included).
+  const bool twoSided = depthOnly || reflection_.alphaTested || reflection_.doubleSided;
+  raster.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.f;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
+  depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;  // blended surfaces hide nothing
   depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-  VkPipelineColorBlendAttachmentState blendAttachment{};
+  VkPipelineColorBlendAttachmentState blendAttachment = blended ? straightAlphaBlend() : VkPipelineColorBlendAttachmentState{};
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
                                    VK_COLOR_COMPONENT_A_BIT;
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};

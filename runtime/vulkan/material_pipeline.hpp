@@ -1,7 +1,7 @@
 // Graphics pipelines for one compiled material, built from its reflection: descriptor
 // set layouts (set 0 frame + shared maps, set 1 material), the vertex format and the
-// two pipelines the renderer needs (lit colour, and depth only for shadow and
-// sky-exposure maps).
+// pipelines the renderer needs (lit colour, blended for alphaMode blend; depth only for
+// shadow and sky-exposure maps).
 #pragma once
 #include <vector>
 
@@ -27,7 +27,9 @@ class MaterialPipeline {
   MaterialPipeline(const MaterialPipeline&) = delete;
   MaterialPipeline& operator=(const MaterialPipeline&) = delete;
 
-  VkPipeline colourPipeline() const { return colour_; }
+  // The lit colour pipeline; for an AOV (a debug view) a blended material is drawn
+  // opaque with depth writes, so read-backs see its attributes unblended.
+  VkPipeline colourPipeline(bool aov = false) const { return aov && aov_ ? aov_ : colour_; }
   VkPipeline depthPipeline() const { return depth_; }
   VkPipelineLayout layout() const { return layout_; }
   VkDescriptorSetLayout setLayout(std::uint32_t set) const { return setLayouts_[set]; }
@@ -35,8 +37,9 @@ class MaterialPipeline {
   const MaterialReflection& reflection() const { return reflection_; }
 
  private:
+  enum class Kind { Colour, Aov, Depth };
   VkShaderModule module(const SpirvWords& words);
-  VkPipeline build(VkRenderPass pass, bool depthOnly);
+  VkPipeline build(VkRenderPass pass, Kind kind);
 
   Context& ctx_;
   MaterialReflection reflection_;
@@ -45,6 +48,7 @@ class MaterialPipeline {
   VkDescriptorSetLayout setLayouts_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline colour_ = VK_NULL_HANDLE, depth_ = VK_NULL_HANDLE;
+  VkPipeline aov_ = VK_NULL_HANDLE;  // blended materials only
 };
 
 // Formats of the renderer's attachments.

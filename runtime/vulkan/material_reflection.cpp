@@ -36,11 +36,16 @@ ReflectedBlock parseBlock(const nlohmann::json& j) {
   return b;
 }
 
+// Per-axis and per-direction settings fall back to "wrap" and "filter", which weather
+// maps (and reflection written before them) carry alone.
 std::vector<ReflectedTexture> parseTextures(const nlohmann::json& list) {
   std::vector<ReflectedTexture> out;
-  for (const auto& t : list)
-    out.push_back({t.at("name"), t.at("set"), t.at("binding"), t.at("samplerBinding"), t.value("wrap", "repeat"),
-                   t.value("filter", "linear"), t.value("source", nlohmann::json())});
+  for (const auto& t : list) {
+    const std::string wrap = t.value("wrap", "repeat"), filter = t.value("filter", "linear");
+    out.push_back({t.at("name"), t.at("set"), t.at("binding"), t.at("samplerBinding"), t.value("wrapU", wrap),
+                   t.value("wrapV", wrap), t.value("minFilter", filter), t.value("magFilter", filter),
+                   t.value("colorSpace", "linear"), t.value("source", nlohmann::json())});
+  }
   return out;
 }
 }  // namespace
@@ -60,6 +65,8 @@ MaterialReflection parseReflection(const std::string& text) {
     r.weatherMaps = parseTextures(j.at("weatherMaps"));
     for (const auto& v : j.at("vertexInputs")) r.vertexInputs.push_back({v.at("name"), v.at("type"), v.at("location")});
     r.alphaTested = j.at("alphaTested");
+    r.alphaMode = j.value("alphaMode", r.alphaTested ? "mask" : "opaque");
+    r.doubleSided = j.value("doubleSided", false);
     return r;
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(std::string("malformed reflection JSON: ") + e.what());

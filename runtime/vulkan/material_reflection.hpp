@@ -24,7 +24,9 @@ struct ReflectedBlock {
 struct ReflectedTexture {
   std::string name;
   std::uint32_t set = 0, binding = 0, samplerBinding = 0;
-  std::string wrap = "repeat", filter = "linear";
+  std::string wrapU = "repeat", wrapV = "repeat";
+  std::string minFilter = "linear", magFilter = "linear";
+  std::string colorSpace = "linear";  // "srgb": upload with an _SRGB format
   nlohmann::json source;  // procedural generator or file
 };
 
@@ -39,6 +41,9 @@ struct MaterialReflection {
   std::vector<ReflectedTexture> textures, weatherMaps;
   std::vector<ReflectedVertexInput> vertexInputs;
   bool alphaTested = false;
+  std::string alphaMode = "opaque";  // "blend": blended colour pipeline, drawn after opaque objects
+  bool doubleSided = false;
+  bool blended() const { return alphaMode == "blend"; }
   const ReflectedTexture* weatherMap(std::string_view name) const;
 };
 

@@ -74,12 +74,22 @@ TEST(EvalCli, PrintsJsonWithEveryInputOutputAndCoverageTerm) {
   EXPECT_EQ(weather["windIntensity"], 0.4);
   EXPECT_NEAR(weather["sunDirection"][0].get<double>(), std::sqrt(0.5), 1e-6);
   const json& surface = out["inputs"]["surface"];
-  for (const char* key : {"worldPosition", "normal", "tangent", "texcoord", "vertexColor", "skyExposure"})
+  for (const char* key : {"worldPosition", "normal", "tangent", "texcoord", "texcoord1", "vertexColor", "skyExposure"})
     EXPECT_TRUE(surface.contains(key)) << key;
   EXPECT_EQ(surface["worldPosition"], json({1.0, 5.0, 2.0}));
   EXPECT_EQ(out["inputs"]["parameters"]["roughness"], 0.3);
   EXPECT_EQ(out["inputs"]["parameters"]["tint"], json({0.52, 0.5, 0.47}));
   EXPECT_TRUE(out["inputs"]["parameters"].contains("weather.w1"));
+}
+
+TEST(EvalCli, AtSetsTheSecondTextureCoordinateSet) {
+  TempDir dir("eval-texcoord1");
+  const auto graph = dir.path() / "uv1.json";
+  testing::writeFile(graph, R"({"name": "uv1", "nodes": [{"id": "uv", "op": "texcoord1"}, {"id": "s", "op": "split", "inputs": {"in": "uv.out"}},
+    {"id": "c", "op": "combine3", "inputs": {"x": "s.x", "y": "s.y"}}], "output": {"baseColor": "c.out"}})");
+  const json out = evalJson(shellQuote(graph.string()) + " --at texcoord=0.9:0.9,texcoord1=0.25:0.75");
+  EXPECT_EQ(out["inputs"]["surface"]["texcoord1"], json({0.25, 0.75}));
+  EXPECT_EQ(out["outputs"]["baseColor"], json({0.25, 0.75, 0.0}));
 }
 
 TEST(EvalCli, EvaluatesTheMaterialThatCompileBuilds) {
@@ -113,7 +123,7 @@ TEST(EvalCli, HelpListsEveryInputWithItsDefault) {
   for (const char* entry : {"temperature=15", "precipitation=0", "windDirection=1:0", "windIntensity=0", "sunDirection=0:1:0",
                             "sunIntensity=1", "time=0", "snowLevel=0", "wetnessLevel=0", "mossLevel=0", "frostLevel=0",
                             "puddleLevel=0", "terrainHeightScale=1", "worldPosition=0:0:0", "normal=0:1:0",
-                            "tangent=1:0:0:1", "texcoord=0:0", "vertexColor=1:1:1:1", "skyExposure=1"})
+                            "tangent=1:0:0:1", "texcoord=0:0", "texcoord1=0:0", "vertexColor=1:1:1:1", "skyExposure=1"})
     EXPECT_NE(plain.output.find(entry), std::string::npos) << entry;
 
   auto withGraph = eval(shellQuote(kRock) + " --help");

@@ -1,0 +1,36 @@
+#include "runtime/vulkan/texture_sampler.hpp"
+
+namespace wg::vk {
+
+namespace {
+VkSamplerAddressMode addressMode(std::string_view wrap) {
+  if (wrap == "clamp") return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  if (wrap == "mirror") return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+VkFilter filterMode(std::string_view filter) { return filter == "nearest" ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
+}  // namespace
+
+VkSampler createSampler(Context& ctx, std::string_view wrapU, std::string_view wrapV, std::string_view minFilter,
+                        std::string_view magFilter) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.minFilter = filterMode(minFilter);
+  info.magFilter = filterMode(magFilter);
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = addressMode(wrapU);
+  info.addressModeV = info.addressModeW = addressMode(wrapV);
+  info.maxLod = 0.f;  // one level: the CPU evaluator samples level 0 too
+  VkSampler sampler;
+  check(vkCreateSampler(ctx.device(), &info, nullptr, &sampler), "vkCreateSampler");
+  return sampler;
+}
+
+VkSampler createSampler(Context& ctx, const ReflectedTexture& t) {
+  return createSampler(ctx, t.wrapU, t.wrapV, t.minFilter, t.magFilter);
+}
+
+VkFormat textureFormat(const ReflectedTexture& t) {
+  return t.colorSpace == "srgb" ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+}
+
+}  // namespace wg::vk
