@@ -19,7 +19,9 @@ find tests/bad -name '*.json' -type f -exec cp {} "$corpus"/ \;
 # A dictionary of the format's words helps the fuzzer build valid graphs.
 dict=build-fuzz/graph.dict
 { for w in name nodes output inputs id op param parameters textures weather preset type default \
-           switches switch cases values when effects bool on off include; do echo "\"\\\"$w\\\"\""; done
+           switches switch cases values when effects bool on off include \
+           file generator wrap filter min mag colorSpace srgb linear alphaMode opaque mask blend alphaCutoff \
+           doubleSided; do echo "\"\\\"$w\\\"\""; done
   for op in $(build/weathergen list-ops --json 2>/dev/null | python3 -c 'import json,sys; print(" ".join(o["name"] for o in json.load(sys.stdin)))' 2>/dev/null); do echo "\"\\\"$op\\\"\""; done
 } > "$dict"
 cd build-fuzz
