@@ -4,12 +4,15 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "cli/bundled_graphs_directory.hpp"
 #include "cli/command_line.hpp"
+#include "cli/model_scene.hpp"
+#include "compiler/literal.hpp"
 #include "cli/commands.hpp"
 #include "runtime/scene_renderer.hpp"
 
@@ -17,9 +20,10 @@ namespace wg {
 
 namespace {
 
-constexpr const char* kUsage = R"(Usage: weathergen bench-render [--scene NAME|all] [--frames N] [--size WxH] [--device NAME]
+constexpr const char* kUsage = R"(Usage: weathergen bench-render [--scene NAME|all | --model MODEL.gltf [--model-scale S]]
+                              [--frames N] [--size WxH] [--device NAME]
 
-Renders each scene N times (default 30, after 3 warm-up frames) per configuration and
+Renders each scene (or the glTF model on its stage, as 'render --model' draws it) N times (default 30, after 3 warm-up frames) per configuration and
 prints the median GPU time of the colour pass, from Vulkan timestamp queries:
   none      every material compiled with weather preset "none" (the baseline)
   neutral   dry and warm (every level 0): the runtime binds the unweathered variant
@@ -39,7 +43,8 @@ double median(std::vector<double> v) {
 
 int runBenchRenderCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2);
-  std::string sceneArg = "all", device, size = "1920x1080";
+  std::string sceneArg = "all", device, size = "1920x1080", modelPath;
+  float modelScale = 1.f;
   int frames = 30;
   while (!cl.done()) {
     std::string error, v;
@@ -49,6 +54,12 @@ int runBenchRenderCommand(int argc, char** argv) {
     }
     if (auto x = cl.valueFor("--scene", error)) { sceneArg = *x; continue; }
     if (auto x = cl.valueFor("--device", error)) { device = *x; continue; }
+    if (auto x = cl.valueFor("--model", error)) { modelPath = *x; continue; }
+    if (auto x = cl.valueFor("--model-scale", error)) {
+      modelScale = std::strtof(x->c_str(), nullptr);
+      if (!(modelScale >= 1e-6f && modelScale <= 1e6f)) error = "--model-scale takes metres per model unit, from 1e-6 to 1e6";
+      else continue;
+    }
     if (auto x = cl.valueFor("--size", error)) { size = *x; continue; }
     if (auto x = cl.valueFor("--frames", error)) {
       frames = std::atoi(x->c_str());
@@ -68,11 +79,18 @@ int runBenchRenderCommand(int argc, char** argv) {
     std::fprintf(stderr, "weathergen: error WG9001: cannot find the bundled graphs next to this executable\n");
     return kExitUsage;
   }
-  std::vector<std::string> scenes;
-  if (sceneArg == "all")
-    for (auto n : scene::sceneNames()) scenes.emplace_back(n);
-  else
-    scenes.push_back(sceneArg);
+  std::vector<scene::Scene> scenes;
+  ModelScene model;  // keeps the model's imported graphs while it is drawn
+  if (!modelPath.empty()) {
+    if (int e = loadModelScene(modelPath, {}, modelScale, model)) return e;
+    scenes.push_back(std::move(model.scene));
+  }
+  for (auto n : scene::sceneNames())
+    if (modelPath.empty() && (sceneArg == "all" || sceneArg == n)) scenes.push_back(*scene::makeScene(n));
+  if (scenes.empty()) {
+    std::fprintf(stderr, "weathergen: error WG9001: unknown scene '%s'\n", quoteUserText(sceneArg).c_str());
+    return kExitUsage;
+  }
   std::string error;
   auto ctx = vk::Context::create({device, false}, error);
   if (!ctx) {
@@ -84,14 +102,10 @@ int runBenchRenderCommand(int argc, char** argv) {
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | active / none |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   std::size_t gpuBytes = 0;
-  for (const auto& name : scenes) {
-    auto scene = scene::makeScene(name);
-    if (!scene) {
-      std::fprintf(stderr, "weathergen: error WG9001: unknown scene '%s'\n", name.c_str());
-      return kExitUsage;
-    }
-    glm::vec3 sun = scene->towardsSun;
-    SceneRenderer renderer(*ctx, std::move(*scene), graphsDir);
+  for (auto& scene : scenes) {
+    glm::vec3 sun = scene.towardsSun;
+    std::string name = scene.name;
+    SceneRenderer renderer(*ctx, std::move(scene), graphsDir);
     auto measure = [&](const RenderRequest& request) {
       std::vector<double> times;
       for (int i = 0; i < kWarmUpFrames + frames; ++i) {

@@ -30,13 +30,16 @@ Options:
   --preset-map RULES         per material: 'GLOB=PRESET,...' matched against material
                              names in order, e.g. '*Ground*=terrain,*Leaf*=foliage,*=rock';
                              a material no rule matches gets no weather
+  --snow-displacement        keep the presets' snow displacement (off by default: it moves
+                             vertices along their normals, which tears meshes that are
+                             split at hard edges, as most glTF meshes are)
   --diagnostics text|json    diagnostic format on stderr (default: text)
   -q, --quiet                no summary line (on stdout)
 )";
 
 struct ImportOptions {
   std::string model, outputDir, preset = "rock", presetMap;
-  bool json = false, quiet = false, help = false, presetGiven = false;
+  bool json = false, quiet = false, help = false, presetGiven = false, displacement = false;
 };
 
 // Returns -1 when parsing succeeded, else the exit code.
@@ -56,6 +59,7 @@ int parseOptions(int argc, char** argv, ImportOptions& o) {
     }
     if (cl.flag("-h") || cl.flag("--help")) { o.help = true; continue; }
     if (cl.flag("-q") || cl.flag("--quiet")) { o.quiet = true; continue; }
+    if (cl.flag("--snow-displacement")) { o.displacement = true; continue; }
     if (auto v = cl.valueFor("-o", error)) { o.outputDir = *v; continue; }
     if (auto v = cl.valueFor("--output", error)) { o.outputDir = *v; continue; }
     if (auto v = cl.valueFor("--diagnostics", error)) {
@@ -131,7 +135,7 @@ int runImportCommand(int argc, char** argv) {
   std::optional<gltf::ModelGeometry> geometry;
   if (asset) geometry = gltf::readModelGeometry(*asset, diagnostics);
   std::optional<gltf::ImportedModel> imported;
-  if (geometry) imported = gltf::importModel(*asset, *geometry, *presets, diagnostics);
+  if (geometry) imported = gltf::importModel(*asset, *geometry, {*presets, o.displacement}, diagnostics);
   printDiagnostics(diagnostics.items(), o.json);
   if (!imported) return kExitBadInput;
   return writeImport(*asset, *imported, o);

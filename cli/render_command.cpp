@@ -52,7 +52,10 @@ std::string checkRenderOptions(const RenderOptions& o) {
   if (o.output.empty()) return "no output; pass -o OUT.png";
   if (!o.timelinePath.empty() && !o.weatherLists.empty()) return "--weather and --timeline exclude each other";
   if (o.graphsDir.empty()) return "cannot find the bundled graphs next to this executable; pass --graphs DIR";
-  if (o.watch && o.materialPath.empty()) return "--watch takes --material";
+  if (o.watch && o.materialPath.empty() && o.modelPath.empty()) return "--watch takes --material or --model";
+  if ((!o.presetMap.empty() || o.modelScale != 1.f || o.snowDisplacement) && o.modelPath.empty())
+    return "--preset-map, --model-scale and --snow-displacement take --model";
+  if (!o.presetMap.empty() && o.weatherPreset) return "--weather-preset and --preset-map exclude each other";
   if (o.watchRenders && !o.watch) return "--watch-renders takes --watch";
   return "";
 }
@@ -90,7 +93,7 @@ int renderAndWatch(const RenderOptions& o, PreparedRender first, vk::Context& ct
     else if (int e = prepareRender(o, prepared)) return {e, {}};
     return renderPrepared(std::move(prepared), ctx, o.graphsDir);
   };
-  WatchSettings watch{{o.materialPath}, o.output, o.watchRenders};
+  WatchSettings watch{{o.materialPath.empty() ? o.modelPath : o.materialPath}, o.output, o.watchRenders};
   watch.announce = !o.quiet;
   return watchAndRender(render, watch);
 }

@@ -15,7 +15,7 @@ namespace wg {
 
 namespace {
 
-constexpr const char* kRenderUsage = R"(Usage: weathergen render (--scene NAME | --material GRAPH.json) -o OUT.png [options]
+constexpr const char* kRenderUsage = R"(Usage: weathergen render (--scene NAME | --material GRAPH.json | --model MODEL.gltf) -o OUT.png [options]
 
 Options:
   --scene NAME              valley, rocks, river, road or snowfield (interactive snow:
@@ -24,6 +24,14 @@ Options:
   --material GRAPH.json     any material graph on the preview stand: a sphere, a rock,
                             a 45 degree ramp and a cube on a post, on open ground next
                             to a small roof
+  --model MODEL.gltf|glb    a glTF 2.0 model on a ground plane, every mesh drawn with
+                            its imported material weathered (rock unless
+                            --weather-preset or --preset-map says otherwise)
+  --preset-map RULES        with --model: 'GLOB=PRESET,...' per material name, as
+                            'weathergen import' takes it
+  --model-scale S           with --model: metres per model unit (glTF says 1; 0.001
+                            for a model authored in millimetres)
+  --snow-displacement       with --model: keep the snow displacement, as import takes it
   --camera NAME             a camera preset of the scene (default: its first); the
                             stand has front, sun-side, shade-side and close-up
   --camera orbit:AZ,EL[,D]  any view of the scene's centre: azimuth (degrees from +z
@@ -45,8 +53,9 @@ Options:
                             (default: the CPU device, lavapipe)
   --validation              enable the Vulkan validation layers; any message fails
   --no-shadows              draw without the sun shadow map
-  --watch                   with --material: render, then render again whenever the
-                            graph, a library it includes or an image it reads changes
+  --watch                   with --material or --model: render, then render again whenever the
+                            graph, a library it includes, an image it reads or the model
+                            (and its buffers and images) changes
                             (one line per render; errors keep the last good image);
                             Ctrl-C stops
   --watch-renders N         with --watch: stop after N renders, failed ones included
@@ -84,6 +93,14 @@ std::string parseWatchRenders(const std::string& v, std::optional<unsigned>& cou
   return "";
 }
 
+std::string parseModelScale(const std::string& v, float& scale) {
+  char* end = nullptr;
+  double s = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end || !(s >= 1e-6 && s <= 1e6)) return "--model-scale takes metres per model unit, from 1e-6 to 1e6 (0.001 for millimetres)";
+  scale = static_cast<float>(s);
+  return "";
+}
+
 std::string parseCamera(const std::string& v, RenderOptions& o) {
   o.camera = v;
   o.orbit.reset();
@@ -97,6 +114,9 @@ std::string parseCamera(const std::string& v, RenderOptions& o) {
 std::string parseValueOption(const std::string& name, const std::string& v, RenderOptions& o) {
   if (name == "--scene") o.sceneName = v;
   else if (name == "--material") o.materialPath = v;
+  else if (name == "--model") o.modelPath = v;
+  else if (name == "--preset-map") o.presetMap = v;
+  else if (name == "--model-scale") return parseModelScale(v, o.modelScale);
   else if (name == "--camera") return parseCamera(v, o);
   else if (name == "-o" || name == "--output") o.output = v;
   else if (name == "--timeline") o.timelinePath = v;
@@ -117,9 +137,9 @@ std::string parseValueOption(const std::string& name, const std::string& v, Rend
   return "";
 }
 
-constexpr const char* kValueOptions[] = {"--scene",    "--material", "--camera",         "-o",        "--output",
-                                         "--timeline", "--aov",      "--device",         "--graphs",  "--frames",
-                                         "--weather",  "--weather-preset", "--backend", "--size",    "--step",
+constexpr const char* kValueOptions[] = {"--scene", "--material", "--model", "--preset-map", "--model-scale", "--camera",         "-o",      "--output",
+                                         "--timeline", "--aov",     "--device",         "--graphs", "--frames",
+                                         "--weather", "--weather-preset", "--backend",  "--size",  "--step",
                                          "--watch-renders"};
 
 bool parseFlag(CommandLine& cl, RenderOptions& o) {
@@ -127,6 +147,7 @@ bool parseFlag(CommandLine& cl, RenderOptions& o) {
   else if (cl.flag("--no-shadows")) o.request.shadows = false;
   else if (cl.flag("-q") || cl.flag("--quiet")) o.quiet = true;
   else if (cl.flag("--watch")) o.watch = true;
+  else if (cl.flag("--snow-displacement")) o.snowDisplacement = true;
   else return false;
   return true;
 }

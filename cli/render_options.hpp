@@ -13,6 +13,10 @@ struct RenderOptions {
   // Where the scene comes from: exactly one of these (render_scene_source.hpp).
   std::string sceneName;     // --scene: a bundled scene
   std::string materialPath;  // --material: a graph file on the preview stand
+  std::string modelPath;     // --model: a glTF model, its materials imported and weathered
+  std::string presetMap;     // --preset-map: the model materials' presets (docs/gltf-import.md)
+  float modelScale = 1.f;    // --model-scale: metres per model unit (glTF says 1)
+  bool snowDisplacement = false;  // --snow-displacement, as import takes it
   std::string camera;        // --camera: a preset name, or orbit:... (then `orbit` is set)
   std::optional<scene::Orbit> orbit;
   std::string output, timelinePath, framesDir, aov = "lit", device, graphsDir;

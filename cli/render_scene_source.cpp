@@ -4,6 +4,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/model_scene.hpp"
 #include "compiler/literal.hpp"
 #include "runtime/scene/graph_path.hpp"
 #include "runtime/scene/preview_stand.hpp"
@@ -32,17 +33,29 @@ int materialOnStand(const std::string& graphPath, SceneSource& source) {
   return kExitOk;
 }
 
+// Materials get the --preset-map rules, or rock; --weather-preset still replaces them all.
+int modelOnStage(const RenderOptions& o, SceneSource& source) {
+  std::string error;
+  auto presets = o.presetMap.empty() ? std::optional(gltf::PresetChoice::everywhere("rock")) : gltf::PresetChoice::fromMap(o.presetMap, error);
+  if (!presets) return usageError(error);
+  ModelScene model;
+  if (int e = loadModelScene(o.modelPath, {*presets, o.snowDisplacement}, o.modelScale, model)) return e;
+  source = {std::move(model.scene), std::move(model.inputFiles), std::move(model.graphs)};
+  return kExitOk;
+}
+
 }  // namespace
 
 std::string checkOneSceneSource(const RenderOptions& o) {
-  int named = !o.sceneName.empty() + !o.materialPath.empty();
+  int named = !o.sceneName.empty() + !o.materialPath.empty() + !o.modelPath.empty();
   if (named == 1) return "";
-  if (named == 0) return "nothing to render; pass --scene NAME (valley, rocks, river, road or snowfield) or --material GRAPH.json";
-  return "--scene and --material exclude each other";
+  if (named == 0) return "nothing to render; pass --scene NAME (valley, rocks, river, road or snowfield), --material GRAPH.json or --model MODEL.gltf";
+  return "--scene, --material and --model exclude each other";
 }
 
 int chooseScene(const RenderOptions& o, SceneSource& source) {
   if (!o.materialPath.empty()) return materialOnStand(o.materialPath, source);
+  if (!o.modelPath.empty()) return modelOnStage(o, source);
   return bundledScene(o.sceneName, source);
 }
 

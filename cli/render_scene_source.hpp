@@ -4,7 +4,10 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
 #include "cli/render_options.hpp"
+#include "cli/temporary_directory.hpp"
 #include "runtime/scene/scene.hpp"
 
 namespace wg {
@@ -14,6 +17,8 @@ struct SceneSource {
   // The files the scene was built from, which --watch polls besides its materials' own
   // inputs (SceneRenderer::materialInputFiles): --material's graph; a model's files.
   std::vector<std::string> inputFiles;
+  // --model: where its imported graphs live while the scene is drawn.
+  std::shared_ptr<TemporaryDirectory> graphFolder;
 };
 
 // "" when the options name exactly one source, else a usage message.

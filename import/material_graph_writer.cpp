@@ -62,7 +62,7 @@ class GraphBuilder {
     addEmissive(m, output);
     addAlpha(m, alpha, output);
     graph_["doubleSided"] = m.doubleSided;
-    graph_["weather"] = naming_.weatherPreset;
+    graph_["weather"] = weather();
     Json ordered;  // a stable, readable key order
     for (const char* key : {"name", "description", "parameters", "textures", "nodes", "output", "alphaMode", "alphaCutoff",
                             "doubleSided", "weather"})
@@ -72,6 +72,11 @@ class GraphBuilder {
   }
 
  private:
+  Json weather() const {
+    if (naming_.weatherPreset == "none" || naming_.snowDisplacement) return naming_.weatherPreset;
+    return Json{{"preset", naming_.weatherPreset}, {"effects", {{"displacement", false}}}};
+  }
+
   std::string description(const tinygltf::Material& m) const {
     std::string model = std::filesystem::path(asset_.file).stem().string();
     if (index_ < 0) return "glTF default material of " + model;

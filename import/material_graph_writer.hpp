@@ -21,6 +21,9 @@ struct GraphNaming {
   std::string name;                     // the graph's name and file stem
   std::vector<std::string> imageFiles;  // per glTF image: the file the graph reads
   std::string weatherPreset;            // a preset name, "none" for no weather
+  // Snow displacement moves vertices along their normals. glTF meshes split vertices
+  // at hard edges, where that tears faces apart, so it is off unless asked for.
+  bool snowDisplacement = false;
 };
 
 // The graph of material `index`, or of the glTF default material when index < 0.

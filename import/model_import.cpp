@@ -20,16 +20,24 @@ std::string lowered(std::string s) {
 
 // Graph stems: MODEL_MATERIAL; names that collide (ignoring case, for case-insensitive
 // file systems) all take their material index as a suffix, so no name depends on order.
+// A suffixed stem can meet another material's own name ("Red", "Red", "Red_0"), so this
+// repeats; a stem is suffixed at most once, so it ends. Two suffixed stems never meet:
+// the digits after their last '_' are their distinct indices.
 std::vector<std::string> graphStems(const tinygltf::Model& model, const std::string& modelStem) {
   std::vector<std::string> stems;
-  std::map<std::string, int> uses;
-  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+  for (std::size_t i = 0; i < model.materials.size(); ++i)
     stems.push_back(modelStem + "_" + fileSafeName(model.materials[i].name, "material" + std::to_string(i)));
-    ++uses[lowered(stems.back())];
+  std::vector<bool> suffixed(stems.size(), false);
+  for (bool changed = true; changed;) {
+    std::map<std::string, int> uses{{lowered(modelStem + "_default"), 1}};
+    for (const auto& stem : stems) ++uses[lowered(stem)];
+    changed = false;
+    for (std::size_t i = 0; i < stems.size(); ++i)
+      if (!suffixed[i] && uses[lowered(stems[i])] > 1) {
+        stems[i] += "_" + std::to_string(i);
+        suffixed[i] = changed = true;
+      }
   }
-  ++uses[lowered(modelStem + "_default")];
-  for (std::size_t i = 0; i < stems.size(); ++i)
-    if (uses[lowered(stems[i])] > 1) stems[i] += "_" + std::to_string(i);
   return stems;
 }
 
@@ -51,12 +59,13 @@ std::string fileSafeName(std::string_view text, std::string_view fallback) {
   return out;
 }
 
-std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const PresetChoice& presets,
+std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const ImportSettings& settings,
                                          DiagnosticList& diags) {
   const auto& model = asset.model;
   std::string modelStem = fileSafeName(std::filesystem::path(asset.file).stem().string(), "model");
   ImportedModel out;
   GraphNaming naming;
+  naming.snowDisplacement = settings.snowDisplacement;
   Json index;
   index["model"] = std::filesystem::path(asset.file).filename().string();
   index["generator"] = std::string("weathergen ") + WEATHERGEN_VERSION;
@@ -71,7 +80,7 @@ std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry
   std::size_t errorsBefore = diags.items().size();
   auto addGraph = [&](int material, const std::string& stem, const std::string& name) {
     naming.name = stem;
-    naming.weatherPreset = presets.presetFor(name);
+    naming.weatherPreset = settings.presets.presetFor(name);
     out.files.push_back({stem + ".json", asText(materialGraph(asset, material, naming, diags))});
     return Json{{"index", material}, {"name", name}, {"graph", stem + ".json"}, {"weatherPreset", naming.weatherPreset}};
   };

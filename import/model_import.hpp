@@ -28,7 +28,12 @@ struct ImportedModel {
   std::string defaultGraph;  // "" unless some primitive has no material
 };
 
-std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const PresetChoice& presets,
+struct ImportSettings {
+  PresetChoice presets = PresetChoice::everywhere("rock");
+  bool snowDisplacement = false;  // see GraphNaming::snowDisplacement
+};
+
+std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const ImportSettings& settings,
                                          DiagnosticList& diagnostics);
 
 // A file-name-safe form of any text: [A-Za-z0-9_-], at most 48 characters, never empty.

@@ -173,9 +173,23 @@ MaterialResources& SceneRenderer::material(const std::string& graph, const std::
 }
 
 namespace {
-glm::mat4 cameraViewProjection(const scene::CameraPreset& camera, std::uint32_t width, std::uint32_t height) {
+struct ClipRange {
+  float nearPlane, farPlane;
+};
+
+// The fixed planes cover every bundled scene; a larger one (an imported model in
+// millimetres) pushes the far plane out and the near plane with it, keeping their ratio.
+ClipRange clipRange(const scene::Scene& scene, glm::vec3 eye) {
+  glm::vec3 centre = 0.5f * (scene.boundsMin + scene.boundsMax);
+  float reach = glm::distance(eye, centre) + 0.5f * glm::distance(scene.boundsMin, scene.boundsMax);
+  float scale = std::max(1.f, 1.5f * reach / kFarPlane);
+  return {kNearPlane * scale, kFarPlane * scale};
+}
+
+glm::mat4 cameraViewProjection(const scene::CameraPreset& camera, ClipRange clip, std::uint32_t width, std::uint32_t height) {
   glm::mat4 view = glm::lookAt(camera.eye, camera.target, glm::vec3(0.f, 1.f, 0.f));
-  glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDegrees), float(width) / float(height), kNearPlane, kFarPlane);
+  glm::mat4 projection =
+      glm::perspective(glm::radians(camera.fovYDegrees), float(width) / float(height), clip.nearPlane, clip.farPlane);
   return flipY(projection) * view;
 }
 }  // namespace
@@ -185,7 +199,7 @@ glm::mat4 SceneRenderer::viewProjection(const std::string& camera, std::uint32_t
   for (const auto& c : scene_.cameras)
     if (c.name == camera) preset = &c;
   if (!preset) throw std::runtime_error("scene '" + scene_.name + "' has no cameras");
-  return cameraViewProjection(*preset, width, height);
+  return cameraViewProjection(*preset, clipRange(scene_, preset->eye), width, height);
 }
 
 std::size_t SceneRenderer::gpuMemoryBytes() const {
@@ -368,7 +382,8 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   if (request.cameraPose) camera = &*request.cameraPose;
   std::vector<PassSetup> passes;
   if (request.shadows) passes.push_back({PassKind::Shadow, light, camera->eye, exposureMap_.view(), placeholderShadow_.view()});
-  passes.push_back({PassKind::Colour, cameraViewProjection(*camera, request.width, request.height), camera->eye,
+  ClipRange clip = clipRange(scene_, camera->eye);
+  passes.push_back({PassKind::Colour, cameraViewProjection(*camera, clip, request.width, request.height), camera->eye,
                     exposureMap_.view(), request.shadows ? shadowMap_.view() : placeholderShadow_.view()});
 
   RenderedFrame frame;
@@ -499,7 +514,7 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
       vkCmdEndRenderPass(cmd);
       if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
       if (colourPass && request.afterColourPass)
-        request.afterColourPass({cmd, &colour, &depth, passes[p].viewProjection, passes[p].eye, kNearPlane, kFarPlane});
+        request.afterColourPass({cmd, &colour, &depth, passes[p].viewProjection, passes[p].eye, clip.nearPlane, clip.farPlane});
     }
   });
 

@@ -294,7 +294,7 @@ wg::DiagnosticList importModelFile(const std::string& file, bool& imported) {
   auto asset = wg::gltf::loadAsset(file, diagnostics);
   std::optional<wg::gltf::ModelGeometry> geometry;
   if (asset) geometry = wg::gltf::readModelGeometry(*asset, diagnostics);
-  imported = geometry && wg::gltf::importModel(*asset, *geometry, wg::gltf::PresetChoice::everywhere("rock"), diagnostics);
+  imported = geometry && wg::gltf::importModel(*asset, *geometry, {}, diagnostics);
   return diagnostics;
 }
 

@@ -1,0 +1,138 @@
+#include "cli/model_scene.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
+#include "compiler/literal.hpp"
+#include "import/gltf_asset.hpp"
+#include "import/model_geometry.hpp"
+#include "import/model_import.hpp"
+#include "runtime/scene/stage.hpp"
+
+namespace wg {
+
+namespace {
+
+// glTF without NORMAL asks for flat normals (glTF 2.0, 3.7.2.1): every triangle gets
+// its own three vertices.
+void unweldFlat(scene::Mesh& mesh) {
+  scene::Mesh flat;
+  bool uv1 = !mesh.texcoords1.empty();
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    std::uint32_t v[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
+    glm::vec3 n = glm::cross(mesh.positions[v[1]] - mesh.positions[v[0]], mesh.positions[v[2]] - mesh.positions[v[0]]);
+    n = glm::length(n) > 0.f ? glm::normalize(n) : glm::vec3(0.f, 1.f, 0.f);
+    for (std::uint32_t i : v) {
+      flat.indices.push_back(scene::addVertex(flat, mesh.positions[i], n, mesh.texcoords[i], mesh.colors[i]));
+      if (uv1) flat.texcoords1.push_back(mesh.texcoords1[i]);
+    }
+  }
+  mesh = std::move(flat);
+}
+
+// Our meshes' tangents put the bitangent along +v; glTF's point it along -v (image
+// up, glTF 2.0 3.9.3), which is what its normal maps encode.
+void generateGltfTangents(scene::Mesh& mesh) {
+  scene::computeTangents(mesh);
+  for (auto& t : mesh.tangents) t.w = -t.w;
+}
+
+scene::Mesh toMesh(const gltf::ModelPrimitive& p) {
+  scene::Mesh mesh;
+  std::size_t n = p.positions.size();
+  mesh.positions = p.positions;
+  mesh.normals = p.normals;
+  mesh.texcoords = p.texcoords0.empty() ? std::vector<glm::vec2>(n, glm::vec2(0.f)) : p.texcoords0;
+  mesh.texcoords1 = p.texcoords1;
+  mesh.colors = p.colors.empty() ? std::vector<glm::vec4>(n, glm::vec4(1.f)) : p.colors;
+  mesh.indices = p.indices;
+  if (mesh.normals.empty()) unweldFlat(mesh);
+  for (auto& normal : mesh.normals)
+    if (glm::length(normal) > 0.f) normal = glm::normalize(normal);
+  if (p.tangents.empty() || mesh.normals.size() != p.normals.size()) generateGltfTangents(mesh);
+  else mesh.tangents = p.tangents;
+  return mesh;
+}
+
+std::vector<std::string> modelInputFiles(const gltf::Asset& asset) {
+  std::vector<std::string> files{asset.file};
+  std::filesystem::path folder = std::filesystem::path(asset.file).parent_path();
+  for (const auto& b : asset.model.buffers)
+    if (!b.uri.empty() && !b.uri.starts_with("data:")) files.push_back((folder / b.uri).string());
+  for (const auto& i : asset.model.images)
+    if (!i.uri.empty() && !i.uri.starts_with("data:")) files.push_back((folder / i.uri).string());
+  return files;
+}
+
+std::string writeImported(const gltf::ImportedModel& imported, const std::filesystem::path& dir) {
+  for (const auto& f : imported.files) {
+    std::ofstream out(dir / f.name, std::ios::binary);
+    if (!out.write(f.bytes.data(), static_cast<std::streamsize>(f.bytes.size())))
+      return "cannot write the imported graphs to '" + (dir / f.name).string() + "'";
+  }
+  return "";
+}
+
+std::vector<scene::SceneObject> modelObjects(const gltf::ModelGeometry& geometry, const gltf::ImportedModel& imported,
+                                             const std::filesystem::path& dir) {
+  std::vector<scene::SceneObject> objects;
+  for (std::size_t i = 0; i < geometry.primitives.size(); ++i) {
+    const auto& p = geometry.primitives[i];
+    if (p.indices.empty()) continue;
+    scene::SceneObject o;
+    o.name = "primitive" + std::to_string(i) + ":" + quoteUserText(p.name);
+    o.graph = (dir / (p.material >= 0 ? imported.materialGraphs[p.material] : imported.defaultGraph)).string();
+    o.mesh = toMesh(p);
+    o.model = p.transform;
+    objects.push_back(std::move(o));
+  }
+  return objects;
+}
+
+// Scales the model to metres and stands it at the origin: its lowest point on y = 0 and
+// its footprint centred, wherever the file placed it, so the weather's height terms see
+// the same ground for every model.
+void standAtOrigin(std::vector<scene::SceneObject>& objects, float scale) {
+  scene::Bounds b;
+  glm::mat4 scaled = glm::scale(glm::mat4(1.f), glm::vec3(scale));
+  for (const auto& o : objects) b.include(scene::bounds(o.mesh, scaled * o.model));
+  glm::mat4 place = glm::translate(glm::mat4(1.f), -glm::vec3(0.5f * (b.min.x + b.max.x), b.min.y, 0.5f * (b.min.z + b.max.z)));
+  for (auto& o : objects) o.model = place * scaled * o.model;
+}
+
+}  // namespace
+
+int loadModelScene(const std::string& modelPath, const gltf::ImportSettings& settings, float scale, ModelScene& out) {
+  DiagnosticList diagnostics;
+  auto asset = gltf::loadAsset(modelPath, diagnostics);
+  std::optional<gltf::ModelGeometry> geometry;
+  if (asset) geometry = gltf::readModelGeometry(*asset, diagnostics);
+  std::optional<gltf::ImportedModel> imported;
+  if (geometry) imported = gltf::importModel(*asset, *geometry, settings, diagnostics);
+  printDiagnostics(diagnostics.items(), false);
+  if (!imported) return kExitBadInput;
+  out.graphs = TemporaryDirectory::create("weathergen-model");
+  if (std::string e = writeImported(*imported, out.graphs->path()); !e.empty()) {
+    std::fprintf(stderr, "weathergen: error: %s\n", e.c_str());
+    return kExitInternal;
+  }
+  std::vector<scene::SceneObject> objects = modelObjects(*geometry, *imported, out.graphs->path());
+  standAtOrigin(objects, scale);
+  if (objects.empty()) {
+    DiagnosticList empty;
+    empty.report(DiagCode::GltfInvalidData, asset->locate(""),
+                 {"the model's scene draws no triangles", "render a model whose scene holds at least one triangle mesh"});
+    printDiagnostics(empty.items(), false);
+    return kExitBadInput;
+  }
+  out.scene = scene::stageAround("model-" + gltf::fileSafeName(std::filesystem::path(modelPath).stem().string(), "model"), std::move(objects));
+  out.inputFiles = modelInputFiles(*asset);
+  return kExitOk;
+}
+
+}  // namespace wg
