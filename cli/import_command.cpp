@@ -73,7 +73,11 @@ int parseOptions(int argc, char** argv, ImportOptions& o) {
       o.presetGiven = true;
       continue;
     }
-    if (auto v = cl.valueFor("--preset-map", error)) { o.presetMap = *v; continue; }
+    if (auto v = cl.valueFor("--preset-map", error)) {
+      if (v->empty()) return usageError("--preset-map takes rules, e.g. '*Leaf*=foliage,*=rock'", o.json);
+      o.presetMap = *v;
+      continue;
+    }
     if (!error.empty()) return usageError(error, o.json);
     return usageError("unknown option '" + quoteUserText(cl.peek()) + "'; run 'weathergen import --help'", o.json);
   }

@@ -115,7 +115,10 @@ std::string parseValueOption(const std::string& name, const std::string& v, Rend
   if (name == "--scene") o.sceneName = v;
   else if (name == "--material") o.materialPath = v;
   else if (name == "--model") o.modelPath = v;
-  else if (name == "--preset-map") o.presetMap = v;
+  else if (name == "--preset-map") {
+    if (v.empty()) return "--preset-map takes rules, e.g. '*Leaf*=foliage,*=rock'";
+    o.presetMap = v;
+  }
   else if (name == "--model-scale") return parseModelScale(v, o.modelScale);
   else if (name == "--camera") return parseCamera(v, o);
   else if (name == "-o" || name == "--output") o.output = v;

@@ -16,14 +16,19 @@ std::string systemError(const std::string& what, const std::filesystem::path& pa
 }  // namespace
 
 StagedDirectory::~StagedDirectory() {
-  if (staging_.empty()) return;
   std::error_code ec;
-  std::filesystem::remove_all(staging_, ec);
+  if (!staging_.empty()) std::filesystem::remove_all(staging_, ec);
+  if (published_) return;
+  // A failed run leaves no folder it made; remove() only takes empty ones.
+  for (auto it = created_.rbegin(); it != created_.rend(); ++it) std::filesystem::remove(*it, ec);
 }
 
 std::string StagedDirectory::ensureStaging() {
   if (!staging_.empty()) return "";
   std::error_code ec;
+  for (std::filesystem::path p = std::filesystem::absolute(directory_, ec); !p.empty() && !std::filesystem::exists(p, ec);
+       p = p.parent_path())
+    created_.insert(created_.begin(), p);
   std::filesystem::create_directories(directory_, ec);
   if (ec) return "cannot create the output directory '" + directory_.string() + "': " + ec.message();
   std::string pattern = (directory_ / ".weathergen-staging-XXXXXX").string();
@@ -59,6 +64,7 @@ std::string StagedDirectory::publish() {
     if (std::filesystem::is_directory(std::filesystem::symlink_status(target, ec)))
       return "cannot write '" + target.string() + "': a directory has that name";
   }
+  published_ = true;  // from here on the folder holds output, whatever happens next
   for (const auto& name : names_)
     if (::rename((staging_ / name).c_str(), (directory_ / name).c_str()) != 0) return systemError("cannot write", directory_ / name);
   return "";

@@ -25,6 +25,8 @@ class StagedDirectory {
   std::string ensureStaging();
   std::filesystem::path directory_, staging_;
   std::vector<std::string> names_;
+  std::vector<std::filesystem::path> created_;  // folders this run made, deepest last
+  bool published_ = false;
 };
 
 }  // namespace wg

@@ -18,12 +18,22 @@ namespace {
 
 constexpr JsonLimits kJsonLimits{64u << 20, 64};  // glTF JSON of large scenes runs to tens of MiB
 
+// Why an image was refused: unreadable (WG5004) or past a limit (WG5007).
+struct ImageProblem {
+  DiagCode code = DiagCode::GltfResource;
+  std::string message, hint;
+};
+
 // What the tinygltf callbacks share: the model's folder and the images they accept.
 struct LoadContext {
   std::filesystem::path folder;
   std::vector<EncodedImage> images;
-  std::vector<std::string> imageErrors;  // per image index, "" when fine
+  std::vector<ImageProblem> imageErrors;  // per image index; empty message when fine
+  std::size_t imageBytes = 0;            // kept so far, against kMaxImageBytes
 };
+
+// Every image is kept encoded; many images may share one large buffer view.
+constexpr std::size_t kMaxImageBytes = 1ull << 30;
 
 std::string imageExtension(const unsigned char* bytes, int size) {
   static constexpr std::array<unsigned char, 8> kPng = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
@@ -58,16 +68,23 @@ bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std:
   EncodedImage& out = ctx.images[slot];
   out.extension = imageExtension(bytes, size);
   int components = 0;
-  if (out.extension.empty()) ctx.imageErrors[slot] = "it is neither PNG nor JPEG";
+  ImageProblem& problem = ctx.imageErrors[slot];
+  constexpr auto kUnreadable = DiagCode::GltfResource, kTooLarge = DiagCode::GltfInvalidData;
+  if (out.extension.empty()) problem = {kUnreadable, "it is neither PNG nor JPEG", "store images as PNG or JPEG"};
   else if (!headerSize(bytes, size, out.extension, out.width, out.height, components))
-    ctx.imageErrors[slot] = "its header cannot be read";
+    problem = {kUnreadable, "its header cannot be read", "re-save the image"};
   else if (out.width > kMaxImageFileDimension || out.height > kMaxImageFileDimension)
-    ctx.imageErrors[slot] = "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) +
-                            " pixels; the limit is " + std::to_string(kMaxImageFileDimension) + " on each side";
-  if (!ctx.imageErrors[slot].empty()) {
-    *err += "image " + std::to_string(index) + ": " + ctx.imageErrors[slot];
+    problem = {kTooLarge,
+               "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) + " pixels; the limit is " +
+                   std::to_string(kMaxImageFileDimension) + " on each side",
+               "resize the image to at most 8192 pixels on each side"};
+  else if (ctx.imageBytes + static_cast<std::size_t>(size) > kMaxImageBytes)
+    problem = {kTooLarge, "the model's images together exceed the limit of 1 GiB", "make the images smaller or fewer"};
+  if (!problem.message.empty()) {
+    *err += "image " + std::to_string(index) + ": " + problem.message;
     return false;
   }
+  ctx.imageBytes += static_cast<std::size_t>(size);
   out.bytes.assign(bytes, bytes + size);
   image->width = out.width;
   image->height = out.height;
@@ -124,14 +141,12 @@ bool checkRequiredExtensions(const JsonDocument& doc, DiagnosticList& diags) {
 void reportParseFailure(const Asset& asset, const LoadContext& ctx, const std::string& err, DiagnosticList& diags) {
   bool reported = false;
   for (std::size_t i = 0; i < ctx.imageErrors.size(); ++i) {
-    if (ctx.imageErrors[i].empty()) continue;
+    const ImageProblem& p = ctx.imageErrors[i];
+    if (p.message.empty()) continue;
     reported = true;
     std::string pointer = appendPointer("/images", i), what = "image " + std::to_string(i);
-    if (ctx.imageErrors[i].find("the limit") != std::string::npos)
-      diags.report(DiagCode::GltfInvalidData, asset.locate(pointer),
-                   {what + ": " + ctx.imageErrors[i], "resize the image to at most 8192 pixels on each side"});
-    else
-      diags.report(DiagCode::GltfResource, asset.locate(pointer), {what, ctx.imageErrors[i], "store images as PNG or JPEG"});
+    if (p.code == DiagCode::GltfInvalidData) diags.report(p.code, asset.locate(pointer), {what + ": " + p.message, p.hint});
+    else diags.report(p.code, asset.locate(pointer), {what, p.message, p.hint});
   }
   if (!reported)
     diags.report(DiagCode::GltfContainer, asset.locate(""),
@@ -173,9 +188,9 @@ bool checkBufferRanges(const Asset& asset, DiagnosticList& diags) {
   }
   for (std::size_t i = 0; i < m.bufferViews.size(); ++i) {
     const auto& v = m.bufferViews[i];
-    std::uint64_t end = std::uint64_t(v.byteOffset) + v.byteLength;
     std::size_t have = static_cast<std::size_t>(v.buffer) < m.buffers.size() ? m.buffers[v.buffer].data.size() : 0;
-    if (end <= have) continue;
+    if (v.byteOffset <= have && v.byteLength <= have - v.byteOffset) continue;
+    std::uint64_t end = std::uint64_t(v.byteOffset) + v.byteLength;
     ok = false;
     diags.report(DiagCode::GltfInvalidData, asset.locate(appendPointer("/bufferViews", i)),
                  {"buffer view " + std::to_string(i) + " ends at byte " + std::to_string(end) + ", past the end of buffer " +

@@ -61,7 +61,7 @@ class GeometryReader {
 
   std::optional<ModelGeometry> run() {
     warnIgnoredFeatures();
-    for (int root : sceneRoots()) visit(root, glm::mat4(1.f));
+    for (int root : sceneRoots()) visitTree(root);
     if (failed_) return std::nullopt;
     return std::move(geometry_);
   }
@@ -79,14 +79,18 @@ class GeometryReader {
     return roots;
   }
 
-  // The hierarchy is a checked forest (node_hierarchy.hpp), so recursion ends; its
-  // depth is bounded by the node count, which the 64 MiB JSON limit bounds in turn.
-  void visit(int index, const glm::mat4& parent) {
-    if (failed_) return;
-    glm::mat4 world = parent * localTransform(index);
-    const auto& node = m_.nodes[index];
-    if (node.mesh >= 0) addMesh(node.mesh, world);
-    for (int child : node.children) visit(child, world);
+  // The hierarchy is a checked forest (node_hierarchy.hpp), so this ends and visits
+  // each node once; an explicit stack, because a file may chain millions of nodes.
+  void visitTree(int root) {
+    std::vector<std::pair<int, glm::mat4>> pending{{root, glm::mat4(1.f)}};
+    while (!pending.empty() && !failed_) {
+      auto [index, parent] = pending.back();
+      pending.pop_back();
+      glm::mat4 world = parent * localTransform(index);
+      const auto& node = m_.nodes[index];
+      if (node.mesh >= 0) addMesh(node.mesh, world);
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) pending.push_back({*child, world});
+    }
   }
 
   glm::mat4 localTransform(int index) {
@@ -215,9 +219,15 @@ class GeometryReader {
 
   void addPrimitive(ModelPrimitive p, const std::string& pointer) {
     geometry_.triangleCount += p.indices.size() / 3;
+    vertexCount_ += p.positions.size();
     if (geometry_.triangleCount > kMaxModelTriangles) {
       fail(DiagCode::ResourceLimit, pointer, "the triangle count of the scene", std::to_string(geometry_.triangleCount),
            std::to_string(kMaxModelTriangles));
+      return;
+    }
+    if (vertexCount_ > kMaxModelVertices) {
+      fail(DiagCode::ResourceLimit, pointer, "the vertex count of the scene (instances counted)", std::to_string(vertexCount_),
+           std::to_string(kMaxModelVertices));
       return;
     }
     geometry_.primitives.push_back(std::move(p));
@@ -259,12 +269,31 @@ class GeometryReader {
            "re-export the model with plain accessors");
       return false;
     }
+    if (a.count > kMaxModelVertices) {
+      fail(DiagCode::ResourceLimit, at, "the element count of accessor " + std::to_string(index), std::to_string(a.count),
+           std::to_string(kMaxModelVertices));
+      return false;
+    }
+    const tinygltf::BufferView* view = a.bufferView >= 0 ? &m_.bufferViews[a.bufferView] : nullptr;
+    if (view && a.count > view->byteLength) {  // cannot fit, and would overflow the range check below
+      fail(DiagCode::GltfInvalidData, at,
+           "accessor " + std::to_string(index) + " claims " + std::to_string(a.count) + " elements in a buffer view of " +
+               std::to_string(view->byteLength) + " bytes",
+           "re-export the model; the accessor does not fit its buffer view");
+      return false;
+    }
     out.assign(a.count, glm::vec4(0.f, 0.f, 0.f, 1.f));
-    if (a.bufferView < 0) return true;  // glTF: all zeros
-    const auto& view = m_.bufferViews[a.bufferView];
+    if (!view) return true;  // glTF: all zeros
+    return readElements(*view, a, index, at, components, bytes, out);
+  }
+
+  bool readElements(const tinygltf::BufferView& view, const tinygltf::Accessor& a, int index, const std::string& at, int components,
+                    int bytes, std::vector<glm::vec4>& out) {
     std::size_t element = std::size_t(components) * bytes, stride = view.byteStride ? view.byteStride : element;
+    constexpr std::size_t kMaxStride = 252;  // glTF 2.0, bufferView.byteStride
+    bool sane = a.byteOffset <= view.byteLength && stride <= kMaxStride;  // so the sum below cannot overflow
     std::uint64_t end = a.count ? std::uint64_t(a.byteOffset) + std::uint64_t(stride) * (a.count - 1) + element : 0;
-    if (stride < element || end > view.byteLength) {
+    if (!sane || stride < element || end > view.byteLength) {
       fail(DiagCode::GltfInvalidData, at,
            "accessor " + std::to_string(index) + " reads " + std::to_string(end) + " bytes of buffer view " +
                std::to_string(a.bufferView) + ", which has " + std::to_string(view.byteLength),
@@ -319,6 +348,7 @@ class GeometryReader {
   const tinygltf::Model& m_;
   DiagnosticList& diags_;
   ModelGeometry geometry_;
+  std::size_t vertexCount_ = 0;
   bool failed_ = false;
 };
 

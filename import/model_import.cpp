@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <map>
+#include <tuple>
 
 #include "import/material_graph_writer.hpp"
 
@@ -43,6 +44,19 @@ std::vector<std::string> graphStems(const tinygltf::Model& model, const std::str
 
 std::string asText(const Json& json) { return json.dump(2) + "\n"; }
 
+// One file per material and per image: bound what a small hostile file can make us write.
+constexpr std::size_t kMaxFilesPerKind = 16384;
+
+bool withinFileCounts(const Asset& asset, DiagnosticList& diags) {
+  for (auto [what, pointer, count] : {std::tuple{"the material count", "/materials", asset.model.materials.size()},
+                                      std::tuple{"the image count", "/images", asset.model.images.size()}})
+    if (count > kMaxFilesPerKind) {
+      diags.report(DiagCode::ResourceLimit, asset.locate(pointer), {what, std::to_string(count), std::to_string(kMaxFilesPerKind)});
+      return false;
+    }
+  return true;
+}
+
 }  // namespace
 
 std::string fileSafeName(std::string_view text, std::string_view fallback) {
@@ -61,6 +75,7 @@ std::string fileSafeName(std::string_view text, std::string_view fallback) {
 
 std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const ImportSettings& settings,
                                          DiagnosticList& diags) {
+  if (!withinFileCounts(asset, diags)) return std::nullopt;
   const auto& model = asset.model;
   std::string modelStem = fileSafeName(std::filesystem::path(asset.file).stem().string(), "model");
   ImportedModel out;

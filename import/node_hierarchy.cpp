@@ -1,5 +1,7 @@
 #include "import/node_hierarchy.hpp"
 
+#include <cstdint>
+
 namespace wg::gltf {
 
 namespace {
@@ -27,15 +29,25 @@ bool checkNodeHierarchy(const Asset& asset, DiagnosticList& diags) {
                     std::to_string(p)});
       return false;
     }
-  // With one parent each, a node that cannot climb to a root within nodes.size() steps is on a cycle.
+  // With one parent each, climbing from a node ends at a root or runs into a cycle.
+  // Nodes proven to reach a root are remembered, so the whole check is linear.
+  enum : std::uint8_t { Unknown, ReachesRoot, OnPath };
+  std::vector<std::uint8_t> state(nodes.size(), Unknown);
+  std::vector<int> path;
   for (std::size_t n = 0; n < nodes.size(); ++n) {
+    path.clear();
     int at = static_cast<int>(n);
-    std::size_t steps = 0;
-    while (parent[at] != kNoParent && steps <= nodes.size()) at = parent[at], ++steps;
-    if (parent[at] == kNoParent) continue;
-    diags.report(DiagCode::GltfNodeHierarchy, asset.locate("/nodes/" + std::to_string(n)),
-                 {"node " + std::to_string(n) + " is its own ancestor (" + describeCycle(parent, static_cast<int>(n)) + ")"});
-    return false;
+    while (at != kNoParent && state[at] == Unknown) {
+      state[at] = OnPath;
+      path.push_back(at);
+      at = parent[at];
+    }
+    if (at != kNoParent && state[at] == OnPath) {
+      diags.report(DiagCode::GltfNodeHierarchy, asset.locate("/nodes/" + std::to_string(at)),
+                   {"node " + std::to_string(at) + " is its own ancestor (" + describeCycle(parent, at) + ")"});
+      return false;
+    }
+    for (int p : path) state[p] = ReachesRoot;
   }
   for (std::size_t s = 0; s < asset.model.scenes.size(); ++s)
     for (std::size_t i = 0; i < asset.model.scenes[s].nodes.size(); ++i) {
