@@ -28,6 +28,10 @@ done
 # camera leaves the deformation window and comes back to find them restored.
 build/weathergen render --scene snowfield --size 640x360 --frames out/gallery/frames-snowfield \
   -o out/gallery/snowfield.png
+# One material on the preview stand (sphere, rock, ramp, cube on a post, roof) through the
+# seasons: render --material takes any graph file.
+build/weathergen render --material graphs/rock.json --timeline runtime/timelines/seasons.json \
+  --size 640x360 --frames out/gallery/frames-stand -o out/gallery/stand-rock.png
 # Content nobody here wrote: glTF 2.0 models from Debian's assimp-testmodels, their
 # materials imported as graphs (docs/gltf-import.md) and weathered through the seasons.
 models=/usr/share/assimp/models/glTF2
