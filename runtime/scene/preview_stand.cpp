@@ -24,6 +24,7 @@ constexpr int kRockDetail = 4;
 constexpr float kRockBedding = 0.1f;  // sunk this far into the ground
 constexpr glm::vec2 kRockAt{0.f, -1.4f};
 constexpr glm::vec3 kRampSize{2.f, 2.f, 2.f};  // as tall as deep: 45 degrees
+constexpr float kRampBevel = 0.06f;
 constexpr glm::vec2 kRampAt{1.6f, 1.2f};
 // Turned so the front camera sees a side and the slope, and the slope faces the sun.
 constexpr float kRampYawDegrees = 60.f;
@@ -52,7 +53,8 @@ SceneObject shape(std::string name, const std::string& graph, Mesh mesh, glm::ma
 }
 
 // The cube stands on one edge, tilted 45 degrees: its upper faces slope up, its lower
-// faces overhang, its sides are vertical.
+// faces overhang, its sides are vertical. The shapes' edges are rounded: eq. 3.10's
+// snow moves vertices along their normals and would lift hard-edged faces apart.
 std::vector<SceneObject> cubeOnPost(const std::string& graph) {
   float halfDiagonal = 0.5f * kCubeSize * glm::root_two<float>();
   glm::mat4 model = turned(turned(at({kCubeAt.x, kPostHeight + halfDiagonal, kCubeAt.y}), kCubeYawDegrees, kYAxis), 45.f, kXAxis);
@@ -81,7 +83,7 @@ std::vector<SceneObject> standObjects(const std::string& graph) {
   std::vector<SceneObject> objects = {
       shape("sphere", graph, sphere(kSphereRadius), at({kSphereAt.x, kSphereRadius, kSphereAt.y})),
       shape("rock", graph, std::move(boulder), at({kRockAt.x, rockY, kRockAt.y})),
-      shape("ramp", graph, ramp(kRampSize), turned(at({kRampAt.x, 0.f, kRampAt.y}), kRampYawDegrees, kYAxis)),
+      shape("ramp", graph, ramp(kRampSize, kRampBevel), turned(at({kRampAt.x, 0.f, kRampAt.y}), kRampYawDegrees, kYAxis)),
   };
   for (auto& o : cubeOnPost(graph)) objects.push_back(std::move(o));
   objects.push_back(shape("roof", kFurnitureGraph, roof(), glm::mat4(1.f)));

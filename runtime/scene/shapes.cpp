@@ -149,9 +149,100 @@ void addFlatFace(Mesh& m, const std::vector<glm::vec3>& corners, glm::vec3 norma
 }
 }  // namespace
 
-Mesh ramp(glm::vec3 size) {
+namespace {
+// A point of a rounded convex outline in a (z, y) profile: the corner of the outline
+// shrunk by the radius, and the outward normal there.
+struct OutlinePoint {
+  glm::vec2 inner, normal;
+};
+
+// The outline of a convex polygon (corners in order) with every corner rounded by r:
+// each corner's arc, steps + 1 normals from one edge's to the next's.
+std::vector<OutlinePoint> roundedOutline(const std::vector<glm::vec2>& corners, float r, int steps) {
+  const std::size_t n = corners.size();
+  glm::vec2 centroid(0.f);
+  for (glm::vec2 c : corners) centroid += c / float(n);
+  std::vector<glm::vec2> edgeNormal(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    glm::vec2 d = corners[(i + 1) % n] - corners[i], normal = glm::normalize(glm::vec2(d.y, -d.x));
+    edgeNormal[i] = glm::dot(normal, 0.5f * (corners[i] + corners[(i + 1) % n]) - centroid) < 0.f ? -normal : normal;
+  }
+  std::vector<OutlinePoint> outline;
+  for (std::size_t i = 0; i < n; ++i) {
+    glm::vec2 from = edgeNormal[(i + n - 1) % n], to = edgeNormal[i];
+    glm::vec2 inner = corners[i] - r * (from + to) / (1.f + glm::dot(from, to));  // r from both edges
+    float a0 = std::atan2(from.y, from.x), turn = std::remainder(std::atan2(to.y, to.x) - a0, 2.f * kPi);
+    for (int k = 0; k <= steps; ++k) {
+      float a = a0 + turn * float(k) / float(steps);
+      outline.push_back({inner, {std::cos(a), std::sin(a)}});
+    }
+  }
+  return outline;
+}
+
+// Adds triangle a, b, c unless it has no area (where a rounded corner closes to a point).
+void addTriangleIfAny(Mesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c, glm::vec3 outward) {
+  glm::vec3 cross = glm::cross(m.positions[b] - m.positions[a], m.positions[c] - m.positions[a]);
+  if (glm::length(cross) > 1e-10f) addTriangleFacing(m, a, b, c, outward);
+}
+
+// A convex (z, y) profile extruded along x over `width`, every edge and corner rounded
+// by r: a band round the outline, a quarter-turn band at each end, and flat end faces.
+// Bands run round the outline once more to its first point, so their v (the length
+// along the outline) never wraps.
+Mesh roundedPrism(const std::vector<glm::vec2>& profile, float width, float r, int steps) {
   Mesh m;
+  auto outline = roundedOutline(profile, r, steps);
+  outline.push_back(outline.front());
+  const float a = 0.5f * width - r;
+  std::vector<float> along(1, 0.f);  // length of the outline so far
+  for (std::size_t j = 1; j < outline.size(); ++j)
+    along.push_back(along.back() + glm::distance(outline[j].inner + r * outline[j].normal,
+                                                 outline[j - 1].inner + r * outline[j - 1].normal));
+  // A row round the outline at x, turned by (cos, sin) from the profile plane towards x.
+  auto row = [&](float x, float c, float s, float side, bool planarUv) {
+    std::vector<std::uint32_t> ids;
+    for (std::size_t j = 0; j < outline.size(); ++j) {
+      const OutlinePoint& p = outline[j];
+      glm::vec3 normal(side * s, c * p.normal.y, c * p.normal.x);
+      glm::vec3 position = glm::vec3(x, p.inner.y, p.inner.x) + r * normal;
+      glm::vec2 uv = planarUv ? glm::vec2(position.z, position.y) : glm::vec2(position.x, along[j]);
+      ids.push_back(addVertex(m, position, normal, uv));
+    }
+    return ids;
+  };
+  auto band = [&](const std::vector<std::uint32_t>& lo, const std::vector<std::uint32_t>& hi) {
+    for (std::size_t j = 0; j + 1 < lo.size(); ++j) {
+      glm::vec3 outward = m.normals[lo[j]] + m.normals[lo[j + 1]] + m.normals[hi[j]] + m.normals[hi[j + 1]];
+      addTriangleIfAny(m, lo[j], lo[j + 1], hi[j + 1], outward);
+      addTriangleIfAny(m, lo[j], hi[j + 1], hi[j], outward);
+    }
+  };
+  band(row(-a, 1.f, 0.f, 1.f, false), row(a, 1.f, 0.f, 1.f, false));
+  for (float side : {-1.f, 1.f}) {
+    std::vector<std::uint32_t> previous = row(side * a, 1.f, 0.f, side, true);
+    for (int k = 1; k <= steps; ++k) {
+      float turn = 0.5f * kPi * float(k) / float(steps);
+      auto next = k == steps ? row(side * a, 0.f, 1.f, side, true) : row(side * a, std::cos(turn), std::sin(turn), side, true);
+      band(previous, next);
+      previous = std::move(next);
+    }
+    // The end face: the outline's corners on the last row, one per corner arc.
+    for (std::size_t i = 1; i + 1 < profile.size(); ++i)
+      addTriangleIfAny(m, previous[0], previous[i * (steps + 1)], previous[(i + 1) * (steps + 1)], {side, 0.f, 0.f});
+  }
+  computeTangents(m);
+  return m;
+}
+}  // namespace
+
+Mesh ramp(glm::vec3 size, float edgeRadius, int bevelSteps) {
   const float x = 0.5f * size.x, z = 0.5f * size.z, h = size.y;
+  if (edgeRadius > 0.f) {
+    float r = std::min({edgeRadius, 0.25f * size.x, 0.25f * size.y, 0.25f * size.z});
+    return roundedPrism({{z, 0.f}, {-z, 0.f}, {-z, h}}, size.x, r, std::max(bevelSteps, 1));
+  }
+  Mesh m;
   addFlatFace(m, {{-x, 0.f, -z}, {x, 0.f, -z}, {x, 0.f, z}, {-x, 0.f, z}}, -kUp);
   addFlatFace(m, {{-x, 0.f, -z}, {x, 0.f, -z}, {x, h, -z}, {-x, h, -z}}, {0.f, 0.f, -1.f});
   addFlatFace(m, {{-x, 0.f, z}, {x, 0.f, z}, {x, h, -z}, {-x, h, -z}}, glm::normalize(glm::vec3(0.f, size.z, h)));

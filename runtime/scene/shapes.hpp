@@ -34,8 +34,10 @@ Mesh roundedBox(glm::vec3 min, glm::vec3 max, float radius, int bevelSteps = 4);
 // A wedge standing on its base: size.x wide (x), size.z deep (z), size.y tall at its
 // back (the -z face, vertical); the slope rises from the front edge (z = +size.z / 2,
 // y = 0) to the back's top edge. The base is centred on the origin. Flat faces, uv in
-// metres in each face's plane.
-Mesh ramp(glm::vec3 size);
+// metres in each face's plane. With an edgeRadius, edges and corners are rounded as
+// roundedBox's are (bevelSteps segments per quarter turn): faces keep their planes, and
+// the two 45 degree corners recede by about 1.6 times the radius.
+Mesh ramp(glm::vec3 size, float edgeRadius = 0.f, int bevelSteps = 4);
 
 // Square height field centred on the world origin: `resolution` x `resolution` cells of
 // size / resolution metres, (resolution + 1)^2 vertices at y = heightFn(x, z), normals

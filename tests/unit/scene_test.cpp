@@ -311,6 +311,31 @@ TEST(SceneShapes, RampRisesAtItsAngleFromTheFrontEdge) {
   EXPECT_GT(top->normal.z, 0.f);  // the slope faces +z
 }
 
+TEST(SceneShapes, RoundedRampKeepsItsBoundsAndSlopeAndNeverTears) {
+  Mesh m = ramp({2.f, 1.f, 1.f}, 0.1f);
+  expectWellFormed(m, "rounded ramp");
+  EXPECT_TRUE(closedAndConsistent(m));
+  Bounds b = bounds(m);
+  EXPECT_LT(glm::distance(b.min, glm::vec3(-1.f, 0.f, -0.5f)), 1e-5f);
+  // The 45 degree corners (the slope's ends) recede more than the radius.
+  EXPECT_NEAR(b.max.x, 1.f, 1e-5f);
+  EXPECT_GT(b.max.y, 0.8f);
+  EXPECT_LT(b.max.y, 1.f);
+  EXPECT_GT(b.max.z, 0.3f);
+  EXPECT_LT(b.max.z, 0.5f);
+  auto slope = topSurfaceAt(m, 0.f, 0.f);  // the flat middle of the slope keeps its plane
+  ASSERT_TRUE(slope);
+  EXPECT_NEAR(slope->position.y, 0.5f, 1e-5f);
+  EXPECT_LT(signedVolume(m), 1.0);
+  EXPECT_GT(signedVolume(m), 0.85);
+  EXPECT_NEAR(tiltDegrees(slope->normal), 45.f, 1e-3f);
+  std::map<std::tuple<float, float, float>, glm::vec3> normalAt;
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    auto [it, inserted] = normalAt.try_emplace({m.positions[i].x, m.positions[i].y, m.positions[i].z}, m.normals[i]);
+    ASSERT_LT(glm::distance(it->second, m.normals[i]), 1e-4f) << "vertex " << i;
+  }
+}
+
 TEST(SceneShapes, RocksAreClosedSeededAndDeterministic) {
   Mesh a = rock(7, 2.f, 3), again = rock(7, 2.f, 3), other = rock(8, 2.f, 3);
   expectWellFormed(a, "rock");
