@@ -21,11 +21,12 @@ std::string clockTime() {
   return text;
 }
 
-void printRenderLine(const WatchedRender& result, double milliseconds, const std::string& output) {
-  if (result.exitCode == kExitOk)
-    std::printf("%s  rendered %s in %.0f ms\n", clockTime().c_str(), output.c_str(), milliseconds);
-  else
-    std::printf("%s  failed after %.0f ms; kept the last good %s\n", clockTime().c_str(), milliseconds, output.c_str());
+void printRenderLine(const WatchedRender& result, double milliseconds, const std::string& output, bool earlierGood) {
+  const std::string now = clockTime();
+  const char *at = now.c_str(), *out = output.c_str();
+  if (result.exitCode == kExitOk) std::printf("%s  rendered %s in %.0f ms\n", at, out, milliseconds);
+  else if (earlierGood) std::printf("%s  failed after %.0f ms; kept the last good %s\n", at, milliseconds, out);
+  else std::printf("%s  failed after %.0f ms; nothing written to %s yet\n", at, milliseconds, out);
   std::fflush(stdout);
 }
 
@@ -45,13 +46,14 @@ bool waitForChange(const FileStamps& stamps, const StopSignal& stop, std::chrono
 int watchAndRender(const std::function<WatchedRender()>& render, const WatchSettings& settings) {
   StopSignal stop;
   std::vector<std::string> watched = settings.initialFiles;
-  bool announced = !settings.announce;
+  bool announced = !settings.announce, anyGood = false;
   for (unsigned renders = 1;; ++renders) {
     FileStamps stamps(watched);  // before the render: an edit during it counts
     auto start = std::chrono::steady_clock::now();
     WatchedRender result = render();
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    printRenderLine(result, ms, settings.output);
+    printRenderLine(result, ms, settings.output, anyGood);
+    anyGood = anyGood || result.exitCode == kExitOk;
     if (result.exitCode != kExitOk && result.exitCode != kExitBadInput) return result.exitCode;
     if (result.exitCode == kExitOk && !result.inputFiles.empty()) {
       watched = result.inputFiles;
