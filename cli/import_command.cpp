@@ -2,6 +2,7 @@
 // (docs/gltf-import.md).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -91,18 +92,12 @@ int parseOptions(int argc, char** argv, ImportOptions& o) {
 // The model and the files it reads must never be replaced by an output.
 std::string outputOverwritesInput(const gltf::Asset& asset, const std::filesystem::path& dir, const gltf::ImportedModel& imported) {
   std::error_code ec;
-  std::filesystem::path model = std::filesystem::weakly_canonical(asset.file, ec);
+  std::vector<std::filesystem::path> inputs;
+  for (const auto& f : asset.inputFiles()) inputs.push_back(std::filesystem::weakly_canonical(f, ec));
   for (const auto& f : imported.files) {
     std::filesystem::path target = std::filesystem::weakly_canonical(dir / f.name, ec);
-    if (target == model) return "the output '" + quoteUserText(f.name) + "' would replace the model itself";
-    for (const auto& b : asset.model.buffers)
-      if (!b.uri.empty() && !b.uri.starts_with("data:") &&
-          target == std::filesystem::weakly_canonical(model.parent_path() / b.uri, ec))
-        return "the output '" + quoteUserText(f.name) + "' would replace the model's buffer file";
-    for (const auto& i : asset.model.images)
-      if (!i.uri.empty() && !i.uri.starts_with("data:") &&
-          target == std::filesystem::weakly_canonical(model.parent_path() / i.uri, ec))
-        return "the output '" + quoteUserText(f.name) + "' would replace one of the model's images";
+    if (std::find(inputs.begin(), inputs.end(), target) != inputs.end())
+      return "the output '" + quoteUserText(f.name) + "' would replace the model or a file it reads";
   }
   return "";
 }

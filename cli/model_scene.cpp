@@ -1,5 +1,7 @@
 #include "cli/model_scene.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -60,12 +62,8 @@ scene::Mesh toMesh(const gltf::ModelPrimitive& p) {
 }
 
 std::vector<std::string> modelInputFiles(const gltf::Asset& asset) {
-  std::vector<std::string> files{asset.file};
-  std::filesystem::path folder = std::filesystem::path(asset.file).parent_path();
-  for (const auto& b : asset.model.buffers)
-    if (!b.uri.empty() && !b.uri.starts_with("data:")) files.push_back((folder / b.uri).string());
-  for (const auto& i : asset.model.images)
-    if (!i.uri.empty() && !i.uri.starts_with("data:")) files.push_back((folder / i.uri).string());
+  std::vector<std::string> files;
+  for (const auto& f : asset.inputFiles()) files.push_back(f.string());
   return files;
 }
 
@@ -96,13 +94,25 @@ std::vector<scene::SceneObject> modelObjects(const gltf::ModelGeometry& geometry
 
 // Scales the model to metres and stands it at the origin: its lowest point on y = 0 and
 // its footprint centred, wherever the file placed it, so the weather's height terms see
-// the same ground for every model.
-void standAtOrigin(std::vector<scene::SceneObject>& objects, float scale) {
+// the same ground for every model. False when the placed model is larger than a stage
+// can frame (its ground, 4 times as wide, must stay far inside float range).
+bool standAtOrigin(std::vector<scene::SceneObject>& objects, float scale) {
+  constexpr float kLargestExtent = 1e6f;  // metres
   scene::Bounds b;
   glm::mat4 scaled = glm::scale(glm::mat4(1.f), glm::vec3(scale));
   for (const auto& o : objects) b.include(scene::bounds(o.mesh, scaled * o.model));
+  glm::vec3 size = b.max - b.min;
+  if (!(std::max({size.x, size.y, size.z}) <= kLargestExtent)) return false;
   glm::mat4 place = glm::translate(glm::mat4(1.f), -glm::vec3(0.5f * (b.min.x + b.max.x), b.min.y, 0.5f * (b.min.z + b.max.z)));
   for (auto& o : objects) o.model = place * scaled * o.model;
+  return true;
+}
+
+int modelError(const gltf::Asset& asset, const std::string& message, const std::string& hint) {
+  DiagnosticList list;
+  list.report(DiagCode::GltfInvalidData, asset.locate(""), {message, hint});
+  printDiagnostics(list.items(), false);
+  return kExitBadInput;
 }
 
 }  // namespace
@@ -116,20 +126,18 @@ int loadModelScene(const std::string& modelPath, const gltf::ImportSettings& set
   if (geometry) imported = gltf::importModel(*asset, *geometry, settings, diagnostics);
   printDiagnostics(diagnostics.items(), false);
   if (!imported) return kExitBadInput;
-  out.graphs = TemporaryDirectory::create("weathergen-model");
-  if (std::string e = writeImported(*imported, out.graphs->path()); !e.empty()) {
-    std::fprintf(stderr, "weathergen: error: %s\n", e.c_str());
-    return kExitInternal;
+  try {
+    out.graphs = TemporaryDirectory::create("weathergen-model");
+  } catch (const std::exception& e) {
+    return usageError(std::string(e.what()) + " (set TMPDIR to a writable directory)");
   }
+  if (std::string e = writeImported(*imported, out.graphs->path()); !e.empty()) return usageError(e + " (check TMPDIR)");
   std::vector<scene::SceneObject> objects = modelObjects(*geometry, *imported, out.graphs->path());
-  standAtOrigin(objects, scale);
-  if (objects.empty()) {
-    DiagnosticList empty;
-    empty.report(DiagCode::GltfInvalidData, asset->locate(""),
-                 {"the model's scene draws no triangles", "render a model whose scene holds at least one triangle mesh"});
-    printDiagnostics(empty.items(), false);
-    return kExitBadInput;
-  }
+  if (objects.empty())
+    return modelError(*asset, "the model's scene draws no triangles", "render a model whose scene holds at least one triangle mesh");
+  if (!standAtOrigin(objects, scale))
+    return modelError(*asset, "the model spans more than 1000 km at --model-scale " + std::to_string(scale),
+                      "pass a smaller --model-scale (0.001 for millimetres), or re-export the model with sensible coordinates");
   out.scene = scene::stageAround("model-" + gltf::fileSafeName(std::filesystem::path(modelPath).stem().string(), "model"), std::move(objects));
   out.inputFiles = modelInputFiles(*asset);
   return kExitOk;

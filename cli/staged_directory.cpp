@@ -7,11 +7,13 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "compiler/literal.hpp"
+
 namespace wg {
 
 namespace {
 std::string systemError(const std::string& what, const std::filesystem::path& path) {
-  return what + " '" + path.string() + "': " + std::strerror(errno);
+  return what + " '" + quoteUserText(path.string(), 300) + "': " + std::strerror(errno);
 }
 }  // namespace
 
@@ -30,7 +32,7 @@ std::string StagedDirectory::ensureStaging() {
        p = p.parent_path())
     created_.insert(created_.begin(), p);
   std::filesystem::create_directories(directory_, ec);
-  if (ec) return "cannot create the output directory '" + directory_.string() + "': " + ec.message();
+  if (ec) return "cannot create the output directory '" + quoteUserText(directory_.string(), 300) + "': " + ec.message();
   std::string pattern = (directory_ / ".weathergen-staging-XXXXXX").string();
   if (!::mkdtemp(pattern.data())) return systemError("cannot create a staging folder in", directory_);
   staging_ = pattern;
@@ -62,7 +64,7 @@ std::string StagedDirectory::publish() {
     std::filesystem::path target = directory_ / name;
     std::error_code ec;
     if (std::filesystem::is_directory(std::filesystem::symlink_status(target, ec)))
-      return "cannot write '" + target.string() + "': a directory has that name";
+      return "cannot write '" + quoteUserText(target.string(), 300) + "': a directory has that name";
   }
   published_ = true;  // from here on the folder holds output, whatever happens next
   for (const auto& name : names_)

@@ -1,5 +1,7 @@
 #include "compiler/diagnostic.hpp"
 
+#include "compiler/literal.hpp"
+
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
@@ -47,8 +49,11 @@ namespace {
 std::string_view severityName(Severity s) { return s == Severity::Error ? "error" : "warning"; }
 }  // namespace
 
+// The file name and the pointer come from user text (paths, JSON keys): control
+// characters in them never reach the terminal raw.
 std::string formatDiagnosticText(const Diagnostic& d) {
-  std::string out = d.location.file.empty() ? std::string("weathergen") : d.location.file;
+  constexpr std::size_t kShown = 1024;
+  std::string out = d.location.file.empty() ? std::string("weathergen") : quoteUserText(d.location.file, kShown);
   if (d.location.line > 0)
     out += ":" + std::to_string(d.location.line) + ":" + std::to_string(d.location.column);
   out += ": ";
@@ -56,7 +61,7 @@ std::string formatDiagnosticText(const Diagnostic& d) {
   out += " ";
   out += d.info().id;
   out += ": " + d.message;
-  if (!d.location.file.empty()) out += " [" + (d.location.pointer.empty() ? "/" : d.location.pointer) + "]";
+  if (!d.location.file.empty()) out += " [" + (d.location.pointer.empty() ? "/" : quoteUserText(d.location.pointer, kShown)) + "]";
   out += "\n";
   if (!d.hint.empty()) out += "  hint: " + d.hint + "\n";
   return out;

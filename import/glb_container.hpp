@@ -1,7 +1,9 @@
 // The binary glTF container (GLB, glTF 2.0 section 4.4): a 12-byte header, a JSON chunk
-// and an optional BIN chunk. Every length is checked against the bytes actually there,
-// so a file whose header or chunk lengths lie is an error here, before any parser
-// trusts them.
+// and an optional BIN chunk. The header's and these two chunks' lengths are checked
+// against the bytes actually there, so a file whose lengths lie is an error here,
+// before any parser trusts them. Bytes after the BIN chunk are left alone, as the
+// specification asks for chunks of unknown types. A second chunk that is not BIN is
+// refused: tinygltf reads only that layout.
 #pragma once
 #include <cstdint>
 #include <optional>

@@ -137,6 +137,31 @@ bool checkRequiredExtensions(const JsonDocument& doc, DiagnosticList& diags) {
   return ok;
 }
 
+// tinygltf hands an image its buffer view's bytes without checking that the view lies
+// inside its buffer, so every view is checked against its buffer's declared byteLength
+// first (tinygltf then insists each buffer holds exactly that many bytes). Unsigned
+// comparisons that cannot overflow, whatever the file says.
+bool checkDeclaredRanges(const JsonDocument& doc, DiagnosticList& diags) {
+  const auto& root = doc.root();
+  if (!root.contains("bufferViews")) return true;
+  bool ok = true;
+  const auto& views = root["bufferViews"];
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const auto& v = views[i];
+    auto buffer = v["buffer"].get<std::size_t>();  // the schema check made it a valid index
+    auto have = root["buffers"][buffer]["byteLength"].get<std::uint64_t>();
+    auto offset = v.value("byteOffset", std::uint64_t{0}), length = v["byteLength"].get<std::uint64_t>();
+    if (offset <= have && length <= have - offset) continue;
+    ok = false;
+    diags.report(DiagCode::GltfInvalidData, doc.locate(appendPointer("/bufferViews", i)),
+                 {"buffer view " + std::to_string(i) + " (byteOffset " + std::to_string(offset) + ", byteLength " +
+                      std::to_string(length) + ") does not fit buffer " + std::to_string(buffer) + " (" + std::to_string(have) +
+                      " bytes)",
+                  "re-export the model; its buffer views do not fit their buffers"});
+  }
+  return ok;
+}
+
 // tinygltf reports everything as text; images we refused have a better message already.
 void reportParseFailure(const Asset& asset, const LoadContext& ctx, const std::string& err, DiagnosticList& diags) {
   bool reported = false;
@@ -168,11 +193,20 @@ bool parseWithTinygltf(Asset& asset, const std::vector<std::uint8_t>& bytes, boo
     return false;
   }
   ctx.images.resize(asset.model.images.size());
+  // tinygltf only warns about an external image it cannot find (and it decodes '+' in
+  // URIs as a space, unlike RFC 3986), so every image must have reached acceptImage.
+  for (std::size_t i = 0; i < ctx.images.size(); ++i)
+    if (ctx.images[i].bytes.empty()) {
+      diags.report(DiagCode::GltfResource, asset.locate(appendPointer("/images", i)),
+                   {"image " + std::to_string(i), "it could not be read (" + quoteUserText(warn, 200) + ")",
+                    "check the file beside the model; rename files whose names hold '+'"});
+      return false;
+    }
   asset.images = std::move(ctx.images);
   return true;
 }
 
-// tinygltf trusts byteLength and byteOffset; every later read relies on these holding.
+// Every buffer holds the bytes it declares, so the checked views lie inside real data.
 bool checkBufferRanges(const Asset& asset, DiagnosticList& diags) {
   bool ok = true;
   const auto& m = asset.model;
@@ -186,21 +220,17 @@ bool checkBufferRanges(const Asset& asset, DiagnosticList& diags) {
                   "it declares " + std::to_string(byteLength) + " bytes but holds " + std::to_string(m.buffers[i].data.size()),
                   "re-export the model; its binary data is truncated"});
   }
-  for (std::size_t i = 0; i < m.bufferViews.size(); ++i) {
-    const auto& v = m.bufferViews[i];
-    std::size_t have = static_cast<std::size_t>(v.buffer) < m.buffers.size() ? m.buffers[v.buffer].data.size() : 0;
-    if (v.byteOffset <= have && v.byteLength <= have - v.byteOffset) continue;
-    std::uint64_t end = std::uint64_t(v.byteOffset) + v.byteLength;
-    ok = false;
-    diags.report(DiagCode::GltfInvalidData, asset.locate(appendPointer("/bufferViews", i)),
-                 {"buffer view " + std::to_string(i) + " ends at byte " + std::to_string(end) + ", past the end of buffer " +
-                      std::to_string(v.buffer) + " (" + std::to_string(have) + " bytes)",
-                  "re-export the model; its buffer views do not fit their buffers"});
-  }
   return ok;
 }
 
 }  // namespace
+
+std::vector<std::filesystem::path> Asset::inputFiles() const {
+  std::filesystem::path model = std::filesystem::absolute(file);
+  std::vector<std::filesystem::path> files{model};
+  for (auto& f : externalFiles(*document, model.parent_path())) files.push_back(std::move(f));
+  return files;
+}
 
 bool canReadRequiredExtension(std::string_view name) {
   return name == "KHR_texture_transform" || name == "KHR_materials_emissive_strength" || name == "KHR_mesh_quantization";
@@ -216,6 +246,7 @@ std::optional<Asset> loadAsset(const std::string& path, DiagnosticList& diags) {
   std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
   bool glb = looksLikeGlb(bytes);
   std::string text;
+  std::optional<std::size_t> glbBin;  // the BIN chunk's size, when the file has one
   if (glb) {
     std::string error;
     auto chunks = splitGlb(bytes, error);
@@ -224,6 +255,7 @@ std::optional<Asset> loadAsset(const std::string& path, DiagnosticList& diags) {
       return std::nullopt;
     }
     text = std::string(chunks->json);
+    if (!chunks->bin.empty()) glbBin = chunks->bin.size();
   } else {
     text.assign(bytes.begin(), bytes.end());
   }
@@ -232,8 +264,8 @@ std::optional<Asset> loadAsset(const std::string& path, DiagnosticList& diags) {
   Asset asset;
   asset.file = path;
   asset.document = std::make_shared<const JsonDocument>(std::move(*document));
-  if (!checkSchema(*asset.document, diags) || !checkRequiredExtensions(*asset.document, diags) ||
-      !checkResourceUris(*asset.document, folder, diags))
+  if (!checkSchema(*asset.document, diags) || !checkDeclaredRanges(*asset.document, diags) ||
+      !checkRequiredExtensions(*asset.document, diags) || !checkResourceUris(*asset.document, folder, glbBin, diags))
     return std::nullopt;
   if (!parseWithTinygltf(asset, bytes, glb, folder, diags) || !checkBufferRanges(asset, diags) || !checkNodeHierarchy(asset, diags))
     return std::nullopt;

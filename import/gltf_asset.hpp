@@ -31,6 +31,8 @@ struct Asset {
   std::vector<EncodedImage> images;  // parallel to model.images
 
   SourceLocation locate(const std::string& pointer) const { return document->locate(pointer); }
+  // The model file and every external buffer and image it reads, resolved.
+  std::vector<std::filesystem::path> inputFiles() const;
 };
 
 // Extensions a model may list in extensionsRequired: their meaning is read.

@@ -86,13 +86,28 @@ std::string fileUriProblem(std::string_view uri, const std::filesystem::path& fo
   return "";
 }
 
+// A buffer without a uri is the GLB's BIN chunk, which only buffer 0 may be.
+std::string missingUriProblem(std::size_t index, std::optional<std::size_t> glbBinBytes) {
+  if (index == 0 && glbBinBytes) return "";
+  if (index == 0) return "it has no uri, and the file has no GLB BIN chunk for it";
+  return "it has no uri; only the first buffer of a .glb may use its BIN chunk";
+}
+
 void checkUris(const JsonDocument& doc, const char* collection, bool image, const std::filesystem::path& folder,
-               DiagnosticList& diags, bool& ok) {
+               std::optional<std::size_t> glbBinBytes, DiagnosticList& diags, bool& ok) {
   auto it = doc.root().find(collection);
   if (it == doc.root().end() || !it->is_array()) return;
   for (std::size_t i = 0; i < it->size(); ++i) {
     const auto& element = (*it)[i];
     auto uri = element.find("uri");
+    if (!image && uri == element.end()) {
+      if (std::string problem = missingUriProblem(i, glbBinBytes); !problem.empty()) {
+        ok = false;
+        diags.report(DiagCode::GltfResource, doc.locate(appendPointer("/buffers", i)),
+                     {"buffer " + std::to_string(i), problem, "give the buffer a uri, or store the model as a .glb"});
+      }
+      continue;
+    }
     if (uri == element.end() || !uri->is_string()) continue;
     std::string text = uri->get<std::string>();
     std::string problem = text.starts_with("data:") ? dataUriProblem(text, image) : fileUriProblem(text, folder);
@@ -132,11 +147,28 @@ std::string readWholeFile(const std::filesystem::path& path, std::vector<std::ui
   return "";
 }
 
-bool checkResourceUris(const JsonDocument& document, const std::filesystem::path& folder, DiagnosticList& diagnostics) {
+bool checkResourceUris(const JsonDocument& document, const std::filesystem::path& folder,
+                       std::optional<std::size_t> glbBinBytes, DiagnosticList& diagnostics) {
   bool ok = true;
-  checkUris(document, "buffers", false, folder, diagnostics, ok);
-  checkUris(document, "images", true, folder, diagnostics, ok);
+  checkUris(document, "buffers", false, folder, glbBinBytes, diagnostics, ok);
+  checkUris(document, "images", true, folder, glbBinBytes, diagnostics, ok);
   return ok;
+}
+
+std::vector<std::filesystem::path> externalFiles(const JsonDocument& document, const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> files;
+  for (const char* collection : {"buffers", "images"}) {
+    auto it = document.root().find(collection);
+    if (it == document.root().end()) continue;
+    for (const auto& element : *it) {
+      auto uri = element.find("uri");
+      if (uri == element.end() || !uri->is_string() || uri->get<std::string>().starts_with("data:")) continue;
+      std::string problem;
+      std::string path = percentDecode(uri->get<std::string>(), problem);
+      if (std::filesystem::path resolved = confinedPath(folder, path); problem.empty() && !resolved.empty()) files.push_back(resolved);
+    }
+  }
+  return files;
 }
 
 }  // namespace wg::gltf

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,8 +18,14 @@ namespace wg::gltf {
 // Largest model, external buffer or image file read (bytes).
 inline constexpr std::uintmax_t kMaxResourceBytes = 512ull << 20;
 
-// Checks every buffers[*].uri and images[*].uri; reports WG5004. Returns false on error.
-bool checkResourceUris(const JsonDocument& document, const std::filesystem::path& folder, DiagnosticList& diagnostics);
+// Checks every buffers[*].uri and images[*].uri, and that only a .glb's first buffer
+// (its BIN chunk of `glbBinBytes`) goes without one; reports WG5004. False on error.
+bool checkResourceUris(const JsonDocument& document, const std::filesystem::path& folder,
+                       std::optional<std::size_t> glbBinBytes, DiagnosticList& diagnostics);
+
+// The files a checked document reads (external buffers and images), resolved inside
+// `folder` and percent-decoded as the checks read them.
+std::vector<std::filesystem::path> externalFiles(const JsonDocument& document, const std::filesystem::path& folder);
 
 // `path` resolved inside `folder`, or "" if it leaves it (through "..", an absolute
 // path or a symbolic link).

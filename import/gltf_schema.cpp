@@ -1,6 +1,10 @@
 #include "import/gltf_schema.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
+#include <limits>
+#include <span>
 #include <string_view>
 
 #include "compiler/literal.hpp"
@@ -14,9 +18,14 @@ enum class Type : std::uint8_t {
   Texture, Image, Sampler, TextureTransform, EmissiveStrength, Opaque
 };
 
-enum class Kind : std::uint8_t {
-  Index, Number, String, Bool, Object, IndexArray, NumberArray, StringArray, ObjectArray, IndexMap, Any
-};
+enum class Kind : std::uint8_t { Index, Number, String, Bool, Object, IndexArray, NumberArray, StringArray, ObjectArray, IndexMap };
+
+// The values an enumerated integer property may take (glTF 2.0, 5.x).
+constexpr std::int64_t kComponentTypes[] = {5120, 5121, 5122, 5123, 5125, 5126};
+constexpr std::int64_t kModes[] = {0, 1, 2, 3, 4, 5, 6};
+constexpr std::int64_t kMagFilters[] = {9728, 9729};
+constexpr std::int64_t kMinFilters[] = {9728, 9729, 9984, 9985, 9986, 9987};
+constexpr std::int64_t kWraps[] = {33071, 33648, 10497};
 
 struct Rule {
   Type owner;
@@ -26,6 +35,7 @@ struct Rule {
   std::string_view refersTo = {};  // top-level collection an Index names
   int length = 0;                  // exact NumberArray length; 0: any
   bool required = false;
+  std::span<const std::int64_t> allowed = {};  // an Index's only values; empty: any
 };
 
 using enum Type;
@@ -70,11 +80,11 @@ constexpr std::array kRules = {
     Rule{Primitive, "attributes", K::IndexMap, Opaque, "accessors", 0, kRequired},
     Rule{Primitive, "indices", K::Index, Opaque, "accessors"},
     Rule{Primitive, "material", K::Index, Opaque, "materials"},
-    Rule{Primitive, "mode", K::Index},
+    Rule{Primitive, "mode", K::Index, Opaque, {}, 0, false, kModes},
     Rule{Primitive, "targets", K::ObjectArray},
     Rule{Accessor, "bufferView", K::Index, Opaque, "bufferViews"},
     Rule{Accessor, "byteOffset", K::Index},
-    Rule{Accessor, "componentType", K::Index, Opaque, {}, 0, kRequired},
+    Rule{Accessor, "componentType", K::Index, Opaque, {}, 0, kRequired, kComponentTypes},
     Rule{Accessor, "normalized", K::Bool},
     Rule{Accessor, "count", K::Index, Opaque, {}, 0, kRequired},
     Rule{Accessor, "type", K::String, Opaque, {}, 0, kRequired},
@@ -110,10 +120,10 @@ constexpr std::array kRules = {
     Rule{Image, "uri", K::String},
     Rule{Image, "mimeType", K::String},
     Rule{Image, "bufferView", K::Index, Opaque, "bufferViews"},
-    Rule{Sampler, "magFilter", K::Index},
-    Rule{Sampler, "minFilter", K::Index},
-    Rule{Sampler, "wrapS", K::Index},
-    Rule{Sampler, "wrapT", K::Index},
+    Rule{Sampler, "magFilter", K::Index, Opaque, {}, 0, false, kMagFilters},
+    Rule{Sampler, "minFilter", K::Index, Opaque, {}, 0, false, kMinFilters},
+    Rule{Sampler, "wrapS", K::Index, Opaque, {}, 0, false, kWraps},
+    Rule{Sampler, "wrapT", K::Index, Opaque, {}, 0, false, kWraps},
     Rule{TextureTransform, "offset", K::NumberArray, Opaque, {}, 2},
     Rule{TextureTransform, "rotation", K::Number},
     Rule{TextureTransform, "scale", K::NumberArray, Opaque, {}, 2},
@@ -128,21 +138,31 @@ Type extensionType(std::string_view name) {
   return Opaque;
 }
 
-bool isIndex(const nlohmann::json& j) { return j.is_number_unsigned() || (j.is_number_integer() && j.get<std::int64_t>() >= 0); }
+// tinygltf stores indices, counts and enums in int; larger values would wrap.
+bool isIndex(const nlohmann::json& j) {
+  constexpr std::int64_t kLargest = std::numeric_limits<std::int32_t>::max();
+  if (j.is_number_unsigned()) return j.get<std::uint64_t>() <= std::uint64_t(kLargest);
+  return j.is_number_integer() && j.get<std::int64_t>() >= 0 && j.get<std::int64_t>() <= kLargest;
+}
 
-std::string_view expected(const Rule& r) {
+std::string oneOf(std::span<const std::int64_t> values) {
+  std::string out = "one of";
+  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : " ") + std::to_string(values[i]);
+  return out;
+}
+
+std::string expected(const Rule& r) {
   switch (r.kind) {
-    case K::Index: return "a non-negative integer";
+    case K::Index: return r.allowed.empty() ? "an integer from 0 to 2147483647" : oneOf(r.allowed);
     case K::Number: return "a number";
     case K::String: return "a string";
     case K::Bool: return "true or false";
     case K::Object: return "an object";
-    case K::IndexArray: return "an array of non-negative integers";
+    case K::IndexArray: return "an array of integers from 0 to 2147483647";
     case K::NumberArray: return "an array of numbers";
     case K::StringArray: return "an array of strings";
     case K::ObjectArray: return "an array of objects";
-    case K::IndexMap: return "an object of non-negative integers";
-    case K::Any: return "any value";
+    case K::IndexMap: return "an object of integers from 0 to 2147483647";
   }
   return "";
 }
@@ -156,7 +176,8 @@ bool allOf(const nlohmann::json& j, bool (*pred)(const nlohmann::json&)) {
 
 bool hasKind(const nlohmann::json& j, const Rule& r) {
   switch (r.kind) {
-    case K::Index: return isIndex(j);
+    case K::Index:
+      return isIndex(j) && (r.allowed.empty() || std::find(r.allowed.begin(), r.allowed.end(), j.get<std::int64_t>()) != r.allowed.end());
     case K::Number: return j.is_number();
     case K::String: return j.is_string();
     case K::Bool: return j.is_boolean();
@@ -172,7 +193,6 @@ bool hasKind(const nlohmann::json& j, const Rule& r) {
       for (const auto& [k, v] : j.items())
         if (!isIndex(v)) return false;
       return true;
-    case K::Any: return true;
   }
   return false;
 }
@@ -197,12 +217,13 @@ class SchemaChecker {
       std::string at = appendPointer(pointer, r.key);
       auto it = j.find(std::string(r.key));
       if (it == j.end()) {
-        if (r.required) fail(DiagCode::GltfSchema, pointer, {"'" + std::string(r.key) + "' at " + shownPointer(pointer), std::string(expected(r)), "missing"});
+        if (r.required) fail(DiagCode::GltfSchema, pointer, {"'" + std::string(r.key) + "' at " + shownPointer(pointer), expected(r), "missing"});
         continue;
       }
       if (!hasKind(*it, r)) {
-        std::string shape = r.length ? std::string(expected(r)) + " of length " + std::to_string(r.length) : std::string(expected(r));
-        fail(DiagCode::GltfSchema, at, {shown(at), shape, describeJsonKind(*it)});
+        std::string shape = r.length ? expected(r) + " of length " + std::to_string(r.length) : expected(r);
+        std::string got = it->is_number() ? it->dump() : describeJsonKind(*it);
+        fail(DiagCode::GltfSchema, at, {shown(at), shape, got});
         continue;
       }
       checkReferences(*it, r, at);

@@ -32,6 +32,13 @@ struct SlotSource {
   std::string pointer;  // of the textureInfo
 };
 
+// The texture coordinate set the file names for a slot: KHR_texture_transform's override, else texCoord.
+int declaredSet(const SlotSource& s) {
+  auto ext = s.extensions->find("KHR_texture_transform");
+  if (ext != s.extensions->end() && ext->second.Has("texCoord")) return ext->second.Get("texCoord").GetNumberAsInt();
+  return s.texCoord;
+}
+
 double number(const tinygltf::Value& v) { return v.IsNumber() ? v.GetNumberAsDouble() : v.IsInt() ? v.GetNumberAsInt() : 0.0; }
 
 std::array<double, 2> pair(const tinygltf::Value& object, const char* key, std::array<double, 2> fallback) {
@@ -101,8 +108,10 @@ class GraphBuilder {
     return name + ".out";
   }
 
-  // Clamps a factor into its glTF range, with a warning when the file had it outside.
-  Json factor(const std::vector<double>& values, const char* what, double min, double max) {
+  // Clamps a factor into [min, max], with a warning when the file had it outside; `why`
+  // says whose range it is.
+  Json factor(const std::vector<double>& values, const char* what, double min, double max,
+              const char* why = "glTF 2.0 limits this factor to that range") {
     Json out = Json::array();
     bool clamped = false;
     for (double v : values) {
@@ -113,7 +122,7 @@ class GraphBuilder {
     if (clamped)
       diags_.report(DiagCode::GltfFeatureIgnored, asset_.locate(pointer_),
                     {std::string(what) + " lies outside [" + formatNumber(min) + ", " + formatNumber(max) + "]; it is clamped",
-                     "glTF 2.0 limits this factor to that range"});
+                     why});
     return values.size() == 1 ? out[0] : out;
   }
 
@@ -152,8 +161,10 @@ class GraphBuilder {
     const auto& t = m.normalTexture;
     auto texel = sample({"normal", t.index, t.texCoord, &t.extensions, false, pointer_ + "/normalTexture"});
     if (!texel) return;
-    constexpr double kMaxScale = 16;  // normal_unpack's range
-    std::string scale = parameter("normalScale", factor({t.scale}, "normalTexture.scale", 0, kMaxScale), "Normal scale", 0, kMaxScale);
+    constexpr double kMaxScale = 16;  // normal_unpack's strength; a negative scale flips the slopes, as in glTF
+    std::string scale = parameter("normalScale",
+                                  factor({t.scale}, "normalTexture.scale", -kMaxScale, kMaxScale, "weathergen's normal_unpack takes scales in that range"),
+                                  "Normal scale", -kMaxScale, kMaxScale);
     output["normal"] = node("normal", "normal_unpack", {{"rgb", *texel + "rgb"}, {"strength", scale}});
   }
 
@@ -192,7 +203,8 @@ class GraphBuilder {
     graph_["alphaMode"] = mode;
     if (mode == "opaque") return;
     output["opacity"] = alpha;
-    if (mode == "mask") graph_["alphaCutoff"] = factor({m.alphaCutoff}, "alphaCutoff", 0, 1);
+    if (mode == "mask")
+      graph_["alphaCutoff"] = factor({m.alphaCutoff}, "alphaCutoff", 0, 1, "weathergen's alphaCutoff is in that range; above 1 only fully opaque texels remain");
   }
 
   // The sample node of a slot ("baseColorTexel."), or nullopt when it has no texture.
@@ -246,7 +258,7 @@ class GraphBuilder {
   std::string texCoord(const SlotSource& s) {
     auto ext = s.extensions->find("KHR_texture_transform");
     const tinygltf::Value* transform = ext != s.extensions->end() ? &ext->second : nullptr;
-    int set = transform && transform->Has("texCoord") ? transform->Get("texCoord").GetNumberAsInt() : s.texCoord;
+    int set = declaredSet(s);
     if (set > 1) {
       diags_.report(DiagCode::GltfFeatureIgnored, asset_.locate(s.pointer),
                     {"the " + std::string(s.slot) + " texture reads texCoord " + std::to_string(set) + "; only sets 0 and 1 are read, so set 0 is used",
@@ -260,8 +272,10 @@ class GraphBuilder {
     return transformed(uv, *transform, s.slot);
   }
 
-  // KHR_texture_transform: uv' = offset + R(rotation) (scale * uv), the extension's
-  // translation * rotation * scale matrix written out.
+  // KHR_texture_transform: uv' = offset + R(rotation) (scale * uv). R turns uv
+  // counter-clockwise in uv space as the extension's text and its sample model
+  // (TextureTransformTest) mean; that is the transpose of the README's GLSL listing
+  // (glTF issue 1563), and what other viewers do.
   std::string transformed(const std::string& uv, const tinygltf::Value& t, const std::string& slot) {
     auto offset = pair(t, "offset", {0, 0}), scale = pair(t, "scale", {1, 1});
     double rotation = t.Has("rotation") ? number(t.Get("rotation")) : 0.0;
@@ -295,11 +309,12 @@ class GraphBuilder {
   bool uvNodes_[2] = {false, false};
 };
 
-int setOf(const SlotSource& s) {
-  if (s.texture < 0) return -1;
-  auto ext = s.extensions->find("KHR_texture_transform");
-  if (ext != s.extensions->end() && ext->second.Has("texCoord")) return ext->second.Get("texCoord").GetNumberAsInt();
-  return s.texCoord;
+// The set a slot samples: 0 or 1, sets above 1 falling back to 0 as the graph does;
+// -1 when the slot samples nothing (no texture, or a texture without an image).
+int setOf(const tinygltf::Model& model, const SlotSource& s) {
+  if (s.texture < 0 || model.textures[s.texture].source < 0) return -1;
+  int set = declaredSet(s);
+  return set > 1 ? 0 : set;
 }
 
 }  // namespace
@@ -320,7 +335,7 @@ unsigned texCoordSetsUsed(const tinygltf::Model& model, int index) {
       {"", m.emissiveTexture.index, m.emissiveTexture.texCoord, &m.emissiveTexture.extensions}};
   unsigned sets = 0;
   for (const auto& s : slots)
-    if (int set = setOf(s); set == 0 || set == 1) sets |= 1u << set;
+    if (int set = setOf(model, s); set >= 0) sets |= 1u << set;
   return sets;
 }
 

@@ -1,7 +1,10 @@
 #include "import/model_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <span>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -14,11 +17,24 @@ namespace {
 
 constexpr int kPoints = 0, kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
 
-// What an attribute may be stored as (glTF 2.0, 3.7.2.1, and KHR_mesh_quantization).
+// How an attribute may be stored (glTF 2.0, 3.7.2.1; KHR_mesh_quantization widens it).
+struct StorageForm {
+  int componentType;
+  bool normalized;
+};
+constexpr StorageForm kF{5126, false}, kB{5120, false}, kBN{5120, true}, kUB{5121, false}, kUBN{5121, true}, kS{5122, false},
+    kSN{5122, true}, kUS{5123, false}, kUSN{5123, true}, kUI{5125, false};
+constexpr StorageForm kFloatOnly[] = {kF}, kColourForms[] = {kF, kUBN, kUSN}, kIndexForms[] = {kUB, kUS, kUI},
+                      kQuantizedPositions[] = {kF, kB, kBN, kUB, kUBN, kS, kSN, kUS, kUSN},
+                      kQuantizedDirections[] = {kF, kBN, kSN}, kQuantizedTexcoords[] = {kF, kB, kBN, kUB, kUBN, kS, kSN, kUS, kUSN};
+
 struct AttributeFormat {
   int minComponents, maxComponents;
-  bool integers;  // byte/short (normalized or quantized) besides float
+  std::span<const StorageForm> core, quantized;
 };
+constexpr AttributeFormat kPositionFormat{3, 3, kFloatOnly, kQuantizedPositions}, kNormalFormat{3, 3, kFloatOnly, kQuantizedDirections},
+    kTangentFormat{4, 4, kFloatOnly, kQuantizedDirections}, kTexcoordFormat{2, 2, kColourForms, kQuantizedTexcoords},
+    kColourFormat{3, 4, kColourForms, kColourForms}, kIndexFormat{1, 1, kIndexForms, kIndexForms};
 
 int componentCount(int type) {
   switch (type) {
@@ -57,7 +73,9 @@ float readComponent(const std::uint8_t* p, int componentType, bool normalized) {
 
 class GeometryReader {
  public:
-  GeometryReader(const Asset& asset, DiagnosticList& diags) : asset_(asset), m_(asset.model), diags_(diags) {}
+  GeometryReader(const Asset& asset, DiagnosticList& diags)
+      : asset_(asset), m_(asset.model), diags_(diags),
+        quantized_(std::find(m_.extensionsUsed.begin(), m_.extensionsUsed.end(), "KHR_mesh_quantization") != m_.extensionsUsed.end()) {}
 
   std::optional<ModelGeometry> run() {
     warnIgnoredFeatures();
@@ -87,6 +105,12 @@ class GeometryReader {
       auto [index, parent] = pending.back();
       pending.pop_back();
       glm::mat4 world = parent * localTransform(index);
+      if (!finite(world)) {
+        fail(DiagCode::GltfInvalidData, "/nodes/" + std::to_string(index),
+             "node " + std::to_string(index) + "'s world transform overflows (its ancestors' scales multiply past float range)",
+             "re-export the model with sensible scales");
+        return;
+      }
       const auto& node = m_.nodes[index];
       if (node.mesh >= 0) addMesh(node.mesh, world);
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) pending.push_back({*child, world});
@@ -105,13 +129,18 @@ class GeometryReader {
       glm::vec3 s = n.scale.size() == 3 ? glm::vec3(n.scale[0], n.scale[1], n.scale[2]) : glm::vec3(1.f);
       m = glm::translate(glm::mat4(1.f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.f), s);
     }
-    for (int i = 0; i < 16; ++i)
-      if (!std::isfinite(glm::value_ptr(m)[i])) {
-        fail(DiagCode::GltfInvalidData, "/nodes/" + std::to_string(index), "node " + std::to_string(index) + " has a non-finite transform",
-             "re-export the model; every translation, rotation, scale and matrix value must be a finite number");
-        return glm::mat4(1.f);
-      }
+    if (!finite(m)) {
+      fail(DiagCode::GltfInvalidData, "/nodes/" + std::to_string(index), "node " + std::to_string(index) + " has a non-finite transform",
+           "re-export the model; every translation, rotation, scale and matrix value must be a finite number");
+      return glm::mat4(1.f);
+    }
     return m;
+  }
+
+  static bool finite(const glm::mat4& m) {
+    for (int i = 0; i < 16; ++i)
+      if (!std::isfinite(glm::value_ptr(m)[i])) return false;
+    return true;
   }
 
   void addMesh(int meshIndex, const glm::mat4& world) {
@@ -120,15 +149,22 @@ class GeometryReader {
       std::string pointer = "/meshes/" + std::to_string(meshIndex) + "/primitives/" + std::to_string(p);
       const auto& prim = mesh.primitives[p];
       if (prim.mode >= kPoints && prim.mode < kTriangles) continue;  // warned about once, in warnIgnoredFeatures
-      if (prim.mode > kTriangleFan) {
-        fail(DiagCode::GltfSchema, pointer + "/mode", pointer + "/mode", "a glTF primitive mode (0 to 6)", std::to_string(prim.mode));
+      if (geometry_.primitives.size() == kMaxPrimitiveInstances) {
+        fail(DiagCode::ResourceLimit, pointer, "the number of primitive instances in the scene", "more than " +
+             std::to_string(kMaxPrimitiveInstances), std::to_string(kMaxPrimitiveInstances));
         return;
       }
-      ModelPrimitive out;
-      out.name = (mesh.name.empty() ? "mesh" + std::to_string(meshIndex) : mesh.name) + "/" + std::to_string(p);
-      out.material = prim.material;
-      out.transform = world;
-      if (readPrimitive(prim, pointer, out)) addPrimitive(std::move(out), pointer);
+      // Each primitive is read once however many nodes instance it; instances copy it.
+      auto [cached, fresh] = read_.try_emplace({meshIndex, p});
+      if (fresh) {
+        ModelPrimitive& out = cached->second;
+        out.name = (mesh.name.empty() ? "mesh" + std::to_string(meshIndex) : mesh.name) + "/" + std::to_string(p);
+        out.material = prim.material;
+        if (!readPrimitive(prim, pointer, out)) return;
+      }
+      ModelPrimitive instance = cached->second;
+      instance.transform = world;
+      addPrimitive(std::move(instance), pointer);
     }
   }
 
@@ -139,17 +175,17 @@ class GeometryReader {
       return false;
     }
     std::string at = pointer + "/attributes/";
-    if (!readVec3(position->second, at + "POSITION", {3, 3, true}, out.positions)) return false;
+    if (!readSized<glm::vec3>(position->second, at + "POSITION", kPositionFormat, out.positions, 0)) return false;
     std::size_t count = out.positions.size();
     auto optional = [&](const char* name, auto& dst, AttributeFormat format, auto reader) {
       auto it = prim.attributes.find(name);
       return it == prim.attributes.end() || (this->*reader)(it->second, at + name, format, dst, count);
     };
-    if (!optional("NORMAL", out.normals, {3, 3, true}, &GeometryReader::readSized<glm::vec3>) ||
-        !optional("TANGENT", out.tangents, {4, 4, true}, &GeometryReader::readSized<glm::vec4>) ||
-        !optional("TEXCOORD_0", out.texcoords0, {2, 2, true}, &GeometryReader::readSized<glm::vec2>) ||
-        !optional("TEXCOORD_1", out.texcoords1, {2, 2, true}, &GeometryReader::readSized<glm::vec2>) ||
-        !optional("COLOR_0", out.colors, {3, 4, true}, &GeometryReader::readSized<glm::vec4>))
+    if (!optional("NORMAL", out.normals, kNormalFormat, &GeometryReader::readSized<glm::vec3>) ||
+        !optional("TANGENT", out.tangents, kTangentFormat, &GeometryReader::readSized<glm::vec4>) ||
+        !optional("TEXCOORD_0", out.texcoords0, kTexcoordFormat, &GeometryReader::readSized<glm::vec2>) ||
+        !optional("TEXCOORD_1", out.texcoords1, kTexcoordFormat, &GeometryReader::readSized<glm::vec2>) ||
+        !optional("COLOR_0", out.colors, kColourFormat, &GeometryReader::readSized<glm::vec4>))
       return false;
     return checkTexCoordSets(prim, pointer, out) && readIndices(prim, pointer, out);
   }
@@ -177,14 +213,7 @@ class GeometryReader {
       for (std::size_t i = 0; i < count; ++i) raw[i] = static_cast<std::uint32_t>(i);
     } else {
       std::vector<glm::vec4> values;
-      if (!readAccessor(prim.indices, pointer + "/indices", {1, 1, true}, values)) return false;
-      const auto& a = m_.accessors[prim.indices];
-      if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || a.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
-          a.componentType == TINYGLTF_COMPONENT_TYPE_SHORT) {
-        fail(DiagCode::GltfSchema, "/accessors/" + std::to_string(prim.indices) + "/componentType",
-             "the index accessor's componentType", "5121, 5123 or 5125 (unsigned integers)", std::to_string(a.componentType));
-        return false;
-      }
+      if (!readAccessor(prim.indices, pointer + "/indices", kIndexFormat, values)) return false;
       raw.reserve(values.size());
       for (std::size_t i = 0; i < values.size(); ++i) {
         auto v = static_cast<std::uint64_t>(values[i].x);
@@ -233,10 +262,6 @@ class GeometryReader {
     geometry_.primitives.push_back(std::move(p));
   }
 
-  bool readVec3(int accessor, const std::string& pointer, AttributeFormat format, std::vector<glm::vec3>& out) {
-    return readSized<glm::vec3>(accessor, pointer, format, out, 0);
-  }
-
   // Reads an accessor into vectors of N components; `count` (when not 0) must match.
   template <typename Vec>
   bool readSized(int accessor, const std::string& pointer, AttributeFormat format, std::vector<Vec>& out, std::size_t count) {
@@ -258,10 +283,13 @@ class GeometryReader {
     const auto& a = m_.accessors[index];
     std::string at = "/accessors/" + std::to_string(index);
     int components = componentCount(a.type), bytes = componentBytes(a.componentType);
-    if (components < format.minComponents || components > format.maxComponents || bytes == 0 ||
-        (!format.integers && a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)) {
+    auto forms = quantized_ ? format.quantized : format.core;
+    bool stored = std::any_of(forms.begin(), forms.end(), [&](StorageForm f) {
+      return f.componentType == a.componentType && f.normalized == a.normalized;
+    });
+    if (components < format.minComponents || components > format.maxComponents || bytes == 0 || !stored) {
       fail(DiagCode::GltfSchema, at, "accessor " + std::to_string(index) + " (used by " + pointer + ")",
-           "of a type and component type glTF allows there", describeAccessor(a));
+           std::string("stored as glTF 2.0 allows there") + (quantized_ ? " with KHR_mesh_quantization" : ""), describeAccessor(a));
       return false;
     }
     if (a.sparse.isSparse) {
@@ -316,7 +344,8 @@ class GeometryReader {
   }
 
   static std::string describeAccessor(const tinygltf::Accessor& a) {
-    return "type " + std::to_string(a.type) + " with componentType " + std::to_string(a.componentType);
+    return std::to_string(componentCount(a.type)) + " component(s) of componentType " + std::to_string(a.componentType) +
+           (a.normalized ? ", normalized" : "");
   }
 
   void warnIgnoredFeatures() {
@@ -348,7 +377,9 @@ class GeometryReader {
   const tinygltf::Model& m_;
   DiagnosticList& diags_;
   ModelGeometry geometry_;
+  std::map<std::pair<int, std::size_t>, ModelPrimitive> read_;  // (mesh, primitive) -> as read
   std::size_t vertexCount_ = 0;
+  bool quantized_;  // KHR_mesh_quantization: integer positions, normals, tangents and texcoords
   bool failed_ = false;
 };
 

@@ -32,8 +32,10 @@ struct ModelGeometry {
 };
 
 // Most triangles drawn from one model (instances counted): bounds memory and time.
-inline constexpr std::size_t kMaxModelTriangles = 16u << 20;
-inline constexpr std::size_t kMaxModelVertices = 16u << 20;
+// Bounds on what a small file can make us allocate by instancing (about 600 MiB).
+inline constexpr std::size_t kMaxModelTriangles = 8u << 20;
+inline constexpr std::size_t kMaxModelVertices = 8u << 20;
+inline constexpr std::size_t kMaxPrimitiveInstances = 65536;
 
 // Reads the scene glTF says to show (the default scene, else scene 0, else every root
 // node). Errors: WG5002 (unusable accessor types), WG5003 (a texture coordinate set a

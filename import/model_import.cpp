@@ -42,7 +42,8 @@ std::vector<std::string> graphStems(const tinygltf::Model& model, const std::str
   return stems;
 }
 
-std::string asText(const Json& json) { return json.dump(2) + "\n"; }
+// File names are bytes, not always UTF-8; they reach the JSON as replacement characters.
+std::string asText(const Json& json) { return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; }
 
 // One file per material and per image: bound what a small hostile file can make us write.
 constexpr std::size_t kMaxFilesPerKind = 16384;

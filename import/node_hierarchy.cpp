@@ -1,5 +1,6 @@
 #include "import/node_hierarchy.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace wg::gltf {
@@ -51,7 +52,13 @@ bool checkNodeHierarchy(const Asset& asset, DiagnosticList& diags) {
   }
   for (std::size_t s = 0; s < asset.model.scenes.size(); ++s)
     for (std::size_t i = 0; i < asset.model.scenes[s].nodes.size(); ++i) {
-      int root = asset.model.scenes[s].nodes[i];
+      const auto& roots = asset.model.scenes[s].nodes;
+      int root = roots[i];
+      if (std::find(roots.begin(), roots.begin() + static_cast<std::ptrdiff_t>(i), root) != roots.begin() + static_cast<std::ptrdiff_t>(i)) {
+        diags.report(DiagCode::GltfNodeHierarchy, asset.locate("/scenes/" + std::to_string(s) + "/nodes/" + std::to_string(i)),
+                     {"scene " + std::to_string(s) + " lists node " + std::to_string(root) + " twice"});
+        return false;
+      }
       if (parent[root] == kNoParent) continue;
       diags.report(DiagCode::GltfNodeHierarchy, asset.locate("/scenes/" + std::to_string(s) + "/nodes/" + std::to_string(i)),
                    {"scene " + std::to_string(s) + " lists node " + std::to_string(root) + ", which is a child of node " +
