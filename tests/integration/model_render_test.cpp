@@ -124,7 +124,7 @@ struct Rendered {
 };
 
 Rendered renderModel(const fs::path& model, const fs::path& png, const std::string& options) {
-  auto r = runCommand(shellQuote(WG_CLI_PATH) + " render --model " + shellQuote(model.string()) + " -o " + shellQuote(png.string()) +
+  auto r = runCommand(wg::testing::kVulkanChildEnvironment + shellQuote(WG_CLI_PATH) + " render --model " + shellQuote(model.string()) + " -o " + shellQuote(png.string()) +
                       " --validation -q " + options);
   Rendered out{r.exitCode, r.output, {}};
   std::string error;

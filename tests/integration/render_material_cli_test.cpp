@@ -26,9 +26,7 @@ namespace fs = std::filesystem;
 constexpr int kWidth = 160, kHeight = 90;
 constexpr float kAspect = float(kWidth) / float(kHeight);
 
-// The CLI unloads lavapipe before LeakSanitizer runs, so its one-off allocations cannot
-// be suppressed by name; ASan and UBSan stay on (as in snowfield_cli_test.cpp).
-constexpr const char* kChildSanitizers = "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ";
+constexpr const char* kChildSanitizers = kVulkanChildEnvironment;
 std::string cli() { return kChildSanitizers + shellQuote(WG_CLI_PATH); }
 std::string renderArgs(const fs::path& graph, const fs::path& out) {
   return cli() + " render --material " + shellQuote(graph.string()) + " -o " + shellQuote(out.string()) +

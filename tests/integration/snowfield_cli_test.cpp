@@ -12,11 +12,7 @@ namespace {
 TEST(SnowfieldCli, WritesAContactSheetAStripAndTheFrames) {
   TempDir dir("snowfield-cli");
   std::string sheet = (dir.path() / "snowfield.png").string();
-  // Under the sanitizer pass the child CLI unloads lavapipe before LeakSanitizer runs,
-  // so the driver's one-off allocations cannot be suppressed by name there; the same
-  // code is leak-checked in-process by weathergen_snow_tests. ASan and UBSan stay on.
-  const std::string noDriverLeakCheck = "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ";
-  CommandResult r = runCommand(noDriverLeakCheck + shellQuote(WG_CLI_PATH) +
+  CommandResult r = runCommand(kVulkanChildEnvironment + shellQuote(WG_CLI_PATH) +
                                " render --scene snowfield --size 96x54 --validation -q -o " +
                                shellQuote(sheet) + " --frames " + shellQuote((dir.path() / "frames").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
