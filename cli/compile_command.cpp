@@ -309,19 +309,11 @@ int runCompileCommand(int argc, char** argv) {
     }
     filesOf.push_back(std::move(*files));
   }
-  std::error_code ec;
-  std::filesystem::create_directories(o.outputDir, ec);
-  if (ec) return usageError("cannot create output directory '" + quoteUserText(o.outputDir) + "'", o.json);
   std::size_t written = 0, compiled = 0;
   std::vector<DepfileRule> rules;
   for (std::size_t g = 0; g < outputs.size(); ++g) {
     DepfileRule rule;
-    for (const auto& [path, bytes] : filesOf[g]) {
-      if (std::string werror = writeFileAtomically(path, bytes); !werror.empty())
-        return usageError(werror, o.json);
-      rule.outputs.push_back(path);
-      ++written;
-    }
+    for (const auto& [path, bytes] : filesOf[g]) rule.outputs.push_back(path);
     rule.inputs.push_back(outputs[g].graph);
     std::set<std::string> readFiles;  // graph libraries and image files, over every variant
     for (const CompiledMaterial* m : outputs[g].variants)
@@ -330,9 +322,21 @@ int runCompileCommand(int argc, char** argv) {
     rules.push_back(std::move(rule));
     compiled += outputs[g].variants.size();
   }
-  if (!o.depfile.empty())
-    if (std::string werror = writeFileAtomically(o.depfile, formatDepfile(rules)); !werror.empty())
-      return usageError(werror, o.json);
+  // The depfile is formatted before anything is written: a path it cannot express
+  // safely stops the run with nothing written.
+  std::string depfileError;
+  std::optional<std::string> depfileText;
+  if (!o.depfile.empty() && !(depfileText = formatDepfile(rules, depfileError))) return usageError(depfileError, o.json);
+  std::error_code ec;
+  std::filesystem::create_directories(o.outputDir, ec);
+  if (ec) return usageError("cannot create output directory '" + quoteUserText(o.outputDir) + "'", o.json);
+  for (const auto& files : filesOf)
+    for (const auto& [path, bytes] : files) {
+      if (std::string werror = writeFileAtomically(path, bytes); !werror.empty()) return usageError(werror, o.json);
+      ++written;
+    }
+  if (depfileText)
+    if (std::string werror = writeFileAtomically(o.depfile, *depfileText); !werror.empty()) return usageError(werror, o.json);
   if (!o.quiet && !o.json && ::isatty(STDOUT_FILENO))
     std::printf("compiled %zu material%s (%zu variant%s), wrote %zu files to %s\n", outputs.size(),
                 outputs.size() == 1 ? "" : "s", compiled, compiled == 1 ? "" : "s", written, o.outputDir.c_str());

@@ -1,5 +1,7 @@
 #include "cli/depfile.hpp"
 
+#include "compiler/literal.hpp"
+
 namespace wg {
 
 namespace {
@@ -12,9 +14,25 @@ std::string escapeForMake(const std::string& path) {
   }
   return out;
 }
+
+bool expressible(const std::string& path) {
+  for (char c : path) {
+    auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f || c == ':') return false;
+  }
+  return true;
+}
 }  // namespace
 
-std::string formatDepfile(const std::vector<DepfileRule>& rules) {
+std::optional<std::string> formatDepfile(const std::vector<DepfileRule>& rules, std::string& error) {
+  for (const auto& rule : rules)
+    for (const auto* list : {&rule.outputs, &rule.inputs})
+      for (const auto& path : *list)
+        if (!expressible(path)) {
+          error = "the path '" + quoteUserText(path, 200) +
+                  "' holds a control character or ':', which a Make depfile cannot express safely; rename it or drop --depfile";
+          return std::nullopt;
+        }
   std::string out;
   for (const auto& rule : rules) {
     for (std::size_t i = 0; i < rule.outputs.size(); ++i) out += (i ? " " : "") + escapeForMake(rule.outputs[i]);

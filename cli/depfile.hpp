@@ -2,6 +2,7 @@
 // every output of a material depends on its graph, its graph libraries and the image
 // files it reads.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,9 @@ struct DepfileRule {
   std::vector<std::string> inputs;
 };
 
-// One rule per material, paths escaped for Make (spaces, '#', '$').
-std::string formatDepfile(const std::vector<DepfileRule>& rules);
+// One rule per material, paths escaped for Make (spaces, '#', '$'). A path holding a
+// control character (newline, tab, NUL...) or ':' cannot be written safely (a newline
+// and a tab would start a recipe line that Make runs): nullopt, and `error` names it.
+std::optional<std::string> formatDepfile(const std::vector<DepfileRule>& rules, std::string& error);
 
 }  // namespace wg

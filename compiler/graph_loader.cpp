@@ -153,6 +153,11 @@ class Loader {
       return;
     }
     if (!expectKind(path, at, nlohmann::json::value_t::string, "an include", "the path of a graph library")) return;
+    if (path.get<std::string>().find('\0') != std::string::npos) {
+      // The file system would read only up to the NUL: a different file than written.
+      report(DiagCode::FileUnreadable, at, {quoteUserText(path.get<std::string>()), "the path holds a NUL character", "remove the \\u0000 from the path"});
+      return;
+    }
     std::filesystem::path written = path.get<std::string>();
     std::filesystem::path resolved = (std::filesystem::path(doc_.file()).parent_path() / written).lexically_normal();
     std::error_code ec;
@@ -348,6 +353,12 @@ class Loader {
       checkFields(j, pointer, {"file", "wrap", "filter", "colorSpace", "description"});
       auto* file = optionalString(j, pointer, "file");
       if (!file) return;
+      if (file->get<std::string>().find('\0') != std::string::npos) {
+        // The file system would read only up to the NUL: a different file than written.
+        report(DiagCode::TextureUnsupported, appendPointer(pointer, "file"),
+               {shown, "the file path holds a NUL character", "remove the \\u0000 from the path"});
+        return;
+      }
       // A library's file is reported relative to the including graph, like the graph's own.
       t.file = (scope_.writtenBase / file->get<std::string>()).lexically_normal().string();
       t.resolvedPath = (scope_.fileBase / file->get<std::string>()).lexically_normal().string();
