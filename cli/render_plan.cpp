@@ -2,11 +2,11 @@
 
 #include <unistd.h>
 
-#include <fstream>
 #include <set>
 
 #include "compiler/debug_views.hpp"
 #include "compiler/literal.hpp"
+#include "compiler/regular_file.hpp"
 
 namespace wg {
 
@@ -45,9 +45,11 @@ std::string applyCamera(const RenderOptions& o, const scene::Scene& scene, Rende
 
 std::string readTimeline(const std::string& path, std::optional<WeatherTimeline>& timeline) {
   if (path.empty()) return "";
-  std::ifstream in(path);
-  if (!in) return "cannot read timeline '" + quoteUserText(path) + "'";
-  auto json = nlohmann::json::parse(in, nullptr, false);
+  constexpr std::uintmax_t kMaxTimelineBytes = 16u << 20;  // as graphs
+  std::string text;
+  if (FileRead read = readRegularFile(path, kMaxTimelineBytes, text); read.status != FileReadStatus::Ok)
+    return "cannot read timeline '" + quoteUserText(path) + "': " + read.reason;
+  auto json = nlohmann::json::parse(text, nullptr, false);
   std::string error = json.is_discarded() ? "malformed JSON" : "";
   if (error.empty()) timeline = parseWeatherTimeline(json, error);
   if (!timeline) return "timeline " + quoteUserText(path) + ": " + error;

@@ -11,31 +11,29 @@
 #include "compiler/sampler_state_loader.hpp"
 #include "compiler/static_switches.hpp"
 #include "nodes/image_file.hpp"
+#include "compiler/regular_file.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/texture_generators.hpp"
 
 namespace wg {
 
 std::optional<std::string> readGraphFile(const std::string& path, DiagnosticList& diagnostics) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), "it is a directory", "pass the path of a graph file, not a directory"});
-    return std::nullopt;
+  std::string text;
+  FileRead read = readRegularFile(path, JsonLimits{}.maxBytes, text);
+  switch (read.status) {
+    case FileReadStatus::Ok: return text;
+    case FileReadStatus::TooLarge:
+      diagnostics.report(DiagCode::ResourceLimit, {path, "", 1, 1},
+                         {"the file size", std::to_string(read.size) + " bytes", std::to_string(JsonLimits{}.maxBytes) + " bytes"});
+      return std::nullopt;
+    case FileReadStatus::NotFound:
+      diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0},
+                         {quoteUserText(path), read.reason, "check the path; it is relative to the working directory"});
+      return std::nullopt;
+    default:
+      diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), read.reason, "pass the path of a graph file"});
+      return std::nullopt;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diagnostics.report(DiagCode::FileUnreadable, {path, "", 0, 0}, {quoteUserText(path), "no such file", "check the path; it is relative to the working directory"});
-    return std::nullopt;
-  }
-  // Refuse oversized files before reading them into memory.
-  if (auto size = std::filesystem::file_size(path, ec); !ec && size > JsonLimits{}.maxBytes) {
-    diagnostics.report(DiagCode::ResourceLimit, {path, "", 1, 1},
-                       {"the file size", std::to_string(size) + " bytes", std::to_string(JsonLimits{}.maxBytes) + " bytes"});
-    return std::nullopt;
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
 }
 
 namespace {

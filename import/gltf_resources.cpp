@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "compiler/literal.hpp"
+#include "compiler/regular_file.hpp"
 
 namespace wg::gltf {
 
@@ -135,15 +136,11 @@ std::filesystem::path confinedPath(const std::filesystem::path& folder, const st
 }
 
 std::string readWholeFile(const std::filesystem::path& path, std::vector<std::uint8_t>& out) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return "not a regular file";
-  auto size = std::filesystem::file_size(path, ec);
-  if (ec) return ec.message();
-  if (size > kMaxResourceBytes) return "larger than 512 MiB";
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::strerror(errno);
-  out.resize(size);
-  if (size && !in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(size))) return "read error";
+  std::string bytes;
+  FileRead read = readRegularFile(path.string(), kMaxResourceBytes, bytes);
+  if (read.status == FileReadStatus::TooLarge) return "larger than 512 MiB";
+  if (read.status != FileReadStatus::Ok) return read.reason;
+  out.assign(bytes.begin(), bytes.end());
   return "";
 }
 
