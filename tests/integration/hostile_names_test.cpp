@@ -79,5 +79,19 @@ TEST(HostileNames, CliOutputsPassIndependentValidators) {
   }
 }
 
+// A name with ESC sequences reaches the JSON pointer of a diagnostic; text
+// diagnostics print the pointer with control characters escaped, like the message.
+TEST(HostileNames, EscapeSequencesInPointersNeverReachTheTerminal) {
+  testing::TempDir dir("hostile");
+  testing::writeFile(dir.path() / "g.json", R"({"name": "g", "parameters": {"\u001b[2J\u001b[31mx": {"type": "vec5", "default": 1}},
+    "nodes": [], "output": {}})");
+  auto r = testing::runCommand(testing::shellQuote(WG_CLI_PATH) + " compile " + testing::shellQuote((dir.path() / "g.json").string()) +
+                               " -o " + testing::shellQuote((dir.path() / "out").string()));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("WG2013"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << "a raw ESC reached the terminal:\n" << r.output;
+  EXPECT_NE(r.output.find("[/parameters/\\x1b[2J\\x1b[31mx"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace wg
