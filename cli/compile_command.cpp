@@ -17,6 +17,7 @@
 #include "compiler/variant_index.hpp"
 #include "compiler/batch_compile.hpp"
 #include "cli/depfile.hpp"
+#include "cli/staged_directory.hpp"
 #include "compiler/material_input_files.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/command_line.hpp"
@@ -143,6 +144,31 @@ std::optional<std::map<std::string, std::string>> graphFiles(const GraphOutput& 
     files[(std::filesystem::path(o.outputDir) / (g.stem + ".variants.json")).string()] =
         buildVariantIndexJson(g.variants.front()->name, declared, entries);
   return files;
+}
+
+// No output, the depfile included, may replace an input: a graph, a library or an image.
+std::string outputOverwritesInput(const std::vector<DepfileRule>& rules, const std::string& depfile) {
+  std::error_code ec;
+  std::set<std::filesystem::path> inputs;
+  for (const auto& rule : rules)
+    for (const auto& input : rule.inputs) inputs.insert(std::filesystem::weakly_canonical(input, ec));
+  auto clash = [&](const std::string& output) { return inputs.count(std::filesystem::weakly_canonical(output, ec)) > 0; };
+  if (!depfile.empty() && clash(depfile)) return "--depfile '" + quoteUserText(depfile) + "' is one of the inputs; choose another path";
+  for (const auto& rule : rules)
+    for (const auto& output : rule.outputs)
+      if (clash(output)) return "the output '" + quoteUserText(output) + "' would replace one of the inputs; choose another output directory";
+  return "";
+}
+
+// The depfile is written last, so its folder is checked before any output is published.
+std::string checkDepfileTarget(const std::string& depfile) {
+  if (depfile.empty()) return "";
+  std::error_code ec;
+  if (std::filesystem::is_directory(depfile, ec)) return "--depfile '" + quoteUserText(depfile) + "' is a directory; name a file";
+  std::filesystem::path folder = std::filesystem::absolute(depfile, ec).parent_path();
+  if (!std::filesystem::is_directory(folder, ec))
+    return "--depfile '" + quoteUserText(depfile) + "': its folder does not exist; create it first";
+  return "";
 }
 
 }  // namespace
@@ -327,14 +353,16 @@ int runCompileCommand(int argc, char** argv) {
   std::string depfileError;
   std::optional<std::string> depfileText;
   if (!o.depfile.empty() && !(depfileText = formatDepfile(rules, depfileError))) return usageError(depfileError, o.json);
-  std::error_code ec;
-  std::filesystem::create_directories(o.outputDir, ec);
-  if (ec) return usageError("cannot create output directory '" + quoteUserText(o.outputDir) + "'", o.json);
+  if (std::string e = outputOverwritesInput(rules, o.depfile); !e.empty()) return usageError(e, o.json);
+  if (std::string e = checkDepfileTarget(o.depfile); !e.empty()) return usageError(e, o.json);
+  // All or nothing: every output is staged, then published together.
+  StagedDirectory staged(o.outputDir);
   for (const auto& files : filesOf)
     for (const auto& [path, bytes] : files) {
-      if (std::string werror = writeFileAtomically(path, bytes); !werror.empty()) return usageError(werror, o.json);
+      if (std::string e = staged.stage(std::filesystem::path(path).filename().string(), bytes); !e.empty()) return usageError(e, o.json);
       ++written;
     }
+  if (std::string e = staged.publish(); !e.empty()) return usageError(e, o.json);
   if (depfileText)
     if (std::string werror = writeFileAtomically(o.depfile, *depfileText); !werror.empty()) return usageError(werror, o.json);
   if (!o.quiet && !o.json && ::isatty(STDOUT_FILENO))

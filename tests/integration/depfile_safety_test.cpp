@@ -63,3 +63,50 @@ TEST(DepfileSafety, NulInsideATexturePathIsRejected) {
 }
 
 }  // namespace
+
+namespace {
+
+std::string compileCommand(const fs::path& graph, const fs::path& out, const std::string& extra = "") {
+  return shellQuote(WG_CLI_PATH) + " compile " + shellQuote(graph.string()) + " -o " + shellQuote(out.string()) + extra;
+}
+
+fs::path bundledRock() { return fs::path(WG_SOURCE_DIR) / "graphs" / "rock.json"; }
+
+TEST(CompileAllOrNothing, DepfileNamingADirectoryOrAMissingFolderWritesNothing) {
+  TempDir dir("wg-all-or-nothing");
+  fs::create_directory(dir.path() / "taken");
+  for (const fs::path& depfile : {dir.path() / "taken", dir.path() / "missing" / "out.d"}) {
+    auto r = runCommand(compileCommand(bundledRock(), dir.path() / "out", " --depfile " + shellQuote(depfile.string())));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_FALSE(fs::exists(dir.path() / "out")) << depfile << ": outputs were written before the depfile failed";
+  }
+}
+
+TEST(CompileAllOrNothing, AnOutputNameTakenByADirectoryWritesNothingElse) {
+  TempDir dir("wg-all-or-nothing");
+  fs::create_directories(dir.path() / "out" / "rock.reflect.json");
+  auto r = runCommand(compileCommand(bundledRock(), dir.path() / "out"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir.path() / "out")) left.push_back(e.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"rock.reflect.json"}) << "a failed run left files behind";
+}
+
+TEST(CompileAllOrNothing, InputsAreNeverOutputs) {
+  TempDir dir("wg-all-or-nothing");
+  fs::copy_file(bundledRock(), dir.path() / "rock.json");
+  const std::string graph = wg::testing::readFile(dir.path() / "rock.json");
+  auto r = runCommand(compileCommand(dir.path() / "rock.json", dir.path() / "out", " --depfile " + shellQuote((dir.path() / "rock.json").string())));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(wg::testing::readFile(dir.path() / "rock.json"), graph) << "--depfile replaced the input graph";
+  // A graph named like an output, compiled into its own folder.
+  std::string renamed = graph;
+  fs::copy_file(bundledRock(), dir.path() / "x.reflect.json");
+  wg::testing::writeFile(dir.path() / "x.reflect.json", renamed.replace(renamed.find("\"name\": \"rock\""), 14, "\"name\": \"x\""));
+  const std::string before = wg::testing::readFile(dir.path() / "x.reflect.json");
+  r = runCommand(compileCommand(dir.path() / "x.reflect.json", dir.path()));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(wg::testing::readFile(dir.path() / "x.reflect.json"), before) << "the reflection replaced its own graph";
+}
+
+}  // namespace
