@@ -14,6 +14,7 @@
 #include "cli/model_scene.hpp"
 #include "compiler/literal.hpp"
 #include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
 #include "runtime/scene_renderer.hpp"
 
 namespace wg {
@@ -93,10 +94,7 @@ int runBenchRenderCommand(int argc, char** argv) {
   }
   std::string error;
   auto ctx = vk::Context::create({device, false}, error);
-  if (!ctx) {
-    std::fprintf(stderr, "weathergen: error: %s\n", error.c_str());
-    return kExitInternal;
-  }
+  if (!ctx) return deviceUnavailable(error, device);
   std::printf("Device: %s. %ux%u, median of %d frames (after %d warm-up frames), colour pass only.\n\n",
               ctx->deviceName().c_str(), width, height, frames, kWarmUpFrames);
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | active / none |\n");

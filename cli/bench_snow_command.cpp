@@ -11,6 +11,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
 #include "runtime/snow/deformation_texel.hpp"
 #include "runtime/snow/gpu_deformation_map.hpp"
 #include "runtime/snow/snow_interactors.hpp"
@@ -171,10 +172,7 @@ int runBenchSnowCommand(int argc, char** argv) {
   }
   std::string error;
   auto ctx = vk::Context::create({device, false}, error);
-  if (!ctx) {
-    std::fprintf(stderr, "weathergen: error: %s\n", error.c_str());
-    return kExitInternal;
-  }
+  if (!ctx) return deviceUnavailable(error, device);
   std::printf("Device: %s. Median of %d frames (after %d warm-up), stamps + normals, GPU timestamps.\n\n",
               ctx->deviceName().c_str(), frames, kWarmUpFrames);
   std::printf("| interactors | map | stamps/frame | GPU ms/frame | ms per interactor | vs 1 interactor |\n|---|---|---|---|---|---|\n");

@@ -23,6 +23,10 @@ int usageError(const std::string& message, bool json) {
   return kExitUsage;
 }
 
+int deviceUnavailable(const std::string& error, const std::string& requestedDevice) {
+  return usageError(error + (requestedDevice.empty() ? "; install mesa-vulkan-drivers for lavapipe" : "; pass --device with one of them"));
+}
+
 std::string checkWeatherPresetName(const std::string& name) {
   if (weatherPreset(name)) return "";
   std::string presets;

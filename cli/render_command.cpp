@@ -5,8 +5,10 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/commands.hpp"
+#include "compiler/literal.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "cli/render_options.hpp"
 #include "cli/render_plan.hpp"
@@ -57,6 +59,9 @@ std::string checkRenderOptions(const RenderOptions& o) {
     return "--preset-map, --model-scale and --snow-displacement take --model";
   if (!o.presetMap.empty() && o.weatherPreset) return "--weather-preset and --preset-map exclude each other";
   if (o.watchRenders && !o.watch) return "--watch-renders takes --watch";
+  std::error_code ec;
+  if (!o.framesDir.empty() && std::filesystem::exists(o.framesDir, ec) && !std::filesystem::is_directory(o.framesDir, ec))
+    return "--frames '" + quoteUserText(o.framesDir) + "' is a file; name a directory";
   return "";
 }
 
@@ -109,10 +114,7 @@ int runRenderCommand(int argc, char** argv) {
   if (int e = prepareRender(o, prepared)) return e;
   std::string error;
   auto ctx = vk::Context::create({o.device, o.validation}, error);
-  if (!ctx) {
-    std::fprintf(stderr, "weathergen: error: %s\n", error.c_str());
-    return kExitInternal;
-  }
+  if (!ctx) return deviceUnavailable(error, o.device);
   return renderAndWatch(o, std::move(prepared), *ctx);
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
 #include "runtime/display_image.hpp"
 #include "runtime/image/contact_sheet.hpp"
 #include "runtime/image/png_file.hpp"
@@ -14,10 +15,7 @@ namespace wg {
 int renderSnowfield(const SnowfieldRenderOptions& o) {
   std::string error;
   auto ctx = vk::Context::create({o.device, o.validation}, error);
-  if (!ctx) {
-    std::fprintf(stderr, "weathergen: error: %s\n", error.c_str());
-    return kExitInternal;
-  }
+  if (!ctx) return deviceUnavailable(error, o.device);
   snow::SnowfieldSettings settings;
   SceneRenderer renderer(*ctx, snow::makeSnowfieldScene(settings), o.graphsDir);
   snow::SnowfieldAnimation animation(*ctx, settings, o.request.weather);

@@ -194,6 +194,12 @@ class Loader {
 
   // Names stay sorted, and one declared in a library may not also be the graph's.
   void sortAndCheckNames() {
+    // The material block must fit the 16 KiB uniform range every Vulkan device offers
+    // (a vec4 each); past about 16k members SPIR-V validation itself fails.
+    constexpr std::size_t kMaxParameters = 1024;
+    if (graph_.parameters.size() > kMaxParameters)
+      report(DiagCode::ResourceLimit, "/parameters",
+             {"the parameter count (libraries included)", std::to_string(graph_.parameters.size()), std::to_string(kMaxParameters)});
     auto byName = [](const auto& a, const auto& b) { return a.name < b.name; };
     std::stable_sort(graph_.parameters.begin(), graph_.parameters.end(), byName);
     std::stable_sort(graph_.textures.begin(), graph_.textures.end(), byName);

@@ -72,6 +72,20 @@ TEST(ResourceLimits, NodeCountOverTheLimitIsOneError) {
   EXPECT_NE(d.items().front().message.find("node count"), std::string::npos);
 }
 
+TEST(ResourceLimits, ParameterCountOverTheLimitIsAnInputErrorNotAnInternalOne) {
+  auto graphWith = [](int count) {
+    nlohmann::json g = {{"name", "many"}, {"nodes", nlohmann::json::array()}, {"output", nlohmann::json::object()}};
+    for (int i = 0; i < count; ++i) g["parameters"]["p" + std::to_string(i)] = {{"type", "float"}, {"default", 0.5}};
+    return g.dump();
+  };
+  CompileOptions noSpirv{.emitSpirv = false};
+  EXPECT_TRUE(compileMaterialText("many.json", graphWith(1024), noSpirv).material.has_value());
+  CompileResult over = compileMaterialText("many.json", graphWith(1025), noSpirv);
+  EXPECT_FALSE(over.material.has_value());
+  ASSERT_EQ(codesOf(over.diagnostics), std::vector<DiagCode>{DiagCode::ResourceLimit});
+  EXPECT_EQ(over.diagnostics.items().front().location.pointer, "/parameters");
+}
+
 class ResourceLimitFiles : public ::testing::Test {
  protected:
   void SetUp() override {
