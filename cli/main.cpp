@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "compiler/literal.hpp"
 
 namespace {
 
@@ -28,7 +29,23 @@ Exit codes: 0 success, 1 bad input, 2 bad usage, 3 internal error.
 
 }  // namespace
 
+int runSubcommand(int argc, char** argv);
+
+// No input may end the process by a signal: anything a command lets escape is a bug,
+// reported as WG9900 with exit 3 instead of std::terminate.
 int main(int argc, char** argv) {
+  try {
+    return runSubcommand(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "weathergen: error WG9900: internal error: %s\n  hint: this is a weathergen bug; please report it\n",
+                 wg::quoteUserText(e.what(), 300).c_str());
+  } catch (...) {
+    std::fputs("weathergen: error WG9900: internal error: unknown exception\n  hint: this is a weathergen bug; please report it\n", stderr);
+  }
+  return wg::kExitInternal;
+}
+
+int runSubcommand(int argc, char** argv) {
   if (argc < 2) {
     std::fputs(kUsage, stderr);
     return wg::kExitUsage;
