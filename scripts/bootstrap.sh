@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
+  python3             # scripts/check-layers.py, the layer check ctest runs
   glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev
   nlohmann-json3-dev libglm-dev libstb-dev
   libgtest-dev libbenchmark-dev
