@@ -1,6 +1,9 @@
 #include "nodes/op_registry.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+
+#include "nodes/op_template_check.hpp"
 
 namespace wg {
 
@@ -30,7 +33,11 @@ struct Registry {
     appendNormalMapOps(ops);
     appendWeatherOps(ops);
     appendSnowOps(ops);
-    for (const auto& op : ops) sorted.push_back(&op);
+    for (const auto& op : ops) {
+      // A bad template is a bug in weathergen: refuse to start rather than emit it.
+      if (auto error = templateError(op)) throw std::logic_error("op '" + std::string(op.name) + "': " + *error);
+      sorted.push_back(&op);
+    }
     std::sort(sorted.begin(), sorted.end(),
               [](const OpDef* a, const OpDef* b) { return a->name < b->name; });
   }
