@@ -3,6 +3,7 @@
 #include <array>
 
 #include "backends/shader_syntax.hpp"
+#include "backends/stage_frame.hpp"
 
 namespace wg {
 
@@ -44,6 +45,11 @@ class GlslSyntax final : public ShaderSyntax {
   }
   std::string_view lodArgument(ShaderStage stage) const override { return stage == ShaderStage::Vertex ? ", 0.0" : ""; }
 
+  // GLSL is the source language: everything is printed as written.
+  std::string_view libraryCode(const ShaderLibrary& library) const override { return library.glsl; }
+  std::string_view opCode(const OpDef& op) const override { return op.glsl; }
+  std::string frameCode(std::string_view glsl, ShaderStage) const override { return std::string(glsl); }
+
   std::string assemble(const StageSource& s) const override {
     const MaterialInterface& mi = *s.interface;
     std::string out;
@@ -76,45 +82,13 @@ class GlslSyntax final : public ShaderSyntax {
     if (!vertex) out += "layout(location = 0) out vec4 out_color;\n";
     for (const ShaderLibrary* lib : s.libraries) {
       out += '\n';
-      out += lib->glsl;
+      out += libraryCode(*lib);
     }
     out += "\nvoid main() {\n";
     if (vertex) {
-      out += "  vec3 wg_worldPosition = (frame_model * vec4(in_position, 1.0)).xyz;\n"
-             "  vec3 wg_worldNormal = wg_safe_normalize((frame_normalMatrix * vec4(in_normal, 0.0)).xyz);\n"
-             "  vec4 wg_worldTangent = vec4(wg_safe_normalize((frame_model * vec4(in_tangent.xyz, 0.0)).xyz), in_tangent.w);\n"
-             "  vec2 wg_texcoord = in_texcoord;\n"
-             "  vec4 wg_vertexColor = in_color;\n";
-      if (mi.hasTexcoord1()) out += "  vec2 wg_texcoord1 = in_texcoord1;\n";
-      out += s.body;
-      out += "  wg_worldPosition += wg_offset;\n";
-      out += "  v_worldPosition = wg_worldPosition;\n"
-             "  v_worldNormal = wg_worldNormal;\n"
-             "  v_worldTangent = wg_worldTangent;\n"
-             "  v_texcoord = wg_texcoord;\n"
-             "  v_color = wg_vertexColor;\n";
-      if (mi.hasTexcoord1()) out += "  v_texcoord1 = wg_texcoord1;\n";
-      out += "  gl_Position = frame_viewProjection * vec4(wg_worldPosition, 1.0);\n";
+      appendVertexMain(out, s, *this);
     } else {
-      out += "  vec3 wg_worldPosition = v_worldPosition;\n"
-             "  vec3 wg_worldNormal = wg_safe_normalize(v_worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);\n"
-             "  vec3 wg_tangentAxis = wg_safe_normalize(v_worldTangent.xyz - wg_worldNormal * dot(wg_worldNormal, v_worldTangent.xyz));\n"
-             "  vec4 wg_worldTangent = vec4(wg_tangentAxis, v_worldTangent.w);\n"
-             "  vec2 wg_texcoord = v_texcoord;\n"
-             "  vec4 wg_vertexColor = v_color;\n";
-      if (mi.hasTexcoord1()) out += "  vec2 wg_texcoord1 = v_texcoord1;\n";
-      out += s.body;
-      if (s.alphaTested) out += "  if (wg_opacity < " + formatFloat(s.alphaCutoff) + ") discard;\n";
-      out += "  vec3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
-             "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
-             "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
-             "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
-      out += alphaStatement(s);
-      for (const auto& view : s.debugViews) {
-        out += "  if (frame_debugView == " + std::to_string(view.id) + "u) ";
-        if (view.alpha.empty()) out += "wg_color = " + view.expression + ";\n";
-        else out += "{ wg_color = " + view.expression + "; wg_alpha = " + view.alpha + "; }\n";
-      }
+      appendFragmentMain(out, s, *this);
       out += "  out_color = vec4(wg_color, wg_alpha);\n";
     }
     out += "}\n";

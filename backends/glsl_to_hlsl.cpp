@@ -219,9 +219,18 @@ std::string glslToHlsl(std::string_view glsl, const HlslTranslation& translation
   return Translator(glsl, translation).run();
 }
 
+bool callsHlslPrelude(std::string_view hlsl) { return hlsl.find("wg_glsl_") != std::string_view::npos; }
+
 std::string_view hlslPrelude() {
+  // Functions, not a macro: no generated code defines macros.
   return "// GLSL's mod: the result has the sign of y (HLSL's fmod gives it the sign of x).\n"
-         "#define wg_glsl_mod(x, y) ((x) - (y) * floor((x) / (y)))\n";
+         "float wg_glsl_mod(float x, float y) { return x - y * floor(x / y); }\n"
+         "float2 wg_glsl_mod(float2 x, float2 y) { return x - y * floor(x / y); }\n"
+         "float3 wg_glsl_mod(float3 x, float3 y) { return x - y * floor(x / y); }\n"
+         "float4 wg_glsl_mod(float4 x, float4 y) { return x - y * floor(x / y); }\n"
+         "float2 wg_glsl_mod(float2 x, float y) { return x - y * floor(x / y); }\n"
+         "float3 wg_glsl_mod(float3 x, float y) { return x - y * floor(x / y); }\n"
+         "float4 wg_glsl_mod(float4 x, float y) { return x - y * floor(x / y); }\n";
 }
 
 }  // namespace wg

@@ -24,7 +24,9 @@ struct HlslTranslation {
 // Throws std::invalid_argument for GLSL it cannot map (a sampler2D outside texture()).
 std::string glslToHlsl(std::string_view glsl, const HlslTranslation& translation = {});
 
-// Helpers the translated code may call; emitted once before the libraries.
+// Helpers the translated code may call (each named "wg_glsl_*"); a stage emits them
+// once, before the libraries, when its code calls one.
 std::string_view hlslPrelude();
+bool callsHlslPrelude(std::string_view hlsl);
 
 }  // namespace wg

@@ -3,7 +3,9 @@
 // [[vk::location]] on stage IO, entry point "main".
 #include <array>
 
+#include "backends/derived_hlsl.hpp"
 #include "backends/shader_syntax.hpp"
+#include "backends/stage_frame.hpp"
 
 namespace wg {
 
@@ -13,7 +15,7 @@ namespace {
 constexpr std::size_t kFrameSizeHint = 6144;
 std::size_t librarySize(const StageSource& s) {
   std::size_t n = 0;
-  for (const ShaderLibrary* lib : s.libraries) n += lib->hlsl.size() + 1;
+  for (const ShaderLibrary* lib : s.libraries) n += lib->glsl.size() + 1;  // HLSL is about as long
   return n;
 }
 
@@ -45,6 +47,26 @@ void appendBlock(std::string& out, const UniformBlock& block) {
 // HLSL semantics for stage IO; locations are what Vulkan matches.
 std::string semantic(std::uint32_t location) { return "TEXCOORD" + std::to_string(location); }
 
+// Stage IO lives in the entry point's structs, where the frame's GLSL (stage_frame.cpp)
+// names the varyings, gl_Position and gl_FrontFacing as globals.
+HlslTranslation stageIoTranslation(ShaderStage stage) {
+  static constexpr std::array<std::string_view, 6> kVaryings = {"v_worldPosition", "v_worldNormal", "v_worldTangent",
+                                                                "v_texcoord",      "v_color",       "v_texcoord1"};
+  static constexpr std::array<std::string_view, 6> kInputs = {"wg_in.v_worldPosition", "wg_in.v_worldNormal",
+                                                              "wg_in.v_worldTangent",  "wg_in.v_texcoord",
+                                                              "wg_in.v_color",         "wg_in.v_texcoord1"};
+  static constexpr std::array<std::string_view, 6> kOutputs = {"wg_out.v_worldPosition", "wg_out.v_worldNormal",
+                                                               "wg_out.v_worldTangent",  "wg_out.v_texcoord",
+                                                               "wg_out.v_color",         "wg_out.v_texcoord1"};
+  bool vertex = stage == ShaderStage::Vertex;
+  HlslTranslation translation = frameMatrixTranslation();
+  for (std::size_t i = 0; i < kVaryings.size(); ++i)
+    translation.renames.emplace_back(kVaryings[i], vertex ? kOutputs[i] : kInputs[i]);
+  if (vertex) translation.renames.emplace_back("gl_Position", "wg_out.wg_clipPosition");
+  else translation.renames.emplace_back("gl_FrontFacing", "wg_frontFacing");
+  return translation;
+}
+
 class HlslSyntax final : public ShaderSyntax {
  public:
   ShaderLanguage language() const override { return ShaderLanguage::Hlsl; }
@@ -60,6 +82,14 @@ class HlslSyntax final : public ShaderSyntax {
     return stage == ShaderStage::Vertex ? "SampleLevel" : "Sample";
   }
   std::string_view lodArgument(ShaderStage stage) const override { return stage == ShaderStage::Vertex ? ", 0.0" : ""; }
+
+  std::string_view libraryCode(const ShaderLibrary& library) const override { return derivedHlsl(library); }
+  std::string_view opCode(const OpDef& op) const override { return derivedHlsl(op); }
+  std::string frameCode(std::string_view glsl, ShaderStage stage) const override {
+    static const HlslTranslation kVertex = stageIoTranslation(ShaderStage::Vertex);
+    static const HlslTranslation kFragment = stageIoTranslation(ShaderStage::Fragment);
+    return glslToHlsl(glsl, stage == ShaderStage::Vertex ? kVertex : kFragment);
+  }
 
   std::string assemble(const StageSource& s) const override {
     const MaterialInterface& mi = *s.interface;
@@ -96,52 +126,23 @@ class HlslSyntax final : public ShaderSyntax {
       out += "  [[vk::location(" + std::to_string(v.location) + ")]] " + std::string(hlslInterfaceType(v.type)) + " " +
              v.identifier + " : " + semantic(v.location) + ";\n";
     out += "};\n";
+    bool prelude = callsHlslPrelude(s.body);
+    for (const ShaderLibrary* lib : s.libraries) prelude = prelude || callsHlslPrelude(libraryCode(*lib));
+    if (prelude) out += hlslPrelude();
     for (const ShaderLibrary* lib : s.libraries) {
       out += '\n';
-      out += lib->hlsl;
+      out += libraryCode(*lib);
     }
     if (vertex) {
       out += "\nVSOutput main(VSInput wg_in) {\n";
       for (const auto& a : mi.vertexInputs)
         out += "  " + std::string(hlslInterfaceType(a.type)) + " " + a.identifier + " = wg_in." + a.identifier + ";\n";
-      out += "  float3 wg_worldPosition = mul(frame_model, float4(in_position, 1.0)).xyz;\n"
-             "  float3 wg_worldNormal = wg_safe_normalize(mul(frame_normalMatrix, float4(in_normal, 0.0)).xyz);\n"
-             "  float4 wg_worldTangent = float4(wg_safe_normalize(mul(frame_model, float4(in_tangent.xyz, 0.0)).xyz), in_tangent.w);\n"
-             "  float2 wg_texcoord = in_texcoord;\n"
-             "  float4 wg_vertexColor = in_color;\n";
-      if (mi.hasTexcoord1()) out += "  float2 wg_texcoord1 = in_texcoord1;\n";
-      out += s.body;
-      out += "  wg_worldPosition += wg_offset;\n";
-      out += "  VSOutput wg_out;\n"
-             "  wg_out.v_worldPosition = wg_worldPosition;\n"
-             "  wg_out.v_worldNormal = wg_worldNormal;\n"
-             "  wg_out.v_worldTangent = wg_worldTangent;\n"
-             "  wg_out.v_texcoord = wg_texcoord;\n"
-             "  wg_out.v_color = wg_vertexColor;\n";
-      if (mi.hasTexcoord1()) out += "  wg_out.v_texcoord1 = wg_texcoord1;\n";
-      out += "  wg_out.wg_clipPosition = mul(frame_viewProjection, float4(wg_worldPosition, 1.0));\n"
-             "  return wg_out;\n";
+      out += "  VSOutput wg_out;\n";
+      appendVertexMain(out, s, *this);
+      out += "  return wg_out;\n";
     } else {
       out += "\nfloat4 main(PSInput wg_in, bool wg_frontFacing : SV_IsFrontFace) : SV_Target0 {\n";
-      out += "  float3 wg_worldPosition = wg_in.v_worldPosition;\n"
-             "  float3 wg_worldNormal = wg_safe_normalize(wg_in.v_worldNormal) * (wg_frontFacing ? 1.0 : -1.0);\n"
-             "  float3 wg_tangentAxis = wg_safe_normalize(wg_in.v_worldTangent.xyz - wg_worldNormal * dot(wg_worldNormal, wg_in.v_worldTangent.xyz));\n"
-             "  float4 wg_worldTangent = float4(wg_tangentAxis, wg_in.v_worldTangent.w);\n"
-             "  float2 wg_texcoord = wg_in.v_texcoord;\n"
-             "  float4 wg_vertexColor = wg_in.v_color;\n";
-      if (mi.hasTexcoord1()) out += "  float2 wg_texcoord1 = wg_in.v_texcoord1;\n";
-      out += s.body;
-      if (s.alphaTested) out += "  if (wg_opacity < " + formatFloat(s.alphaCutoff) + ") discard;\n";
-      out += "  float3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
-             "  float3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
-             "  float3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
-             "  float3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
-      out += alphaStatement(s);
-      for (const auto& view : s.debugViews) {
-        out += "  if (frame_debugView == " + std::to_string(view.id) + "u) ";
-        if (view.alpha.empty()) out += "wg_color = " + view.expression + ";\n";
-        else out += "{ wg_color = " + view.expression + "; wg_alpha = " + view.alpha + "; }\n";
-      }
+      appendFragmentMain(out, s, *this);
       out += "  return float4(wg_color, wg_alpha);\n";
     }
     out += "}\n";

@@ -48,6 +48,11 @@ class ShaderSyntax {
   virtual std::string_view sampleFunction(ShaderStage stage) const = 0;
   virtual std::string_view lodArgument(ShaderStage stage) const = 0;
   virtual std::string assemble(const StageSource& source) const = 0;
+  // Shader code is written once, in GLSL: a library, an op's template (its "{...}"
+  // placeholders untouched) and the stage frame's statements, in this language.
+  virtual std::string_view libraryCode(const ShaderLibrary& library) const = 0;
+  virtual std::string_view opCode(const OpDef& op) const = 0;
+  virtual std::string frameCode(std::string_view glsl, ShaderStage stage) const = 0;
 
   std::string constant(const Value& value) const;
   // The fragment stage's output alpha: 1, or the opacity in the lit view of a blended

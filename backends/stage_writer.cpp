@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <stdexcept>
 
 #include "compiler/debug_views.hpp"
 #include "nodes/core_library.hpp"
@@ -190,13 +191,14 @@ class StageWriter {
           return name == "texture" ? b.textureIdentifier : b.samplerIdentifier;
         }
     }
-    return "/*unknown symbol*/";
+    // Unreachable: the registry refuses templates naming other symbols (op_template_check).
+    throw std::logic_error("op " + std::string(node.op->name) + ": unknown template symbol @" + std::string(name));
   }
 
   void emitNode(std::size_t index, std::string& body, std::string_view indent) {
     const IrNode& node = graph_.nodes[index];
     const OpDef& op = *node.op;
-    std::string_view code = op.code(syntax_.language() == ShaderLanguage::Hlsl);
+    std::string_view code = syntax_.opCode(op);
     body += indent;
     body += syntax_.typeName(node.valueType);
     body += ' ';

@@ -7,8 +7,6 @@ const ShaderLibrary kCoreLibrary = {
     "core",
     R"(vec3 wg_safe_normalize(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-12)); }
 )",
-    R"(float3 wg_safe_normalize(float3 v) { return v * rsqrt(max(dot(v, v), 1e-12)); }
-)",
     {}};
 
 }  // namespace wg

@@ -100,43 +100,6 @@ float wg_gradient_noise(vec2 p) {
   return clamp(0.5 + 0.5 * mix(mix(a, b, u.x), mix(c, d, u.x), u.y), 0.0, 1.0);
 }
 )",
-    R"(uint wg_lattice_hash(int2 cell) {
-  uint2 q = uint2(cell) * uint2(1597334673u, 3812015801u);
-  return (q.x ^ q.y) * 1597334673u;
-}
-float wg_hash_to_unit(uint n) { return float(n >> 8u) * (1.0 / 16777216.0); }
-float2 wg_quintic(float2 f) { return f * f * f * (f * (f * 6.0 - 15.0) + 10.0); }
-// The four corner hashes in one uint4: the same per-corner arithmetic as
-// wg_lattice_hash, in a quarter of the instructions.
-float4 wg_corner_values(int2 i) {
-  uint4 x = uint4(int4(i.x, i.x + 1, i.x, i.x + 1)) * 1597334673u;
-  uint4 y = uint4(int4(i.y, i.y, i.y + 1, i.y + 1)) * 3812015801u;
-  return float4((x ^ y) * 1597334673u >> 8u) * (1.0 / 16777216.0);
-}
-float wg_value_noise(float2 p) {
-  float2 cell = floor(p);
-  float2 u = wg_quintic(p - cell);
-  float4 c = wg_corner_values(int2(cell));
-  float2 edge = lerp(c.xz, c.yw, u.x);
-  return lerp(edge.x, edge.y, u.y);
-}
-float wg_gradient_dot(int2 i, float2 d) {
-  uint n = wg_lattice_hash(i);
-  float2 g = float2(wg_hash_to_unit(n), wg_hash_to_unit(n * 747796405u + 2891336453u)) * 2.0 - 1.0;
-  return g.x * d.x + g.y * d.y;
-}
-float wg_gradient_noise(float2 p) {
-  float2 cell = floor(p);
-  float2 f = p - cell;
-  float2 u = wg_quintic(f);
-  int2 i = int2(cell);
-  float a = wg_gradient_dot(i, f);
-  float b = wg_gradient_dot(i + int2(1, 0), f - float2(1.0, 0.0));
-  float c = wg_gradient_dot(i + int2(0, 1), f - float2(0.0, 1.0));
-  float d = wg_gradient_dot(i + int2(1, 1), f - float2(1.0, 1.0));
-  return clamp(0.5 + 0.5 * lerp(lerp(a, b, u.x), lerp(c, d, u.x), u.y), 0.0, 1.0);
-}
-)",
     {}};
 
 }  // namespace wg

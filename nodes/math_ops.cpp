@@ -84,7 +84,7 @@ void appendMathOps(std::vector<OpDef>& ops) {
   ops.push_back(unary("floor", "largest integer <= x", "floor({in})", "", [](const Value* in, const EvalContext&) {
     return mapComponents(in[0], [](float x) { return std::floor(x); });
   }));
-  ops.push_back(unary("frac", "x - floor(x)", "fract({in})", "frac({in})", [](const Value* in, const EvalContext&) {
+  ops.push_back(unary("frac", "x - floor(x)", "fract({in})", "", [](const Value* in, const EvalContext&) {
     return mapComponents(in[0], fractional);
   }));
   ops.push_back(unary("sqrt", "square root of max(x, 0)", "sqrt(max({in}, 0.0))", "",
@@ -95,7 +95,7 @@ void appendMathOps(std::vector<OpDef>& ops) {
   ops.push_back(unary("cos", "cosine (radians)", "cos({in})", "", [](const Value* in, const EvalContext&) {
     return mapComponents(in[0], [](float x) { return std::cos(x); });
   }));
-  ops.push_back(unary("saturate", "clamp(x, 0, 1)", "clamp({in}, 0.0, 1.0)", "saturate({in})",
+  ops.push_back(unary("saturate", "clamp(x, 0, 1)", "clamp({in}, 0.0, 1.0)", "",
                       [](const Value* in, const EvalContext&) {
                         return mapComponents(in[0], [](float x) { return std::clamp(x, 0.f, 1.f); });
                       }));
@@ -107,7 +107,7 @@ void appendMathOps(std::vector<OpDef>& ops) {
                                         [](float x, float lo, float hi) { return std::min(std::max(x, lo), hi); });
                  }});
   ops.push_back({"lerp", "math", "a + (b - a) * t", {gen("a", 0.f), gen("b", 1.f), genRequired("t")},
-                 ValueRule::Generic, ValueType::Float, "mix({a}, {b}, {t})", "lerp({a}, {b}, {t})",
+                 ValueRule::Generic, ValueType::Float, "mix({a}, {b}, {t})", "",
                  singleOutput(), [](const Value* in, const EvalContext&) {
                    return mapComponents(in[0], in[1], in[2], [](float a, float b, float t) { return a + (b - a) * t; });
                  }});
@@ -135,8 +135,7 @@ void appendMathOps(std::vector<OpDef>& ops) {
                  [](const Value* in, const EvalContext&) { return Value::scalar(std::sqrt(dotProduct(in[0], in[0]))); }});
   ops.push_back({"normalize", "math", "unit vector; a zero vector stays zero", {genRequired("in")},
                  ValueRule::Generic, ValueType::Float,
-                 "({in} * inversesqrt(max(dot({in}, {in}), 1e-12)))",
-                 "({in} * rsqrt(max(dot({in}, {in}), 1e-12)))", singleOutput(),
+                 "({in} * inversesqrt(max(dot({in}, {in}), 1e-12)))", "", singleOutput(),
                  [](const Value* in, const EvalContext&) {
                    float scale = 1.f / std::sqrt(std::max(dotProduct(in[0], in[0]), kMinSquaredLength));
                    return mapComponents(in[0], [scale](float x) { return x * scale; });

@@ -31,18 +31,6 @@ vec3 wg_blend_normals_rnm(vec3 base, vec3 detail) {
   return r * inversesqrt(max(dot(r, r), 1e-12));
 }
 )",
-    R"(float3 wg_unpack_normal(float3 rgb, float strength) {
-  float3 n = rgb * 2.0 - 1.0;
-  n.xy *= strength;
-  return n * rsqrt(max(dot(n, n), 1e-12));
-}
-float3 wg_blend_normals_rnm(float3 base, float3 detail) {
-  float3 t = base + float3(0.0, 0.0, 1.0);
-  float3 u = detail * float3(-1.0, -1.0, 1.0);
-  float3 r = t * (dot(t, u) / max(t.z, 1e-4)) - u;
-  return r * rsqrt(max(dot(r, r), 1e-12));
-}
-)",
     {}};
 }  // namespace
 

@@ -79,11 +79,11 @@ struct EvalContext {
 using CpuEval = Value (*)(const Value* inputs, const EvalContext& context);
 
 // Shader library code shared by ops (noise, normal blending...). Emitted once, in
-// dependency order, only when an op that needs it is used.
+// dependency order, only when an op that needs it is used. Written once, in GLSL; the
+// HLSL backend derives its own text from it (backends/glsl_to_hlsl.hpp).
 struct ShaderLibrary {
   std::string_view name;
   std::string_view glsl;
-  std::string_view hlsl;
   std::vector<const ShaderLibrary*> dependencies;
 };
 
@@ -108,9 +108,12 @@ struct OpDef {
   ValueRule valueRule = ValueRule::Generic;
   ValueType valueType = ValueType::Float;  // for ValueRule::Fixed
   // The value's expression: "{port}" is an input expression, "{T}" the value type,
-  // "{@symbol}" a symbol the shader writer provides (geometry, time, bindings).
+  // "{@symbol}" a symbol the shader writer provides (geometry, time, bindings); checked
+  // when the registry is built (nodes/op_template_check.hpp).
   std::string_view glsl;
-  std::string_view hlsl;  // empty: same text as glsl
+  // Empty: the HLSL backend derives the template from glsl. Set it only for code no
+  // token map can derive, with a comment saying why (no op needs one today).
+  std::string_view hlsl;
   std::vector<OutputSpec> outputs;
   CpuEval eval = nullptr;
   OpPurity purity = OpPurity::Pure;
@@ -121,7 +124,6 @@ struct OpDef {
 
   const PortSpec* findInput(std::string_view port) const;
   int findOutput(std::string_view output) const;
-  std::string_view code(bool hlslTarget) const { return hlslTarget && !hlsl.empty() ? hlsl : glsl; }
 };
 
 // The single "out" output most ops have.

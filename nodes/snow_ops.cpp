@@ -33,7 +33,7 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                {"extent", PortType::Float, Value::scalar(kDefaultMapExtent), 1e-3f, 1e5f}},
               ValueRule::Fixed, ValueType::Vec4,
               "{@sampleFn}(sampler2D(wg_snow_deformation_map, wg_snow_deformation_sampler), {position}.xz / {extent}{@lodArg})",
-              "wg_snow_deformation_map.{@sampleFn}(wg_snow_deformation_sampler, {position}.xz / {extent}{@lodArg})",
+              "",
               // Texel: (height, world normal x, y, z); a level layer's tangent frame is
               // (+x, +z, +y), so its tangent-space normal is .ywz.
               {{"height", ".x"}, {"normal", ".ywz"}, {"worldNormal", ".yzw"}},

@@ -9,8 +9,7 @@ void appendTextureOps(std::vector<OpDef>& ops) {
   ops.push_back({"sample", "texture", "samples a declared texture at uv",
                  {{"texture", PortType::TextureName, std::nullopt}, {"uv", PortType::Vec2, std::nullopt}},
                  ValueRule::Fixed, ValueType::Vec4,
-                 "{@sampleFn}(sampler2D({@texture}, {@sampler}), {uv}{@lodArg})",
-                 "{@texture}.{@sampleFn}({@sampler}, {uv}{@lodArg})",
+                 "{@sampleFn}(sampler2D({@texture}, {@sampler}), {uv}{@lodArg})", "",
                  {{"rgba", ""}, {"rgb", ".rgb"}, {"r", ".r"}, {"g", ".g"}, {"b", ".b"}, {"a", ".a"}},
                  [](const Value* in, const EvalContext& c) {
                    if (!c.textures) return Value::vec4(0.f, 0.f, 0.f, 1.f);

@@ -43,8 +43,7 @@ void appendVectorOps(std::vector<OpDef>& ops) {
   ops.push_back({"desaturate", "color", "blends a colour towards its Rec. 709 luminance by amount",
                  {{"color", PortType::Vec3, std::nullopt}, {"amount", PortType::Float, Value::scalar(1.f), 0.f, 1.f}},
                  ValueRule::Fixed, ValueType::Vec3,
-                 "mix({color}, vec3(dot({color}, vec3(0.2126, 0.7152, 0.0722))), {amount})",
-                 "lerp({color}, (float3)dot({color}, float3(0.2126, 0.7152, 0.0722)), {amount})", singleOutput(),
+                 "mix({color}, vec3(dot({color}, vec3(0.2126, 0.7152, 0.0722))), {amount})", "", singleOutput(),
                  [](const Value* in, const EvalContext&) {
                    const auto& c = in[0].v;
                    float luma = c[0] * kLumaR + c[1] * kLumaG + c[2] * kLumaB;

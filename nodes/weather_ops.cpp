@@ -108,7 +108,6 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                                return Value::scalar(c.terrainHeight->sample(in[0].v[0], in[0].v[1]));
                              },
                              V);
-    height.hlsl = "wg_terrain_height_map.{@sampleFn}(wg_terrain_height_sampler, {uv}{@lodArg}).r";
     height.weatherMaps = {"terrainHeight"};
     ops.push_back(std::move(height));
   }
@@ -194,15 +193,12 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                                "wg_exposure_from_map({position}, {@sampleFn}(sampler2D(wg_sky_exposure_map, "
                                "wg_sky_exposure_sampler), wg_sky_exposure_uv({position}){@lodArg}).r)",
                                [](const Value*, const EvalContext& c) { return Value::scalar(c.surface->skyExposure); }, V);
-    exposure.hlsl = "wg_exposure_from_map({position}, wg_sky_exposure_map.{@sampleFn}(wg_sky_exposure_sampler, "
-                    "wg_sky_exposure_uv({position}){@lodArg}).r)";
     exposure.weatherMaps = {"skyExposure"};
     ops.push_back(std::move(exposure));
   }
 
   ops.push_back({"weather_levels", "weather", "the accumulated levels from the weather state", {}, ValueRule::Fixed,
-                 ValueType::Vec4, "vec4(frame_snowLevel, frame_wetnessLevel, frame_mossLevel, frame_frostLevel)",
-                 "float4(frame_snowLevel, frame_wetnessLevel, frame_mossLevel, frame_frostLevel)",
+                 ValueType::Vec4, "vec4(frame_snowLevel, frame_wetnessLevel, frame_mossLevel, frame_frostLevel)", "",
                  {{"snow", ".x"}, {"wetness", ".y"}, {"moss", ".z"}, {"frost", ".w"}},
                  [](const Value*, const EvalContext& c) {
                    const FrameState& f = *c.frame;
@@ -211,8 +207,7 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                  V});
   ops.push_back({"weather_conditions", "weather", "temperature (C), precipitation, wind and sun intensity", {},
                  ValueRule::Fixed, ValueType::Vec4,
-                 "vec4(frame_temperature, frame_precipitation, frame_windIntensity, frame_sunIntensity)",
-                 "float4(frame_temperature, frame_precipitation, frame_windIntensity, frame_sunIntensity)",
+                 "vec4(frame_temperature, frame_precipitation, frame_windIntensity, frame_sunIntensity)", "",
                  {{"temperature", ".x"}, {"precipitation", ".y"}, {"windIntensity", ".z"}, {"sunIntensity", ".w"}},
                  [](const Value*, const EvalContext& c) {
                    const FrameState& f = *c.frame;

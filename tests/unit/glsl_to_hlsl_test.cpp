@@ -46,7 +46,10 @@ TEST(GlslToHlsl, RewritesComparisonsAtan2AndMod) {
   EXPECT_EQ(glslToHlsl("not(b)"), "(!b)");
   EXPECT_EQ(glslToHlsl("atan(y, x) + atan(t)"), "atan2(y, x) + atan(t)");
   EXPECT_EQ(glslToHlsl("mod(x, 2.0)"), "wg_glsl_mod(x, 2.0)");
-  EXPECT_NE(hlslPrelude().find("#define wg_glsl_mod(x, y) ((x) - (y) * floor((x) / (y)))"), std::string_view::npos);
+  EXPECT_NE(hlslPrelude().find("float3 wg_glsl_mod(float3 x, float y) { return x - y * floor(x / y); }"),
+            std::string_view::npos);
+  EXPECT_TRUE(callsHlslPrelude(glslToHlsl("mod(x, 2.0)")));
+  EXPECT_FALSE(callsHlslPrelude(glslToHlsl("fract(x)")));
 }
 
 TEST(GlslToHlsl, SamplingBecomesAMethodCall) {

@@ -1,0 +1,55 @@
+#include "backends/stage_frame.hpp"
+
+namespace wg {
+
+void appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+  bool texcoord1 = s.interface->hasTexcoord1();
+  std::string prologue =
+      "  vec3 wg_worldPosition = (frame_model * vec4(in_position, 1.0)).xyz;\n"
+      "  vec3 wg_worldNormal = wg_safe_normalize((frame_normalMatrix * vec4(in_normal, 0.0)).xyz);\n"
+      "  vec4 wg_worldTangent = vec4(wg_safe_normalize((frame_model * vec4(in_tangent.xyz, 0.0)).xyz), in_tangent.w);\n"
+      "  vec2 wg_texcoord = in_texcoord;\n"
+      "  vec4 wg_vertexColor = in_color;\n";
+  if (texcoord1) prologue += "  vec2 wg_texcoord1 = in_texcoord1;\n";
+  out += syntax.frameCode(prologue, ShaderStage::Vertex);
+  out += s.body;
+  std::string epilogue =
+      "  wg_worldPosition += wg_offset;\n"
+      "  v_worldPosition = wg_worldPosition;\n"
+      "  v_worldNormal = wg_worldNormal;\n"
+      "  v_worldTangent = wg_worldTangent;\n"
+      "  v_texcoord = wg_texcoord;\n"
+      "  v_color = wg_vertexColor;\n";
+  if (texcoord1) epilogue += "  v_texcoord1 = wg_texcoord1;\n";
+  epilogue += "  gl_Position = frame_viewProjection * vec4(wg_worldPosition, 1.0);\n";
+  out += syntax.frameCode(epilogue, ShaderStage::Vertex);
+}
+
+void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+  std::string prologue =
+      "  vec3 wg_worldPosition = v_worldPosition;\n"
+      "  vec3 wg_worldNormal = wg_safe_normalize(v_worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);\n"
+      "  vec3 wg_tangentAxis = wg_safe_normalize(v_worldTangent.xyz - wg_worldNormal * dot(wg_worldNormal, v_worldTangent.xyz));\n"
+      "  vec4 wg_worldTangent = vec4(wg_tangentAxis, v_worldTangent.w);\n"
+      "  vec2 wg_texcoord = v_texcoord;\n"
+      "  vec4 wg_vertexColor = v_color;\n";
+  if (s.interface->hasTexcoord1()) prologue += "  vec2 wg_texcoord1 = v_texcoord1;\n";
+  out += syntax.frameCode(prologue, ShaderStage::Fragment);
+  out += s.body;
+  if (s.alphaTested) out += "  if (wg_opacity < " + formatFloat(s.alphaCutoff) + ") discard;\n";
+  out += syntax.frameCode(
+      "  vec3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
+      "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
+      "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
+      "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n",
+      ShaderStage::Fragment);
+  out += ShaderSyntax::alphaStatement(s);
+  // The views' expressions are already in the target language.
+  for (const auto& view : s.debugViews) {
+    out += "  if (frame_debugView == " + std::to_string(view.id) + "u) ";
+    if (view.alpha.empty()) out += "wg_color = " + view.expression + ";\n";
+    else out += "{ wg_color = " + view.expression + "; wg_alpha = " + view.alpha + "; }\n";
+  }
+}
+
+}  // namespace wg
