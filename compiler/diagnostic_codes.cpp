@@ -79,6 +79,8 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
      "SPIR-V for {0} failed validation: {1}", "this is a weathergen bug; please report it"},
     {InternalException, "WG9900", E, Bug, "internal-exception", "internal error: {0}",
      "this is a weathergen bug; please report it with the graph that caused it"},
+    {InternalIrInvalid, "WG9903", E, Bug, "internal-ir-invalid", "the IR breaks an invariant after '{0}': {1}",
+     "this is a weathergen bug; please report it with the graph that caused it"},
 }};
 
 constexpr bool tableMatchesEnum() {

@@ -56,6 +56,7 @@ enum class DiagCode : std::uint16_t {
   InternalShaderError,
   InternalSpirvInvalid,
   InternalException,
+  InternalIrInvalid,
   kCount
 };
 

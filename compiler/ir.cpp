@@ -17,6 +17,20 @@ const std::array<CoverageInfo, kCoverageCount>& coverageTerms() {
   return kTerms;
 }
 
+std::optional<ValueType> signatureValueType(PortType type) {
+  switch (type) {
+    case PortType::Float: return ValueType::Float;
+    case PortType::Vec2: return ValueType::Vec2;
+    case PortType::Vec3: return ValueType::Vec3;
+    case PortType::Vec4: return ValueType::Vec4;
+    case PortType::Bool: return ValueType::Bool;
+    case PortType::TextureName: return ValueType::Texture;
+    case PortType::Text: return ValueType::Float;
+    case PortType::Generic: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 ValueType IrNode::outputType(std::size_t output) const {
   std::string_view accessor = op->outputs[output].accessor;
   if (accessor.empty()) return valueType;

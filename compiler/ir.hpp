@@ -2,6 +2,7 @@
 // user-spelled identifiers: node ids survive only as debug names for diagnostics.
 #pragma once
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,10 @@ struct IrNode {
 
   ValueType outputType(std::size_t output) const;
 };
+
+// The value type a port's signature fixes, or nullopt for a generic port (T). A text
+// setting's port holds a placeholder float operand.
+std::optional<ValueType> signatureValueType(PortType type);
 
 // Weather coverage terms: published as AOVs, debug views and CPU-evaluator outputs.
 enum class CoverageTerm : std::uint8_t { Snow, Wet, Moss, Frost, Ice, Puddle, Density };

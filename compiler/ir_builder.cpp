@@ -29,17 +29,7 @@ struct PendingNode {
   bool bad = false;
 };
 
-ValueType fixedPortType(PortType type) {
-  switch (type) {
-    case PortType::Float: return ValueType::Float;
-    case PortType::Vec2: return ValueType::Vec2;
-    case PortType::Vec3: return ValueType::Vec3;
-    case PortType::Vec4: return ValueType::Vec4;
-    case PortType::Bool: return ValueType::Bool;
-    case PortType::TextureName: return ValueType::Texture;
-    default: return ValueType::Float;
-  }
-}
+ValueType fixedPortType(PortType type) { return signatureValueType(type).value_or(ValueType::Float); }
 
 std::string describePort(PortType type) {
   switch (type) {

@@ -8,19 +8,7 @@
 namespace wg {
 
 namespace {
-ValueType portValueType(PortType type, ValueType generic) {
-  switch (type) {
-    case PortType::Float: return ValueType::Float;
-    case PortType::Vec2: return ValueType::Vec2;
-    case PortType::Vec3: return ValueType::Vec3;
-    case PortType::Vec4: return ValueType::Vec4;
-    case PortType::Bool: return ValueType::Bool;
-    case PortType::Generic: return generic;
-    case PortType::TextureName: return ValueType::Texture;
-    case PortType::Text: return ValueType::Float;
-  }
-  return ValueType::Float;
-}
+ValueType portValueType(PortType type, ValueType generic) { return signatureValueType(type).value_or(generic); }
 }  // namespace
 
 Operand IrNodeBuilder::add(std::string_view opName, std::initializer_list<std::pair<std::string_view, Operand>> inputs) {

@@ -42,7 +42,10 @@ std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string tex
   buildOptions.weatherPreset = options.weatherPreset;
   auto ir = buildIr(*graph, *document, diagnostics, buildOptions);
   if (!ir) return std::nullopt;
-  runPassPipeline(*ir);
+  if (auto violation = runPassPipeline(*ir, options.passes)) {
+    diagnostics.report(DiagCode::InternalIrInvalid, {file, "", 0, 0}, {violation->after, violation->problem});
+    return std::nullopt;
+  }
   return ir;
 }
 

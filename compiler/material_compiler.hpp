@@ -10,6 +10,7 @@
 #include "compiler/diagnostic.hpp"
 #include "compiler/ir.hpp"
 #include "compiler/material_interface.hpp"
+#include "compiler/pass_pipeline.hpp"
 #include "compiler/static_switches.hpp"
 
 namespace wg {
@@ -26,6 +27,8 @@ struct CompileOptions {
   // Files named NAME.HASH.* (content hash), so identical variants share them (--variants).
   bool hashKeyedFileStem = false;
   SwitchValues switches;  // the variant: static switch values; unnamed switches keep their default
+  // IR verification between passes (on in debug builds; tests turn it on) and a pass observer.
+  PassPipelineOptions passes;
 };
 
 struct CompiledStage {

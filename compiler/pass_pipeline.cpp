@@ -1,5 +1,6 @@
 #include "compiler/pass_pipeline.hpp"
 
+#include "compiler/ir_verifier.hpp"
 
 namespace wg {
 
@@ -12,14 +13,30 @@ constexpr Pass kPasses[] = {
     {"cse", "merges structurally identical nodes", eliminateCommonSubexpressions},
     {"dead-node-elim", "removes nodes no output depends on", eliminateDeadNodes},
     {"topo-order", "orders nodes by a depth-first walk from the outputs, so order depends only on content",
-     orderTopologically},
+     orderTopologically, /*ordersCanonically=*/true},
 };
 }  // namespace
 
 std::span<const Pass> passPipeline() { return kPasses; }
 
-void runPassPipeline(IrGraph& graph) {
-  for (const Pass& pass : kPasses) pass.run(graph);
+const Pass* findPass(std::string_view name) {
+  for (const Pass& pass : kPasses)
+    if (pass.name == name) return &pass;
+  return nullptr;
+}
+
+std::optional<IrViolation> runPassPipeline(IrGraph& graph, const PassPipelineOptions& options) {
+  IrVerifyOptions expected;
+  if (options.verifyBetweenPasses)
+    if (std::string problem = verifyIr(graph, expected); !problem.empty()) return IrViolation{kIrBuilderStep, problem};
+  for (const Pass& pass : kPasses) {
+    pass.run(graph);
+    if (options.afterPass) options.afterPass(pass, graph);
+    expected.canonicalOrder = expected.canonicalOrder || pass.ordersCanonically;
+    if (options.verifyBetweenPasses)
+      if (std::string problem = verifyIr(graph, expected); !problem.empty()) return IrViolation{pass.name, problem};
+  }
+  return std::nullopt;
 }
 
 }  // namespace wg

@@ -6,7 +6,7 @@
 
 namespace wg {
 
-void orderTopologically(IrGraph& graph) {
+std::vector<std::uint32_t> canonicalNodeOrder(const IrGraph& graph) {
   std::vector<bool> visited(graph.nodes.size(), false);
   std::vector<std::uint32_t> order;
   order.reserve(graph.nodes.size());
@@ -32,7 +32,11 @@ void orderTopologically(IrGraph& graph) {
       }
     }
   }
-  reorderNodes(graph, order);  // also drops anything unreachable
+  return order;
+}
+
+void orderTopologically(IrGraph& graph) {
+  reorderNodes(graph, canonicalNodeOrder(graph));  // also drops anything unreachable
 }
 
 }  // namespace wg
