@@ -23,6 +23,7 @@
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/ir_dump.hpp"
 #include "compiler/literal.hpp"
 #include "compiler/material_compiler.hpp"
 #include "compiler/weather_config.hpp"
@@ -66,6 +67,9 @@ Options:
                              (rock, terrain, foliage, river, road, none)
   --diagnostics text|json    diagnostic format on stderr (default: text)
   -q, --quiet                print nothing but diagnostics
+  --dump-ir-after PASS       debugging: print the IR after PASS (see list-passes; 'all'
+                             prints it after every pass) on stdout and write nothing;
+                             -o is not needed
   -h, --help                 this help
 
 Outputs are written atomically and only when every graph compiles.
@@ -103,6 +107,7 @@ struct Options {
   int jobs = 0;  // 0: one per core
   std::string depfile;
   std::optional<VariantSelection> variants;
+  std::optional<std::string> dumpIrAfter;  // a pass name or "all": print IR, write nothing
 };
 
 // The same diagnostic from several variants of one graph is printed once.
@@ -256,6 +261,12 @@ int runCompileCommand(int argc, char** argv) {
       if (!o.variants) return usageError(error, o.json);
       continue;
     }
+    if (auto v = cl.valueFor("--dump-ir-after", error); v || !error.empty()) {
+      if (!v) return usageError(error, o.json);
+      if (std::string e = checkDumpIrPassName(*v); !e.empty()) return usageError(e, o.json);
+      o.dumpIrAfter = *v;
+      continue;
+    }
     if (auto v = cl.valueFor("--diagnostics", error); v || !error.empty()) {
       if (!v) return usageError(error, o.json);
       if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
@@ -267,7 +278,7 @@ int runCompileCommand(int argc, char** argv) {
   std::string error;
   if (!parseTargets(targetList, o.targets, error)) return usageError(error, o.json);
   if (o.graphs.empty()) return usageError("no input graphs", o.json);
-  if (o.outputDir.empty()) return usageError("no output directory; pass -o DIR", o.json);
+  if (o.outputDir.empty() && !o.dumpIrAfter) return usageError("no output directory; pass -o DIR", o.json);
 
   VariantPlan plan;
   if (std::string e = planVariants(o.graphs, o.variants, plan); !e.empty()) return usageError(e, o.json);
@@ -280,6 +291,7 @@ int runCompileCommand(int argc, char** argv) {
   options.optimize = o.optimize;
   options.weatherPreset = o.weatherPreset;
   options.hashKeyedFileStem = o.variants.has_value();
+  if (o.dumpIrAfter) return dumpIrAfterPass(plan.jobs, *o.dumpIrAfter, options, o.json);
   std::vector<Diagnostic> diagnostics;
   bool internal = false;
   int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
