@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "compiler/identifier.hpp"
+#include "compiler/name_mark.hpp"
 
 namespace wg {
 
@@ -122,13 +123,22 @@ std::string hexOnly(const std::string& text) {
 
 }  // namespace
 
+// A clean identifier with a lower-case letter is kept; any other name is sanitised and
+// marked with its hash ("_h" and 8 hex digits), so 'a-b' and 'a_b', 'class' and
+// 'class_v', 'ROCK' and 'ROCK_material' get distinct namespaces in every run.
 std::string cppMaterialNamespace(const std::string& materialName) {
-  std::string id = IdentifierScope::sanitize(materialName);
-  // Upper-case names are the macro convention (INT32_MAX...); keep clear of them.
-  if (std::none_of(id.begin(), id.end(), [](char c) { return std::islower(static_cast<unsigned char>(c)); }))
-    id += "_material";
   IdentifierScope scope = cppScope();
-  return scope.make(id);
+  const bool hasLower = std::any_of(materialName.begin(), materialName.end(),
+                                    [](char c) { return std::islower(static_cast<unsigned char>(c)); });
+  // Upper-case names are the macro convention (INT32_MAX...); they are marked too.
+  const bool kept = hasLower && IdentifierScope::sanitize(materialName) == materialName &&
+                    !endsWithNameMark(materialName, '_') && scope.make(materialName) == materialName;
+  if (kept) return materialName;
+  std::string base = IdentifierScope::sanitize(materialName);
+  const std::string mark = "_" + nameMark(materialName);
+  base.resize(std::min(base.size(), IdentifierScope::kMaxLength - mark.size()));  // the mark must survive
+  while (!base.empty() && base.back() == '_') base.pop_back();  // no doubled underscore before it
+  return scope.make((base.empty() ? "material" : base) + mark);
 }
 
 std::string emitCppHeader(const IrGraph& ir, const MaterialInterface& mi, const std::string& contentHash) {

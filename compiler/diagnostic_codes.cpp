@@ -24,7 +24,7 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
     {DuplicateKey, "WG1006", E, In, "duplicate-key", "key '{0}' appears twice in one object",
      "remove or rename one of the two entries"},
     {ResourceLimit, "WG1007", E, In, "resource-limit", "{0} is {1}; the limit is {2}",
-     "split the material or simplify it"},
+     "bring it within the limit: split or simplify the input, or shrink the file or image"},
     {UnknownOp, "WG2001", E, In, "unknown-op", "unknown op '{0}'", "{1}"},
     {DuplicateId, "WG2002", E, In, "duplicate-id", "node id '{0}' is already used by {1}",
      "give every node a unique id"},

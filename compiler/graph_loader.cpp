@@ -89,7 +89,8 @@ class Loader {
       if (graph_.name.empty()) report(DiagCode::InvalidSetting, "/name", {"the material name is empty", "give the material a name"});
     }
     loadDeclarations(root);
-    if (root.contains("include") && expectKind(root["include"], "/include", nlohmann::json::value_t::object, "'include'", "an object"))
+    if (root.contains("include") && expectKind(root["include"], "/include", nlohmann::json::value_t::object, "'include'", "an object") &&
+        withinIncludeCount(root["include"]))
       for (const auto& [alias, path] : root["include"].items()) loadLibrary(alias, path);
     if (root.contains("switches") && expectKind(root["switches"], "/switches", nlohmann::json::value_t::object, "'switches'", "an object"))
       for (const auto& [key, value] : root["switches"].items()) loadSwitch(key, value);
@@ -142,6 +143,42 @@ class Loader {
       for (std::size_t i = 0; i < nodes->size(); ++i) loadNode((*nodes)[i], appendPointer(at + "/nodes", i));
   }
 
+  // Limits on the whole: each library is within the file limit, but 300 aliases of one
+  // 15 MiB library would still read 4.5 GiB.
+  static constexpr std::size_t kMaxIncludes = 64;
+  static constexpr std::uintmax_t kMaxTotalBytes = 32u << 20;  // graph and libraries together
+
+  bool withinIncludeCount(const nlohmann::json& includes) {
+    if (includes.size() <= kMaxIncludes) return true;
+    report(DiagCode::ResourceLimit, "/include",
+           {"the number of included libraries", std::to_string(includes.size()), std::to_string(kMaxIncludes)});
+    return false;
+  }
+
+  // Counts the library's size towards the total before it is read.
+  bool withinTotalBytes(const std::string& at, std::uintmax_t size) {
+    if (bytesRead_ == 0) bytesRead_ = doc_.text().size();
+    if (bytesRead_ > kMaxTotalBytes) return false;  // reported once, at the first library over
+    bytesRead_ += size;
+    if (bytesRead_ <= kMaxTotalBytes) return true;
+    report(DiagCode::ResourceLimit, at,
+           {"the size of the graph and the libraries it includes, up to this one", std::to_string(bytesRead_) + " bytes",
+            std::to_string(kMaxTotalBytes) + " bytes"});
+    return false;
+  }
+
+  // The texture's path as outputs record it: relative to the graph, so reflection and
+  // headers do not depend on where the checkout lives (hermetic build caches). An
+  // absolute path is recorded relative to the graph's folder too.
+  std::string recordedTexturePath(const std::string& written, const std::string& resolved) const {
+    if (!std::filesystem::path(written).is_absolute())
+      return (scope_.writtenBase / written).lexically_normal().string();
+    std::error_code ec;
+    const auto graphFolder = std::filesystem::absolute(doc_.file(), ec).parent_path();
+    const auto relative = std::filesystem::path(resolved).lexically_relative(graphFolder);
+    return ec || relative.empty() ? std::filesystem::path(resolved).filename().string() : relative.string();
+  }
+
   // "include": {"stone": "lib/stone.json"}: the library's parameters, textures and
   // nodes join the graph as "stone.NAME". Libraries do not include others.
   void loadLibrary(const std::string& alias, const nlohmann::json& path) {
@@ -165,10 +202,12 @@ class Loader {
     }
     // A library is never empty; files that claim size 0 include /proc entries whose
     // reads can block, and bad input must never hang the compiler.
-    if (std::filesystem::file_size(resolved, ec) == 0 || ec) {
+    const std::uintmax_t size = std::filesystem::file_size(resolved, ec);
+    if (size == 0 || ec) {
       report(DiagCode::FileUnreadable, at, {quoteUserText(written.string()), "the file is empty", "include a graph library file"});
       return;
     }
+    if (!withinTotalBytes(at, size)) return;
     graph_.includedFiles.push_back(resolved.string());
     auto text = readGraphFile(resolved.string(), diags_);
     auto library = text ? parseJsonDocument(resolved.string(), std::move(*text), diags_) : std::nullopt;
@@ -364,8 +403,8 @@ class Loader {
         return;
       }
       // A library's file is reported relative to the including graph, like the graph's own.
-      t.file = (scope_.writtenBase / file->get<std::string>()).lexically_normal().string();
       t.resolvedPath = (scope_.fileBase / file->get<std::string>()).lexically_normal().string();
+      t.file = recordedTexturePath(file->get<std::string>(), t.resolvedPath);
       int width = 0, height = 0;
       std::string error;
       switch (probeImageFile(t.resolvedPath, width, height, error)) {
@@ -379,7 +418,8 @@ class Loader {
           return;
         case ImageFileStatus::TooLarge:
           report(DiagCode::ResourceLimit, appendPointer(pointer, "file"),
-                 {"the texture size", std::to_string(width) + "x" + std::to_string(height), "8192x8192"});
+                 {"texture '" + shown + "' (file '" + quoteUserText(t.file) + "')",
+                  std::to_string(width) + "x" + std::to_string(height), "8192x8192"});
           return;
       }
     } else {
@@ -576,6 +616,7 @@ class Loader {
   }
 
   JsonDocument& doc_;
+  std::uintmax_t bytesRead_ = 0;  // the graph and the libraries read so far
   DiagnosticList& diags_;
   MaterialGraph& graph_;
   Scope scope_;

@@ -1,11 +1,15 @@
 #include "compiler/material_compiler.hpp"
 
+#include <algorithm>
+
 #include "backends/spirv/cross_compile.hpp"
 #include "backends/stage_writer.hpp"
+#include "compiler/constant_count.hpp"
 #include "compiler/content_hash.hpp"
 #include "compiler/cpp_header.hpp"
 #include "compiler/graph_loader.hpp"
 #include "compiler/ir_builder.hpp"
+#include "compiler/name_mark.hpp"
 #include "compiler/pass_pipeline.hpp"
 #include "compiler/reflection.hpp"
 
@@ -17,15 +21,26 @@ const CompiledStage& CompiledMaterial::stage(ShaderLanguage language, ShaderStag
   return stages.front();
 }
 
+namespace {
+bool isFileSafe(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+}
+}  // namespace
+
+// Safe names are kept as they are. Any other name is sanitised and marked with its hash
+// after a '.', which no kept name contains, so distinct names never share a stem.
 std::string fileStemFor(std::string_view name) {
   constexpr std::size_t kMaxStem = 64;
+  const bool safe = !name.empty() && name.size() <= kMaxStem &&
+                    std::all_of(name.begin(), name.end(), isFileSafe);
+  if (safe) return std::string(name);
+  constexpr std::size_t kMaxSanitized = 48;
   std::string out;
   for (char c : name) {
-    if (out.size() >= kMaxStem) break;
-    bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
-    out += safe ? c : '_';
+    if (out.size() >= kMaxSanitized) break;
+    out += isFileSafe(c) ? c : '_';
   }
-  return out.empty() ? "material" : out;
+  return (out.empty() ? "material" : out) + "." + nameMark(name);
 }
 
 std::string stageFileSuffix(ShaderLanguage language, ShaderStage stage) {
@@ -44,6 +59,13 @@ std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string tex
   if (!ir) return std::nullopt;
   if (auto violation = runPassPipeline(*ir, options.passes)) {
     diagnostics.report(DiagCode::InternalIrInvalid, {file, "", 0, 0}, {violation->after, violation->problem});
+    return std::nullopt;
+  }
+  // Counted after folding and merging, which is what the shader compiler will see.
+  if (std::size_t constants = distinctConstantCount(*ir); constants > kMaxDistinctConstants) {
+    diagnostics.report(DiagCode::ResourceLimit, document->locate("/nodes"),
+                       {"the number of distinct constants after folding (vector components counted)",
+                        std::to_string(constants), std::to_string(kMaxDistinctConstants)});
     return std::nullopt;
   }
   return ir;

@@ -11,6 +11,7 @@
 #include "import/gltf_schema.hpp"
 #include "import/node_hierarchy.hpp"
 #include "nodes/image_file.hpp"
+#include "nodes/png_header.hpp"
 
 namespace wg::gltf {
 
@@ -46,13 +47,11 @@ std::string imageExtension(const unsigned char* bytes, int size) {
 // even report sizes it would not decode, and the limit's message should name the size.
 bool headerSize(const unsigned char* bytes, int size, const std::string& extension, int& width, int& height, int& components) {
   if (extension != ".png") return stbi_info_from_memory(bytes, size, &width, &height, &components) != 0;
-  constexpr int kIhdrEnd = 24;
-  if (size < kIhdrEnd || std::memcmp(bytes + 12, "IHDR", 4) != 0) return false;
-  auto be32 = [&](int at) { return (std::uint32_t(bytes[at]) << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3]; };
+  const auto declared = pngDeclaredSize(bytes, static_cast<std::size_t>(size));
   constexpr std::uint32_t kLargest = 1u << 30;
-  if (be32(16) > kLargest || be32(20) > kLargest) return false;
-  width = static_cast<int>(be32(16));
-  height = static_cast<int>(be32(20));
+  if (!declared || declared->width > kLargest || declared->height > kLargest) return false;
+  width = static_cast<int>(declared->width);
+  height = static_cast<int>(declared->height);
   components = 4;
   return true;
 }

@@ -1,5 +1,7 @@
 #include "nodes/image_file.hpp"
 
+#include "nodes/png_header.hpp"
+
 #include <stb_image.h>
 
 #include <algorithm>
@@ -40,15 +42,14 @@ bool hasTgaExtension(const std::string& path) {
 }
 
 std::vector<unsigned char> readHead(const std::string& path) {
-  std::vector<unsigned char> head(kPngSignature.size());  // the longest signature
+  std::vector<unsigned char> head(kPngHeaderBytes);  // the longest header read here
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) return {};
   head.resize(std::fread(head.data(), 1, head.size(), file.get()));
   return head;
 }
 
-Format detectFormat(const std::string& path) {
-  const std::vector<unsigned char> head = readHead(path);
+Format detectFormat(const std::string& path, const std::vector<unsigned char>& head) {
   if (startsWith(head, kPngSignature)) return Format::Png;
   if (startsWith(head, kJpegSignature)) return Format::Jpeg;
   if (startsWith(head, kBmpSignature)) return Format::Bmp;
@@ -73,6 +74,33 @@ std::string stbReason() {
   return reason ? reason : "unknown error";
 }
 
+ImageFileStatus tooLarge(int w, int h, int& width, int& height, std::string& error) {
+  width = w;  // reported so the caller can show the actual size
+  height = h;
+  error = "image is " + std::to_string(w) + "x" + std::to_string(h) + ", larger than the " +
+          std::to_string(kMaxImageFileDimension) + "x" + std::to_string(kMaxImageFileDimension) +
+          " limit; resize it";
+  return ImageFileStatus::TooLarge;
+}
+
+// A PNG's size is read from its IHDR before stb sees it, so a header claiming
+// 60000x60000 is reported as too large rather than as an unreadable file.
+std::optional<ImageFileStatus> checkPngHeader(const std::vector<unsigned char>& head, int& width,
+                                              int& height, std::string& error) {
+  const auto declared = pngDeclaredSize(head.data(), head.size());
+  if (!declared) {
+    error = "cannot read PNG header: no IHDR chunk after the signature";
+    return ImageFileStatus::Unsupported;
+  }
+  const auto limit = static_cast<unsigned>(kMaxImageFileDimension);
+  if (declared->width > limit || declared->height > limit) {
+    constexpr unsigned kShownMax = 1u << 30;  // keeps the reported size an int
+    return tooLarge(static_cast<int>(std::min(declared->width, kShownMax)),
+                    static_cast<int>(std::min(declared->height, kShownMax)), width, height, error);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
@@ -83,10 +111,14 @@ ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
     error = std::filesystem::exists(path, ec) ? "not a regular file" : "file not found";
     return ImageFileStatus::NotFound;
   }
-  const Format format = detectFormat(path);
+  const std::vector<unsigned char> head = readHead(path);
+  const Format format = detectFormat(path, head);
   if (format == Format::Other) {
     error = kUnsupportedFormat;
     return ImageFileStatus::Unsupported;
+  }
+  if (format == Format::Png) {
+    if (auto status = checkPngHeader(head, width, height, error)) return *status;
   }
   int w = 0, h = 0, channels = 0;
   if (!stbi_info(path.c_str(), &w, &h, &channels)) {
@@ -97,14 +129,8 @@ ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
     }
     return ImageFileStatus::Unsupported;
   }
-  if (w > kMaxImageFileDimension || h > kMaxImageFileDimension) {
-    width = w;  // reported so the caller can show the actual size
-    height = h;
-    error = "image is " + std::to_string(w) + "x" + std::to_string(h) + ", larger than the " +
-            std::to_string(kMaxImageFileDimension) + "x" + std::to_string(kMaxImageFileDimension) +
-            " limit; resize it";
-    return ImageFileStatus::TooLarge;
-  }
+  if (w > kMaxImageFileDimension || h > kMaxImageFileDimension)
+    return tooLarge(w, h, width, height, error);
   width = w;
   height = h;
   return ImageFileStatus::Ok;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "compiler/constant_count.hpp"
 #include "compiler/material_compiler.hpp"
 #include "ir_fixture.hpp"
 #include "nodes/image_file.hpp"
@@ -124,6 +125,80 @@ TEST_F(ResourceLimitFiles, OversizedTextureFileIsResourceLimitAtItsPointer) {
   ASSERT_EQ(codesOf(result.diagnostics), std::vector<DiagCode>{DiagCode::ResourceLimit});
   EXPECT_EQ(result.diagnostics.items().front().location.pointer, "/textures/big/file");
   EXPECT_NE(result.diagnostics.items().front().message.find("8192"), std::string::npos);
+}
+
+
+// A header claiming 60000x60000 pixels is a size limit, reported with the image's file,
+// before anything is decoded (stb alone calls it "unknown image type").
+TEST_F(ResourceLimitFiles, PngBombIsResourceLimitNamingTheFile) {
+  const std::uint8_t header[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                 0, 0, 0xEA, 0x60, 0, 0, 0xEA, 0x60, 8, 6, 0, 0, 0, 0, 0, 0, 0};
+  std::ofstream(path("bomb.png"), std::ios::binary).write(reinterpret_cast<const char*>(header), sizeof header);
+  std::ofstream(path("m.json")) << R"({"name": "t", "textures": {"big": {"file": "bomb.png"}},
+    "nodes": [{"id": "uv", "op": "texcoord"}, {"id": "s", "op": "sample", "inputs": {"texture": "big", "uv": "uv.out"}}],
+    "output": {"baseColor": "s.rgb"}})";
+  CompileResult result = compileMaterialFile(path("m.json"), CompileOptions{});
+  ASSERT_EQ(codesOf(result.diagnostics), std::vector<DiagCode>{DiagCode::ResourceLimit});
+  const Diagnostic& d = result.diagnostics.items().front();
+  EXPECT_EQ(d.location.pointer, "/textures/big/file");
+  EXPECT_GT(d.location.line, 0);
+  EXPECT_NE(d.message.find("bomb.png"), std::string::npos) << d.message;
+  EXPECT_NE(d.message.find("60000x60000"), std::string::npos) << d.message;
+}
+
+// Each library is within the file limit, but the includes together are limited too.
+TEST_F(ResourceLimitFiles, IncludeCountIsLimited) {
+  std::ofstream(path("lib.json")) << R"({"parameters": {"k": {"type": "float", "default": 0.5}}})";
+  std::string includes;
+  for (int i = 0; i < 65; ++i) includes += std::string(i ? ", " : "") + "\"a" + std::to_string(i) + "\": \"lib.json\"";
+  std::ofstream(path("m.json")) << R"({"name": "t", "include": {)" + includes + R"(}, "nodes": [], "output": {}})";
+  CompileResult result = compileMaterialFile(path("m.json"), CompileOptions{});
+  ASSERT_EQ(codesOf(result.diagnostics), std::vector<DiagCode>{DiagCode::ResourceLimit});
+  EXPECT_EQ(result.diagnostics.items().front().location.pointer, "/include");
+}
+
+TEST_F(ResourceLimitFiles, IncludedBytesTogetherAreLimitedBeforeReading) {
+  {
+    std::ofstream lib(path("lib.json"), std::ios::binary);
+    lib << R"({"description": ")" << std::string(12u << 20, 'a') << R"(", "nodes": []})";
+  }
+  std::ofstream(path("m.json")) << R"({"name": "t", "include": {"a": "lib.json", "b": "lib.json", "c": "lib.json", "d": "lib.json"},
+    "nodes": [], "output": {}})";
+  CompileResult result = compileMaterialFile(path("m.json"), CompileOptions{});
+  ASSERT_EQ(codesOf(result.diagnostics), std::vector<DiagCode>{DiagCode::ResourceLimit});
+  EXPECT_EQ(result.diagnostics.items().front().location.pointer, "/include/c");  // 3 x 12 MiB > 32 MiB
+}
+
+// glslang's cost grows with the square of distinct constants, so they are limited after
+// folding: 8,192 compile in about two seconds, 20,000 took eight.
+TEST(ResourceLimits, DistinctConstantsAreLimitedAfterFolding) {
+  // `constants` leaves u + c_i, each c_i distinct, reduced by a balanced tree of max.
+  auto graphWith = [](int constants) {
+    std::string nodes = R"({"id": "uv", "op": "texcoord"}, {"id": "u", "op": "swizzle", "inputs": {"in": "uv.out", "channels": "x"}})";
+    std::vector<std::string> level;
+    for (int i = 0; i < constants; ++i) {
+      level.push_back("n" + std::to_string(i));
+      nodes += R"(, {"id": ")" + level.back() + R"(", "op": "add", "inputs": {"a": "u.out", "b": )" + std::to_string(1 + i) + "}}";
+    }
+    for (int round = 0; level.size() > 1; ++round) {
+      std::vector<std::string> next;
+      for (std::size_t i = 0; i + 1 < level.size(); i += 2) {
+        next.push_back("r" + std::to_string(round) + "_" + std::to_string(i));
+        nodes += R"(, {"id": ")" + next.back() + R"(", "op": "max", "inputs": {"a": ")" + level[i] + R"(.out", "b": ")" +
+                 level[i + 1] + R"(.out"}})";
+      }
+      if (level.size() % 2) next.push_back(level.back());
+      level = next;
+    }
+    return testing::graphJson(nodes, R"("roughness": ")" + level.front() + R"(.out")");
+  };
+  CompileOptions options;
+  options.emitSpirv = false;
+  CompileResult within = compileMaterialText("m.json", graphWith(4000), options);
+  EXPECT_TRUE(within.material);
+  CompileResult over = compileMaterialText("m.json", graphWith(static_cast<int>(kMaxDistinctConstants)), options);
+  ASSERT_EQ(codesOf(over.diagnostics), std::vector<DiagCode>{DiagCode::ResourceLimit});
+  EXPECT_EQ(over.diagnostics.items().front().location.pointer, "/nodes");
 }
 
 }  // namespace
