@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/bundled_graphs_directory.hpp"
+#include "cli/number_text.hpp"
 #include "cli/command_line.hpp"
 #include "cli/model_scene.hpp"
 #include "compiler/literal.hpp"
@@ -57,24 +58,29 @@ int runBenchRenderCommand(int argc, char** argv) {
     if (auto x = cl.valueFor("--device", error)) { device = *x; continue; }
     if (auto x = cl.valueFor("--model", error)) { modelPath = *x; continue; }
     if (auto x = cl.valueFor("--model-scale", error)) {
-      modelScale = std::strtof(x->c_str(), nullptr);
+      const auto scale = parseNumberText(*x);
+      modelScale = scale ? static_cast<float>(*scale) : 0.f;
       if (!(modelScale >= 1e-6f && modelScale <= 1e6f)) error = "--model-scale takes metres per model unit, from 1e-6 to 1e6";
       else continue;
     }
     if (auto x = cl.valueFor("--size", error)) { size = *x; continue; }
     if (auto x = cl.valueFor("--frames", error)) {
-      frames = std::atoi(x->c_str());
-      if (frames < 1) error = "--frames takes a positive count";
+      constexpr std::uint32_t kMaxFrames = 1000000;
+      const auto count = parseCountText(*x, 1, kMaxFrames);
+      frames = count ? static_cast<int>(*count) : 0;
+      if (frames < 1) error = "--frames takes a whole number of frames from 1 to 1000000";
       else continue;
     }
     std::fprintf(stderr, "weathergen: error WG9001: %s\n", error.empty() ? ("unknown option '" + cl.peek() + "'").c_str() : error.c_str());
     return kExitUsage;
   }
-  unsigned width = 0, height = 0;
-  if (std::sscanf(size.c_str(), "%ux%u", &width, &height) != 2 || !width || !height) {
-    std::fprintf(stderr, "weathergen: error WG9001: --size takes WxH\n");
+  constexpr std::uint32_t kMaxSide = 8192;
+  const auto pixels = parsePixelSizeText(size, kMaxSide);
+  if (!pixels) {
+    std::fprintf(stderr, "weathergen: error WG9001: --size takes WxH, each a whole number from 1 to 8192\n");
     return kExitUsage;
   }
+  const unsigned width = pixels->width, height = pixels->height;
   const std::string graphsDir = bundledGraphsDirectory();
   if (graphsDir.empty()) {
     std::fprintf(stderr, "weathergen: error WG9001: cannot find the bundled graphs next to this executable\n");

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/command_line.hpp"
+#include "cli/number_text.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "runtime/snow/deformation_texel.hpp"
@@ -158,13 +159,15 @@ int runBenchSnowCommand(int argc, char** argv) {
     }
     if (auto x = cl.valueFor("--device", error)) { device = *x; continue; }
     if (auto x = cl.valueFor("--frames", error)) {
-      frames = std::atoi(x->c_str());
-      if (frames < 1) error = "--frames takes a positive count";
+      constexpr std::uint32_t kMaxFrames = 1000000;
+      const auto count = parseCountText(*x, 1, kMaxFrames);
+      frames = count ? static_cast<int>(*count) : 0;
+      if (frames < 1) error = "--frames takes a whole number of frames from 1 to 1000000";
       else continue;
     }
     if (auto x = cl.valueFor("--walk-minutes", error)) {
-      walkMinutes = std::atof(x->c_str());
-      if (!(walkMinutes > 0.0)) error = "--walk-minutes takes a positive number";
+      walkMinutes = parseNumberText(*x).value_or(0.0);
+      if (!(walkMinutes > 0.0) || !std::isfinite(walkMinutes)) error = "--walk-minutes takes a positive number";
       else continue;
     }
     std::fprintf(stderr, "weathergen: error WG9001: %s\n", error.empty() ? ("unknown option '" + cl.peek() + "'").c_str() : error.c_str());

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/atomic_file.hpp"
+#include "cli/number_text.hpp"
 #include "cli/material_outputs.hpp"
 #include "cli/variant_plan.hpp"
 #include "compiler/variant_index.hpp"
@@ -243,11 +244,10 @@ int runCompileCommand(int argc, char** argv) {
     }
     if (auto v = cl.valueFor("-j", error); v || !error.empty()) {
       if (!v) return usageError(error, o.json);
-      char* end = nullptr;
-      long jobs = std::strtol(v->c_str(), &end, 10);
-      constexpr long kMaxJobs = 256;
-      if (*end || jobs < 1 || jobs > kMaxJobs) return usageError("-j takes a job count from 1 to 256", o.json);
-      o.jobs = static_cast<int>(jobs);
+      constexpr std::uint32_t kMaxJobs = 256;
+      const auto jobs = parseCountText(*v, 1, kMaxJobs);
+      if (!jobs) return usageError("-j takes a job count from 1 to 256", o.json);
+      o.jobs = static_cast<int>(*jobs);
       continue;
     }
     if (auto v = cl.valueFor("--depfile", error); v || !error.empty()) {

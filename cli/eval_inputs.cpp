@@ -1,5 +1,7 @@
 #include "cli/eval_inputs.hpp"
 
+#include "cli/number_text.hpp"
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -71,23 +73,18 @@ std::string rangeText(float lo, float hi) {
   return "[" + formatNumber(lo) + ", " + formatNumber(hi) + "]";
 }
 
-// "0:1:0" -> components; false when a component is not a number (from_chars is
-// locale-independent and rejects trailing text).
+// "0:1:0" -> components; false when a component is not a number by the graphs' rules.
 bool parseComponents(std::string_view text, std::vector<float>& out) {
   out.clear();
   std::size_t start = 0;
   while (true) {
     std::size_t end = text.find(kComponentSeparator, start);
     std::string_view item = text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
-    if (!item.empty() && item.front() == '+') item.remove_prefix(1);
-    double x = 0.0;
-    auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), x);
-    if (item.empty() || ptr != item.data() + item.size()) return false;
-    // Out of range (1e999) reads as infinite, so the finiteness check reports it.
-    if (ec == std::errc::result_out_of_range) x = std::numeric_limits<double>::infinity();
-    else if (ec != std::errc()) return false;
-    // Beyond float's range becomes infinite too; tiny values round towards 0.
-    out.push_back(std::abs(x) > std::numeric_limits<float>::max() ? kInf : static_cast<float>(x));
+    const std::optional<double> x = parseNumberText(item);
+    if (!x) return false;
+    // Beyond float's range becomes infinite, so the finiteness check reports it.
+    out.push_back(std::abs(*x) > std::numeric_limits<float>::max() ? std::copysign(kInf, static_cast<float>(*x))
+                                                                     : static_cast<float>(*x));
     if (end == std::string_view::npos) return true;
     start = end + 1;
   }

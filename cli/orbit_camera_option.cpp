@@ -1,5 +1,7 @@
 #include "cli/orbit_camera_option.hpp"
 
+#include "cli/number_text.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -16,10 +18,9 @@ std::optional<std::vector<float>> finiteNumbers(const std::string& list) {
   while (true) {
     std::size_t comma = list.find(',', start);
     std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    char* end = nullptr;
-    float value = std::strtof(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(value)) return std::nullopt;
-    numbers.push_back(value);
+    const auto value = parseNumberText(item);
+    if (!value || !std::isfinite(static_cast<float>(*value))) return std::nullopt;
+    numbers.push_back(static_cast<float>(*value));
     if (comma == std::string::npos) return numbers;
     start = comma + 1;
   }

@@ -1,5 +1,7 @@
 #include "cli/render_options.hpp"
 
+#include "cli/number_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -67,37 +69,33 @@ Options:
 
 // --size WxH; "" or a usage message.
 std::string parseSize(const std::string& v, RenderRequest& request) {
-  unsigned w = 0, h = 0;
-  constexpr unsigned kMaxSide = 8192;
-  if (std::sscanf(v.c_str(), "%ux%u", &w, &h) != 2 || w == 0 || h == 0 || w > kMaxSide || h > kMaxSide)
-    return "--size takes WxH, each from 1 to 8192 (e.g. 1920x1080)";
-  request.width = w;
-  request.height = h;
+  constexpr std::uint32_t kMaxSide = 8192;
+  const auto size = parsePixelSizeText(v, kMaxSide);
+  if (!size) return "--size takes WxH, each a whole number from 1 to 8192 (e.g. 1920x1080)";
+  request.width = size->width;
+  request.height = size->height;
   return "";
 }
 
 std::string parseStep(const std::string& v, double& step) {
-  char* end = nullptr;
-  step = std::strtod(v.c_str(), &end);
-  if (*end || !(step > 0.0) || !std::isfinite(step)) return "--step takes a positive number of seconds";
+  const auto seconds = parseNumberText(v);
+  if (!seconds || !(*seconds > 0.0) || !std::isfinite(*seconds)) return "--step takes a positive number of seconds";
+  step = *seconds;
   return "";
 }
 
 std::string parseWatchRenders(const std::string& v, std::optional<unsigned>& count) {
-  char* end = nullptr;
-  unsigned long n = std::strtoul(v.c_str(), &end, 10);
-  constexpr unsigned long kMaxRenders = 1000000;
-  if (v.empty() || *end || v[0] == '-' || n == 0 || n > kMaxRenders)
-    return "--watch-renders takes a whole number of renders from 1 to 1000000";
-  count = static_cast<unsigned>(n);
+  constexpr std::uint32_t kMaxRenders = 1000000;
+  const auto n = parseCountText(v, 1, kMaxRenders);
+  if (!n) return "--watch-renders takes a whole number of renders from 1 to 1000000";
+  count = *n;
   return "";
 }
 
 std::string parseModelScale(const std::string& v, float& scale) {
-  char* end = nullptr;
-  double s = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end || !(s >= 1e-6 && s <= 1e6)) return "--model-scale takes metres per model unit, from 1e-6 to 1e6 (0.001 for millimetres)";
-  scale = static_cast<float>(s);
+  const auto s = parseNumberText(v);
+  if (!s || !(*s >= 1e-6 && *s <= 1e6)) return "--model-scale takes metres per model unit, from 1e-6 to 1e6 (0.001 for millimetres)";
+  scale = static_cast<float>(*s);
   return "";
 }
 
