@@ -5,6 +5,7 @@
 #include <set>
 
 #include "compiler/debug_views.hpp"
+#include "compiler/json_document.hpp"
 #include "compiler/literal.hpp"
 #include "compiler/regular_file.hpp"
 
@@ -43,16 +44,32 @@ std::string applyCamera(const RenderOptions& o, const scene::Scene& scene, Rende
          ", or orbit:AZIMUTH,ELEVATION[,DISTANCE])";
 }
 
+// A timeline problem as "FILE:LINE:COL: POINTER: what" (parseWeatherTimeline's errors
+// start with the pointer of the offending value).
+std::string locatedTimelineError(const JsonDocument& document, const std::string& error) {
+  std::string pointer;
+  if (!error.empty() && error.front() == '/') pointer = error.substr(0, error.find(':'));
+  const SourceLocation at = document.locate(pointer);
+  return quoteUserText(at.file) + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
+         quoteUserText(error);
+}
+
+// Read as graphs are: regular file, size limit, duplicate keys and depth refused.
 std::string readTimeline(const std::string& path, std::optional<WeatherTimeline>& timeline) {
   if (path.empty()) return "";
-  constexpr std::uintmax_t kMaxTimelineBytes = 16u << 20;  // as graphs
   std::string text;
-  if (FileRead read = readRegularFile(path, kMaxTimelineBytes, text); read.status != FileReadStatus::Ok)
+  if (FileRead read = readRegularFile(path, JsonLimits{}.maxBytes, text); read.status != FileReadStatus::Ok)
     return "cannot read timeline '" + quoteUserText(path) + "': " + read.reason;
-  auto json = nlohmann::json::parse(text, nullptr, false);
-  std::string error = json.is_discarded() ? "malformed JSON" : "";
-  if (error.empty()) timeline = parseWeatherTimeline(json, error);
-  if (!timeline) return "timeline " + quoteUserText(path) + ": " + error;
+  DiagnosticList diagnostics;
+  auto document = parseJsonDocument(path, std::move(text), diagnostics);
+  if (!document) {
+    std::string text = formatDiagnosticText(diagnostics.items().front());
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    return "timeline " + text;
+  }
+  std::string error;
+  timeline = parseWeatherTimeline(document->root(), error);
+  if (!timeline) return "timeline " + locatedTimelineError(*document, error);
   return "";
 }
 

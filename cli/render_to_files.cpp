@@ -1,10 +1,12 @@
 #include "cli/render_to_files.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "compiler/literal.hpp"
 #include "runtime/display_image.hpp"
 #include "runtime/image/contact_sheet.hpp"
 #include "runtime/image/png_file.hpp"
@@ -38,11 +40,37 @@ int renderOneFrame(SceneRenderer& renderer, vk::Context& ctx, const RenderPlan& 
   return kExitOk;
 }
 
+constexpr int kSheetColumns = 3;
+
+std::string sheetTitle(const SceneRenderer& renderer, const RenderPlan& plan) {
+  return "weathergen  " + renderer.scene().name + "  (" + std::string(languageName(plan.request.backend)) + ", " +
+         plan.aov + ")";
+}
+
+// The contact sheet and the strip are sized from the plan, before any stage renders: a
+// timeline with too many stages fails at once instead of after rendering them all.
+std::string checkSheetSize(const std::vector<TimelineFrame>& stages, const std::string& title, const RenderPlan& plan) {
+  const int width = static_cast<int>(plan.request.width), height = static_cast<int>(plan.request.height);
+  std::vector<image::SheetCell> cells;
+  for (const auto& stage : stages) cells.push_back({width, height, stage.lines});
+  const image::ContactSheetLayout sheet = image::layoutContactSheet(title, cells, kSheetColumns);
+  const long long stripWidth = static_cast<long long>(stages.size()) * (width + image::kStripGap) - image::kStripGap;
+  const long long largest = std::max({static_cast<long long>(sheet.width), static_cast<long long>(sheet.height), stripWidth});
+  if (largest <= image::kMaxPngDimension) return "";
+  return "the timeline has " + std::to_string(stages.size()) + " stages; at " + std::to_string(width) + "x" +
+         std::to_string(height) + " its contact sheet would be " + std::to_string(sheet.width) + "x" +
+         std::to_string(sheet.height) + " and its strip " + std::to_string(stripWidth) +
+         " pixels wide, over the limit of " + std::to_string(image::kMaxPngDimension) +
+         " on a side; give the timeline fewer stages (keyframes sharing a label are one stage) or render with a smaller --size";
+}
+
 int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderPlan& plan) {
-  auto stages = renderTimeline(renderer, *plan.timeline, plan.request, plan.step,
-                               [&](std::size_t i, std::size_t n, const std::string& label) {
-                                 if (plan.progress) std::fprintf(stderr, "render: [%zu/%zu] %s\n", i, n, label.c_str());
-                               });
+  auto stages = planTimeline(*plan.timeline, plan.request, plan.step);
+  const std::string title = sheetTitle(renderer, plan);
+  if (std::string e = checkSheetSize(stages, title, plan); !e.empty()) return usageError(e);
+  renderTimelineFrames(renderer, stages, plan.request, [&](std::size_t i, std::size_t n, const std::string& label) {
+    if (plan.progress) std::fprintf(stderr, "render: [%zu/%zu] %s\n", i, n, quoteUserText(label).c_str());
+  });
   if (!reportValidation(ctx)) return kExitInternal;
   const std::string& sceneName = renderer.scene().name;
   std::vector<image::LabelledFrame> frames;
@@ -57,8 +85,6 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
     frames.push_back({img, stage.lines});
     strip.push_back(std::move(img));
   }
-  std::string title = "weathergen  " + sceneName + "  (" + std::string(languageName(plan.request.backend)) + ", " + plan.aov + ")";
-  constexpr int kSheetColumns = 3;
   if (int e = writePicture(plan.output, image::contactSheet(title, frames, kSheetColumns))) return e;
   std::filesystem::path stripPath = std::filesystem::path(plan.output).replace_extension(".strip.png");
   if (int e = writePicture(stripPath.string(), image::frameStrip(strip))) return e;

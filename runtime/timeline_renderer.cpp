@@ -25,9 +25,7 @@ std::string slugOf(const std::string& label) {
 }
 }  // namespace
 
-std::vector<TimelineFrame> renderTimeline(SceneRenderer& renderer, const WeatherTimeline& timeline,
-                                          const RenderRequest& base, double step,
-                                          const std::function<void(std::size_t, std::size_t, const std::string&)>& onFrame) {
+std::vector<TimelineFrame> planTimeline(const WeatherTimeline& timeline, const RenderRequest& base, double step) {
   const auto& keys = timeline.keys;
   // A stage is a run of consecutive keyframes with the same label (a held plateau);
   // its frame shows the state at the end of the run. Unlabelled keyframes are stages
@@ -69,13 +67,27 @@ std::vector<TimelineFrame> renderTimeline(SceneRenderer& renderer, const Weather
                  "T = " + fixed(w.conditions.temperature, 1) + " C   P = " + fixed(w.conditions.precipitation, 2),
                  "snow " + fixed(w.levels.snow, 2) + "  wet " + fixed(w.levels.wetness, 2) + "  moss " +
                      fixed(w.levels.moss, 2) + "  frost " + fixed(w.levels.frost, 2)};
-    if (onFrame) onFrame(r + 1, runs.size(), out.label);
-    RenderRequest request = base;
-    request.weather = out.state;
-    out.frame = renderer.render(request);
     frames.push_back(std::move(out));
   }
   return frames;
+}
+
+void renderTimelineFrames(SceneRenderer& renderer, std::vector<TimelineFrame>& stages, const RenderRequest& base,
+                          const std::function<void(std::size_t, std::size_t, const std::string&)>& onFrame) {
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    if (onFrame) onFrame(i + 1, stages.size(), stages[i].label);
+    RenderRequest request = base;
+    request.weather = stages[i].state;
+    stages[i].frame = renderer.render(request);
+  }
+}
+
+std::vector<TimelineFrame> renderTimeline(SceneRenderer& renderer, const WeatherTimeline& timeline,
+                                          const RenderRequest& base, double step,
+                                          const std::function<void(std::size_t, std::size_t, const std::string&)>& onFrame) {
+  std::vector<TimelineFrame> stages = planTimeline(timeline, base, step);
+  renderTimelineFrames(renderer, stages, base, onFrame);
+  return stages;
 }
 
 }  // namespace wg

@@ -19,7 +19,15 @@ struct TimelineFrame {
   RenderedFrame frame;
 };
 
-// `step` is the simulation step in seconds. A last stage of a single keyframe is held
+// The stages with their states and captions, simulated but not rendered (`frame` is
+// empty): cheap, so callers can check what the render will produce first.
+std::vector<TimelineFrame> planTimeline(const WeatherTimeline& timeline, const RenderRequest& base, double step);
+
+// Renders each planned stage into its `frame`.
+void renderTimelineFrames(SceneRenderer& renderer, std::vector<TimelineFrame>& stages, const RenderRequest& base,
+                          const std::function<void(std::size_t, std::size_t, const std::string&)>& onFrame = {});
+
+// Both of the above. `step` is the simulation step in seconds. A last stage of a single keyframe is held
 // as long as the gap before it, so its weather has time to act. onFrame (optional)
 // reports progress.
 std::vector<TimelineFrame> renderTimeline(SceneRenderer& renderer, const WeatherTimeline& timeline,

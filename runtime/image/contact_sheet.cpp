@@ -25,10 +25,10 @@ void blit(Image& dst, const Image& src, int x, int y) {
                 rowBytes);
 }
 
-int widestLine(const std::vector<LabelledFrame>& frames, int scale) {
+int widestLine(const std::vector<SheetCell>& cells, int scale) {
   int widest = 0;
-  for (const LabelledFrame& frame : frames)
-    for (const std::string& line : frame.lines) widest = std::max(widest, textWidth(line, scale));
+  for (const SheetCell& cell : cells)
+    for (const std::string& line : cell.lines) widest = std::max(widest, textWidth(line, scale));
   return widest;
 }
 
@@ -80,27 +80,24 @@ Image frameStrip(const std::vector<Image>& frames) {
   return strip;
 }
 
-ContactSheetLayout layoutContactSheet(const std::string& title, const std::vector<LabelledFrame>& frames,
-                                      int columns) {
+ContactSheetLayout layoutContactSheet(const std::string& title, const std::vector<SheetCell>& cells, int columns) {
   ContactSheetLayout layout;
-  const int count = static_cast<int>(frames.size());
+  const int count = static_cast<int>(cells.size());
   layout.columns = std::clamp(columns, 1, std::max(count, 1));
   layout.rows = (count + layout.columns - 1) / layout.columns;
 
   int frameWidth = 0, frameHeight = 0;
   std::size_t maxLines = 0;
-  for (const LabelledFrame& frame : frames) {
-    if (frame.image.valid()) {
-      frameWidth = std::max(frameWidth, frame.image.width);
-      frameHeight = std::max(frameHeight, frame.image.height);
-    }
-    maxLines = std::max(maxLines, frame.lines.size());
+  for (const SheetCell& cell : cells) {
+    frameWidth = std::max(frameWidth, cell.width);
+    frameHeight = std::max(frameHeight, cell.height);
+    maxLines = std::max(maxLines, cell.lines.size());
   }
   // Labels get the larger font when they fit under the frames; otherwise the small one,
   // widening the cells only if even that does not fit.
   layout.labelScale = fittingScale(kMaxLabelScale, frameWidth,
-                                   [&](int scale) { return widestLine(frames, scale); });
-  layout.cellWidth = std::max(frameWidth, widestLine(frames, layout.labelScale));
+                                   [&](int scale) { return widestLine(cells, scale); });
+  layout.cellWidth = std::max(frameWidth, widestLine(cells, layout.labelScale));
   layout.cellHeight = frameHeight + labelBlockHeight(static_cast<int>(maxLines), layout.labelScale);
 
   const int gridWidth = layout.columns * layout.cellWidth + (layout.columns - 1) * kCellGap;
@@ -119,14 +116,22 @@ ContactSheetLayout layoutContactSheet(const std::string& title, const std::vecto
   for (int i = 0; i < count; ++i) {
     const int cellX = kSheetMargin + (i % layout.columns) * (layout.cellWidth + kCellGap);
     const int cellY = gridTop + (i / layout.columns) * (layout.cellHeight + kCellGap);
-    const Image& image = frames[i].image;
-    const bool valid = image.valid();
-    layout.frames.push_back({cellX, cellY, valid ? image.width : 0, valid ? image.height : 0});
-    const int lines = static_cast<int>(frames[i].lines.size());
+    layout.frames.push_back({cellX, cellY, cells[i].width, cells[i].height});
+    const int lines = static_cast<int>(cells[i].lines.size());
     layout.labels.push_back({cellX, cellY + frameHeight + kLabelGap, layout.cellWidth,
                              labelTextHeight(lines, layout.labelScale)});
   }
   return layout;
+}
+
+ContactSheetLayout layoutContactSheet(const std::string& title, const std::vector<LabelledFrame>& frames,
+                                      int columns) {
+  std::vector<SheetCell> cells;
+  for (const LabelledFrame& frame : frames) {
+    const bool valid = frame.image.valid();
+    cells.push_back({valid ? frame.image.width : 0, valid ? frame.image.height : 0, frame.lines});
+  }
+  return layoutContactSheet(title, cells, columns);
 }
 
 Image contactSheet(const std::string& title, const std::vector<LabelledFrame>& frames, int columns) {

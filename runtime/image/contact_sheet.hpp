@@ -47,6 +47,14 @@ struct ContactSheetLayout {
   std::vector<PixelRect> labels;      // per frame, its label lines (empty if it has none)
 };
 
+// A frame's place on the sheet before it is rendered: its size (0 x 0 for none) and
+// label lines. Lets a caller check the sheet's size before rendering anything.
+struct SheetCell {
+  int width = 0, height = 0;
+  std::vector<std::string> lines;
+};
+ContactSheetLayout layoutContactSheet(const std::string& title, const std::vector<SheetCell>& cells, int columns);
+
 // Columns are clamped to [1, frames.size()]. Cells are as wide as the widest frame
 // (or its widest label, if a label does not fit even at scale 1) and as tall as the
 // tallest frame plus the most label lines any frame has, so rows and columns line up.

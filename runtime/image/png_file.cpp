@@ -22,10 +22,6 @@ namespace fs = std::filesystem;
 
 constexpr std::array<unsigned char, 8> kPngSignature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 
-// stb_image_write's int arguments bound the encodable size; anything larger than the
-// image-file limit is a bug in the caller anyway.
-constexpr int kMaxPngDimension = 16384;
-
 using File = std::unique_ptr<FILE, int (*)(FILE*)>;
 
 // Unique within the process (counter) and across processes (pid); hidden and

@@ -7,6 +7,10 @@
 
 namespace wg::image {
 
+// The widest and tallest picture writePng accepts: stb_image_write's int arguments bound
+// the encodable size, and callers check what they will write against it first.
+inline constexpr int kMaxPngDimension = 16384;
+
 // Writes `image` as an 8-bit RGBA PNG. The bytes go to a temporary file in the same
 // directory, which is then renamed over `path`: a reader (a test, an image viewer, a CI
 // artifact upload) never sees a half-written file, and a failed write leaves neither a

@@ -240,6 +240,26 @@ TEST(ContactSheet, DimensionsFollowFramesAndColumns) {
   }
 }
 
+// The CLI sizes a timeline's sheet from cells before rendering anything; the layout
+// must be the one the rendered frames get.
+TEST(ContactSheet, CellsWithoutPixelsLayOutAsTheRenderedFrames) {
+  const auto frames = labelledFrames(7, 96, 64);
+  std::vector<SheetCell> cells;
+  for (const auto& frame : frames) cells.push_back({frame.image.width, frame.image.height, frame.lines});
+  const ContactSheetLayout fromFrames = layoutContactSheet("timeline", frames, 3);
+  const ContactSheetLayout fromCells = layoutContactSheet("timeline", cells, 3);
+  EXPECT_EQ(fromCells.width, fromFrames.width);
+  EXPECT_EQ(fromCells.height, fromFrames.height);
+  EXPECT_EQ(fromCells.labelScale, fromFrames.labelScale);
+  ASSERT_EQ(fromCells.frames.size(), fromFrames.frames.size());
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_EQ(fromCells.frames[i].x, fromFrames.frames[i].x);
+    EXPECT_EQ(fromCells.frames[i].y, fromFrames.frames[i].y);
+    EXPECT_EQ(fromCells.labels[i].y, fromFrames.labels[i].y);
+  }
+  EXPECT_EQ(contactSheet("timeline", frames, 3).height, fromCells.height);
+}
+
 TEST(ContactSheet, TitleAndLabelsAreDrawn) {
   const auto frames = labelledFrames(5, 128, 96);
   const ContactSheetLayout layout = layoutContactSheet("Weather timeline", frames, 3);
