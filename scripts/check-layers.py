@@ -14,7 +14,8 @@ from pathlib import Path
 
 # Folder -> the folders its files may include (besides their own), lowest layer first.
 # A folder missing from another's list is above it or beside it: including it is a
-# violation. Keep docs/architecture.md's Layers table and diagram in step with this.
+# violation. docs/architecture.md's Layers table must list the same folders (the
+# self-test checks it); keep its diagram in step too.
 ALLOWED_INCLUDES = {
     "include": [],                     # the public API header: standard library only
     "nodes": [],                       # ops, shader libraries, images

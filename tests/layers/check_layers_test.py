@@ -5,6 +5,8 @@ Each case copies the checkout's source files into a temporary tree, changes one
 thing, and runs the script on it with --root.
 Usage: check_layers_test.py REPOSITORY_ROOT
 """
+import importlib.util
+import re
 import shutil
 import subprocess
 import sys
@@ -76,6 +78,25 @@ class CheckLayersTest(unittest.TestCase):
         code, output = self.run_check()
         self.assertEqual(code, 1)
         self.assertIn("nodes/componentwise.hpp -> compiler/value.hpp, which no longer occurs", output)
+
+
+def load_script():
+    spec = importlib.util.spec_from_file_location("check_layers", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+class LayersDocumentationTest(unittest.TestCase):
+    def test_the_layers_table_lists_what_the_script_allows(self):
+        allowed = load_script().ALLOWED_INCLUDES
+        text = (ROOT / "docs" / "architecture.md").read_text()
+        section = text[text.index("## Layers"):]
+        rows = re.findall(r"^\| `([a-z]+)/` \| ([^|]*) \|", section, re.MULTILINE)
+        self.assertGreaterEqual(len(rows), 7)
+        for folder, depends_on in rows:
+            documented = set(re.findall(r"`([a-z]+)/`", depends_on))
+            self.assertEqual(documented, set(allowed[folder]), f"docs/architecture.md's row for {folder}/")
 
 
 if __name__ == "__main__":
