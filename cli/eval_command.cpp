@@ -233,7 +233,7 @@ int runEvalCommand(int argc, char** argv) {
   TextureLoadResult textures = loadTextureSampler(ir->textures);
   if (!textures.sampler) {
     DiagnosticList list;
-    list.report(DiagCode::TextureUnsupported, {o.graph, "", 0, 0},
+    list.report(DiagCode::TextureUnsupported, {o.graph, textures.pointer, 0, 0},
                 {quoteUserText(textures.texture), quoteUserText(textures.reason), "check the texture's source"});
     printDiagnostics(list.items(), o.json);
     return kExitBadInput;

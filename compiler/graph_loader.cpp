@@ -414,7 +414,7 @@ class Loader {
           return;
         case ImageFileStatus::Unsupported:
           report(DiagCode::TextureUnsupported, appendPointer(pointer, "file"),
-                 {shown, quoteUserText(error), "use a PNG, JPEG, TGA or BMP image"});
+                 {shown, "file '" + quoteUserText(t.file) + "': " + quoteUserText(error), "use a PNG, JPEG, TGA or BMP image"});
           return;
         case ImageFileStatus::TooLarge:
           report(DiagCode::ResourceLimit, appendPointer(pointer, "file"),

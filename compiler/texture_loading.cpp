@@ -14,6 +14,7 @@ TextureLoadResult loadTextureSampler(const std::vector<TextureDecl>& textures) {
     std::optional<Image> image;
     if (!decl.file.empty()) {
       image = loadImageFile(decl.resolvedPath, reason);
+      if (!image) reason = "file '" + decl.file + "': " + reason;
     } else if (const GeneratorSpec* spec = findTextureGenerator(decl.generator)) {
       // The loader validated size and options; generateTexture rechecks and throws.
       try {
@@ -24,11 +25,11 @@ TextureLoadResult loadTextureSampler(const std::vector<TextureDecl>& textures) {
     } else {
       reason = "unknown generator '" + decl.generator + "'";
     }
-    if (!image) return {std::nullopt, decl.name, reason};
+    if (!image) return {std::nullopt, decl.name, reason, decl.pointer};
     sampler.images.push_back(std::move(*image));
     sampler.states.push_back(decl.sampler);
   }
-  return {std::move(sampler), {}, {}};
+  return {std::move(sampler), {}, {}, {}};
 }
 
 }  // namespace wg

@@ -14,7 +14,8 @@ namespace wg {
 struct TextureLoadResult {
   std::optional<TextureSampler> sampler;  // one image per declaration, in order
   std::string texture;  // on failure: the texture that could not be made
-  std::string reason;   // and why, in one line ("file not found")
+  std::string reason;   // and why, in one line, naming the file ("file 'a.png': file not found")
+  std::string pointer;  // the texture's JSON pointer in the graph
 };
 
 // Fails when an image cannot be made, e.g. a file that changed or vanished since the

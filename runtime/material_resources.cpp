@@ -23,7 +23,7 @@ Image textureImage(const vk::ReflectedTexture& t, const std::string& graphPath) 
     std::string path = (std::filesystem::path(graphPath).parent_path() / source.at("file").get<std::string>()).string();
     std::string error;
     auto image = loadImageFile(path, error);
-    if (!image) throw std::runtime_error("texture '" + t.name + "': " + error);
+    if (!image) throw std::runtime_error("texture '" + t.name + "': file '" + path + "': " + error);
     return *image;
   }
   const GeneratorSpec* spec = findTextureGenerator(source.at("generator").get<std::string>());
