@@ -142,11 +142,12 @@ std::string storeComponents(std::string_view flag, const std::string& key, std::
 
 template <std::size_t N>
 void normaliseDirection(std::array<float, N>& v) {
-  float lengthSquared = 0.f;
-  for (float x : v) lengthSquared += x * x;
-  const float length = std::sqrt(lengthSquared);
+  // In double: a float square overflows from 2e19, which made "1e20:0" calm (0:0).
+  double lengthSquared = 0.0;
+  for (float x : v) lengthSquared += double(x) * double(x);
+  const double length = std::sqrt(lengthSquared);
   if (length < kMinDirectionLength) return;
-  for (float& x : v) x /= length;
+  for (float& x : v) x = static_cast<float>(x / length);
 }
 
 }  // namespace
