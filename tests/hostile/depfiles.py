@@ -100,16 +100,14 @@ class SpecialNames(DepfileCase):
                 continue
             with self.subTest(key):
                 self.texture_case(key)
-                for f in os.listdir(self.dir):
-                    (shutil.rmtree if os.path.isdir(self.path(f)) else os.remove)(self.path(f))
+                self.clear()
 
     @unittest.expectedFailure
     def test_names_that_make_or_ninja_misread(self):
         for key in KNOWN_BAD:
             with self.subTest(key):
                 self.texture_case(key)
-                for f in os.listdir(self.dir):
-                    (shutil.rmtree if os.path.isdir(self.path(f)) else os.remove)(self.path(f))
+                self.clear()
 
     # Bug (issue 16 item 1): the red team's newline injection is refused, but a ';' is
     # written raw. With the texture `g.json;touch${IFS}PWNED;.png`, the depfile's rule
@@ -139,25 +137,21 @@ class SpecialNames(DepfileCase):
                 self.write(lib, hs.library())
                 self.write("g.json", hs.flat_graph(include={"lib": lib}))
                 self.check("g.json")
-                for f in os.listdir(self.dir):
-                    (shutil.rmtree if os.path.isdir(self.path(f)) else os.remove)(self.path(f))
+                self.clear()
 
     def test_graph_file_names(self):
         for key in FEW:
             with self.subTest(key):
                 graph = self.write(SPECIAL[key] + ".json", hs.flat_graph())
                 self.check(os.path.basename(graph))
-                for f in os.listdir(self.dir):
-                    (shutil.rmtree if os.path.isdir(self.path(f)) else os.remove)(self.path(f))
+                self.clear()
 
     def test_output_folder_names(self):
         self.write("g.json", hs.flat_graph())
         for key in FEW:
             with self.subTest(key):
                 self.check("g.json", out=SPECIAL[key])
-                for f in os.listdir(self.dir):
-                    if f != "g.json":
-                        (shutil.rmtree if os.path.isdir(self.path(f)) else os.remove)(self.path(f))
+                self.clear(keep=("g.json",))
 
 
 class DepfilePlaces(HostileCase):

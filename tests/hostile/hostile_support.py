@@ -214,6 +214,11 @@ def timeline(stages, keys_per_stage=1):
     return {"keyframes": keys}
 
 
+def read(path, mode="rb"):
+    with open(str(path), mode) as f:
+        return f.read()
+
+
 def write(path, content):
     path = str(path)
     if isinstance(content, (dict, list)):
@@ -245,6 +250,16 @@ class HostileCase(unittest.TestCase):
                 if not os.path.islink(p):
                     os.chmod(p, 0o700)
         shutil.rmtree(self.dir, ignore_errors=True)
+
+    def clear(self, keep=()):
+        """Empties the temp dir between subtests, but for the names in `keep`."""
+        for f in os.listdir(self.dir):
+            if f not in keep:
+                p = self.path(f)
+                if os.path.isdir(p) and not os.path.islink(p):
+                    shutil.rmtree(p)
+                else:
+                    os.remove(p)
 
     def path(self, *parts):
         return os.path.join(self.dir, *parts)

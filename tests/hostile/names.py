@@ -36,7 +36,7 @@ class FileStems(HostileCase):
         for stem in found:
             # The lossy sanitised name carries a hash mark: '.h' and 8 hex digits.
             self.assertRegex(stem, r"\.h[0-9a-f]{8}$")
-        names = {hs.json.load(open(os.path.join(out, s + ".reflect.json")))["material"] for s in found}
+        names = {hs.json.loads(hs.read(os.path.join(out, s + ".reflect.json")))["material"] for s in found}
         self.assertEqual(names, {"雪", "雨"})
 
     def test_names_that_sanitise_alike_or_look_marked_never_share_a_stem_or_namespace(self):
@@ -54,7 +54,7 @@ class FileStems(HostileCase):
         spaces = []
         for f in os.listdir(out):
             if f.endswith(".hpp"):
-                text = open(os.path.join(out, f), encoding="utf-8").read()
+                text = hs.read(os.path.join(out, f), "r")
                 spaces += re.findall(r"^namespace (\S+) \{", text, re.M)
         self.assertEqual(len(spaces), len(names), spaces)
         self.assertEqual(len(set(spaces)), len(names), "two materials share a C++ namespace: %s" % sorted(spaces))
@@ -72,7 +72,7 @@ class FileStems(HostileCase):
                     self.compile_one(name, out, "--emit-header")
                 for f in os.listdir(out):
                     if f.endswith(".hpp"):
-                        spaces += re.findall(r"^namespace (\S+) \{", open(os.path.join(out, f)).read(), re.M)
+                        spaces += re.findall(r"^namespace (\S+) \{", hs.read(os.path.join(out, f), "r"), re.M)
                 self.assertEqual(len(set(spaces)), 2, spaces)
 
 
