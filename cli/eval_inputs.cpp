@@ -4,13 +4,15 @@
 
 #include <array>
 #include <charconv>
+#include <iterator>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 #include "compiler/diagnostic.hpp"
 #include "compiler/literal.hpp"
-#include "runtime/weather/weather_state.hpp"
+#include "nodes/frame_fields.hpp"
+#include "runtime/weather/frame_weather.hpp"
 
 namespace wg {
 
@@ -26,31 +28,16 @@ using G = EvalInputGroup;
 
 std::span<float> one(float& x) { return {&x, 1}; }
 
-// Names are the frame block's members (compiler/frame_block.cpp) and the surface
-// attributes; ranges are the runtime's (runtime/weather/weather_state.hpp).
-const std::array<EvalInputSpec, 20> kSpecs = {{
-    {"temperature", G::Weather, 1, kMinTemperatureC, kMaxTemperatureC, "air temperature, degrees C",
-     [](EvalInputs& in) { return one(in.frame.temperature); }},
-    {"precipitation", G::Weather, 1, 0.f, 1.f, "0 dry .. 1 heavy (about 10 mm/h of rain)",
-     [](EvalInputs& in) { return one(in.frame.precipitation); }},
-    {"windDirection", G::Weather, 2, -kInf, kInf, "where the wind blows to, world x:z (normalised; 0:0 is calm)",
-     [](EvalInputs& in) { return std::span<float>(in.frame.windDirection); }},
-    {"windIntensity", G::Weather, 1, 0.f, 1.f, "0 calm .. 1 blizzard",
-     [](EvalInputs& in) { return one(in.frame.windIntensity); }},
-    {"sunDirection", G::Weather, 3, -kInf, kInf, "towards the sun, world x:y:z, y up (normalised)",
-     [](EvalInputs& in) { return std::span<float>(in.frame.sunDirection); }},
-    {"sunIntensity", G::Weather, 1, 0.f, 1.f, "weather's sun strength",
-     [](EvalInputs& in) { return one(in.frame.sunIntensity); }},
-    {"time", G::Weather, 1, 0.f, kInf, "seconds since the scene started (pans wind, ripples, panners)",
-     [](EvalInputs& in) { return one(in.frame.time); }},
-    {"snowLevel", G::Weather, 1, 0.f, 1.f, "accumulated snow", [](EvalInputs& in) { return one(in.frame.snowLevel); }},
-    {"wetnessLevel", G::Weather, 1, 0.f, 1.f, "accumulated wetness",
-     [](EvalInputs& in) { return one(in.frame.wetnessLevel); }},
-    {"mossLevel", G::Weather, 1, 0.f, 1.f, "moss growth", [](EvalInputs& in) { return one(in.frame.mossLevel); }},
-    {"frostLevel", G::Weather, 1, 0.f, 1.f, "how frozen water is", [](EvalInputs& in) { return one(in.frame.frostLevel); }},
-    {"puddleLevel", G::Weather, 1, 0.f, 1.f, "standing water", [](EvalInputs& in) { return one(in.frame.puddleLevel); }},
-    {"terrainHeightScale", G::Weather, 1, 0.f, kInf, "metres per unit of the terrain height map (none is bound: flat)",
-     [](EvalInputs& in) { return one(in.frame.terrainHeightScale); }},
+std::vector<EvalInputSpec> makeSpecs() {
+  std::vector<EvalInputSpec> specs;
+  // --weather: the frame table's weather members, with its ranges and docs.
+  for (const FrameField& f : frameFields()) {
+    if (!f.weatherInput) continue;
+    specs.push_back({f.name, G::Weather, componentCount(f.type), f.min, f.max, f.doc,
+                     [field = &f](EvalInputs& in) { return fieldFloats(*field, in.frame); }});
+  }
+  // --at: the surface attributes.
+  const EvalInputSpec surface[] = {
     {"worldPosition", G::Surface, 3, -kInf, kInf, "metres, y up; the vertex stage's offset moves it for the fragment stage",
      [](EvalInputs& in) { return std::span<float>(in.surface.worldPosition); }},
     {"normal", G::Surface, 3, -kInf, kInf, "geometric normal (normalised as the shaders do; 0:0:0 allowed)",
@@ -65,7 +52,15 @@ const std::array<EvalInputSpec, 20> kSpecs = {{
      [](EvalInputs& in) { return std::span<float>(in.surface.vertexColor); }},
     {"skyExposure", G::Surface, 1, 0.f, 1.f, "open sky above the point (the shared map's value): 1 open, 0 roofed",
      [](EvalInputs& in) { return one(in.surface.skyExposure); }},
-}};
+  };
+  specs.insert(specs.end(), std::begin(surface), std::end(surface));
+  return specs;
+}
+
+const std::vector<EvalInputSpec>& specs() {
+  static const std::vector<EvalInputSpec> kSpecs = makeSpecs();
+  return kSpecs;
+}
 
 std::string rangeText(float lo, float hi) {
   if (lo == -kInf && hi == kInf) return "any finite number";
@@ -152,19 +147,13 @@ void normaliseDirection(std::array<float, N>& v) {
 
 }  // namespace
 
-std::span<const EvalInputSpec> evalInputSpecs() { return kSpecs; }
+std::span<const EvalInputSpec> evalInputSpecs() { return specs(); }
 
 std::string_view evalInputFlag(EvalInputGroup group) { return group == G::Weather ? "--weather" : "--at"; }
 
 EvalInputs defaultEvalInputs() {
   EvalInputs in;
-  const WeatherConditions conditions;
-  in.frame.temperature = conditions.temperature;
-  in.frame.precipitation = conditions.precipitation;
-  in.frame.windDirection = conditions.windDirection;
-  in.frame.windIntensity = conditions.windIntensity;
-  in.frame.sunDirection = conditions.sunDirection;
-  in.frame.sunIntensity = conditions.sunIntensity;
+  writeWeather(WeatherState{}, in.frame);
   return in;
 }
 
@@ -173,7 +162,7 @@ std::string applyEvalInputList(std::string_view list, EvalInputGroup group, Eval
   std::string_view flag = evalInputFlag(group);
   return forEachEntry(list, flag, seen, [&](const std::string& key, std::string_view text) -> std::string {
     std::vector<std::string_view> names;
-    for (const auto& spec : kSpecs) {
+    for (const auto& spec : specs()) {
       if (spec.group != group) continue;
       names.push_back(spec.name);
       if (spec.name == key)
@@ -220,14 +209,7 @@ std::string applyParameterList(std::string_view list, const IrGraph& graph, Eval
 
 std::string finishEvalInputs(EvalInputs& inputs) {
   // The runtime's own check of the conditions, so eval accepts exactly what it does.
-  WeatherConditions conditions;
-  conditions.temperature = inputs.frame.temperature;
-  conditions.precipitation = inputs.frame.precipitation;
-  conditions.windDirection = inputs.frame.windDirection;
-  conditions.windIntensity = inputs.frame.windIntensity;
-  conditions.sunDirection = inputs.frame.sunDirection;
-  conditions.sunIntensity = inputs.frame.sunIntensity;
-  if (std::string error = validate(conditions); !error.empty())
+  if (std::string error = validate(weatherOf(inputs.frame).conditions); !error.empty())
     return "--weather " + error + "; use a value in that range";
   normaliseDirection(inputs.frame.sunDirection);
   normaliseDirection(inputs.frame.windDirection);

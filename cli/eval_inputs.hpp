@@ -4,6 +4,7 @@
 // "windDirection=1:0" for x:z). Every error is one line naming the key and the fix.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <set>
 #include <span>
 #include <string>
@@ -15,13 +16,14 @@ namespace wg {
 
 enum class EvalInputGroup : std::uint8_t { Weather, Surface };
 
+// The weather inputs come from the frame table (nodes/frame_fields.hpp).
 struct EvalInputSpec {
   std::string_view name;  // the frame block member or surface attribute
   EvalInputGroup group;
   std::size_t minComponents;  // fewer than the field's size keeps the default tail (tangent w, colour alpha)
   float min, max;             // accepted range of each component
   std::string_view doc;       // unit and meaning, for --help
-  std::span<float> (*field)(EvalInputs&);
+  std::function<std::span<float>(EvalInputs&)> field;
 };
 
 std::span<const EvalInputSpec> evalInputSpecs();

@@ -8,27 +8,11 @@
 #include "compiler/json_document.hpp"
 #include "compiler/literal.hpp"
 #include "compiler/regular_file.hpp"
+#include "runtime/weather/frame_weather.hpp"
 
 namespace wg {
 
 namespace {
-
-WeatherState weatherFromFrame(const FrameState& f) {
-  WeatherState s;
-  s.conditions.temperature = f.temperature;
-  s.conditions.precipitation = f.precipitation;
-  s.conditions.windDirection = f.windDirection;
-  s.conditions.windIntensity = f.windIntensity;
-  s.conditions.sunDirection = f.sunDirection;
-  s.conditions.sunIntensity = f.sunIntensity;
-  s.time = f.time;
-  s.levels.snow = f.snowLevel;
-  s.levels.wetness = f.wetnessLevel;
-  s.levels.moss = f.mossLevel;
-  s.levels.frost = f.frostLevel;
-  s.levels.puddles = f.puddleLevel;
-  return s;
-}
 
 // A preset by name, or the framed orbit; "" or a usage message.
 std::string applyCamera(const RenderOptions& o, const scene::Scene& scene, RenderRequest& request) {
@@ -88,7 +72,7 @@ std::string applyAovAndWeather(const std::string& aov, const std::vector<std::st
   for (const auto& list : weatherLists)
     if (std::string e = applyEvalInputList(list, EvalInputGroup::Weather, inputs, seen); !e.empty()) return e;
   if (std::string e = finishEvalInputs(inputs); !e.empty()) return e;
-  request.weather = weatherFromFrame(inputs.frame);
+  request.weather = weatherOf(inputs.frame);
   return "";
 }
 

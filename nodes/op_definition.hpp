@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "compiler/value.hpp"
+#include "nodes/frame_state.hpp"
 
 namespace wg {
 
@@ -45,21 +46,6 @@ struct SurfacePoint {
   // The snow deformation map's texel: height offset (m), then the world normal.
   std::array<float, 4> snowDeformation{0.f, 0.f, 1.f, 0.f};
   float sunVisibility = 1.f;  // the sun shadow map's answer: 1 lit, 0 in shadow
-};
-
-// The CPU mirror of the frame and weather uniforms the weather ops read.
-struct FrameState {
-  std::array<float, 3> cameraPosition{0.f, 2.f, 5.f};
-  std::array<float, 3> sunDirection{0.f, 1.f, 0.f};  // towards the sun
-  float sunIntensity = 0.f;
-  float temperature = 15.f;
-  float precipitation = 0.f;
-  std::array<float, 2> windDirection{1.f, 0.f};
-  float windIntensity = 0.f;
-  float snowLevel = 0.f, wetnessLevel = 0.f, mossLevel = 0.f, frostLevel = 0.f, puddleLevel = 0.f;
-  float terrainHeightScale = 1.f;
-  std::array<float, 4> terrainRegion{0.f, 0.f, 0.f, 0.f};  // xz origin, 1/size (eq. 3.11)
-  float time = 0.f;  // seconds
 };
 
 struct TextureSampler;  // nodes/texture_sampling.hpp

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "nodes/frame_fields.hpp"
+
 namespace wg {
 
 void FrameUniforms::write(std::string_view name, std::string_view type, const void* data, std::size_t size) {
@@ -21,5 +23,12 @@ void FrameUniforms::set(std::string_view name, glm::vec3 v) { write(name, "vec3"
 void FrameUniforms::set(std::string_view name, glm::vec4 v) { write(name, "vec4", &v, sizeof v); }
 // glm matrices are column-major, as std140 and both shading languages expect here.
 void FrameUniforms::set(std::string_view name, const glm::mat4& v) { write(name, "mat4", &v, sizeof v); }
+
+void FrameUniforms::set(const FrameState& frame) {
+  for (const FrameField& field : frameFields()) {
+    std::span<const std::byte> bytes = fieldBytes(field, frame);
+    write(field.name, glslTypeName(field.type), bytes.data(), bytes.size());
+  }
+}
 
 }  // namespace wg

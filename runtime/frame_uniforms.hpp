@@ -2,9 +2,12 @@
 // publishes; the runtime never hard-codes the layout.
 #pragma once
 #include <glm/glm.hpp>
+#include <array>
+#include <cstring>
 #include <string_view>
 #include <vector>
 
+#include "nodes/frame_state.hpp"
 #include "runtime/vulkan/material_reflection.hpp"
 
 namespace wg {
@@ -21,6 +24,8 @@ class FrameUniforms {
   void set(std::string_view name, glm::vec3 value);
   void set(std::string_view name, glm::vec4 value);
   void set(std::string_view name, const glm::mat4& value);
+  // Every member, from the frame table (nodes/frame_fields.hpp).
+  void set(const FrameState& frame);
 
   const std::vector<unsigned char>& bytes() const { return bytes_; }
 
@@ -29,5 +34,13 @@ class FrameUniforms {
   const vk::ReflectedBlock* block_;
   std::vector<unsigned char> bytes_;
 };
+
+// A glm value into the FrameState member of the same size (glm stores matrices
+// column-major, as the block does).
+template <std::size_t N, class GlmValue>
+void storeInto(std::array<float, N>& member, const GlmValue& value) {
+  static_assert(sizeof(GlmValue) == sizeof(member), "glm value and frame member differ in size");
+  std::memcpy(member.data(), &value, sizeof member);
+}
 
 }  // namespace wg

@@ -9,6 +9,7 @@
 #include "runtime/draw_order.hpp"
 #include "runtime/frame_uniforms.hpp"
 #include "runtime/scene/graph_path.hpp"
+#include "runtime/weather/frame_weather.hpp"
 
 namespace wg {
 
@@ -403,41 +404,32 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   VkDeviceSize alignment = ctx_.properties().limits.minUniformBufferOffsetAlignment;
   VkDeviceSize slice = (frameBlock.size + alignment - 1) / alignment * alignment;
   vk::Buffer frameBuffer(ctx_, slice * passes.size() * objects_.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  const auto& w = request.weather;
   auto modelOf = [&](std::size_t i) {
     auto moved = request.objectModels.find(objects_[i]->source->name);
     return moved != request.objectModels.end() ? moved->second : objects_[i]->source->model;
   };
+  FrameState uniforms;  // the block's values; per pass and object only the matrices and eye change
+  writeWeather(request.weather, uniforms);
+  storeInto(uniforms.sunDirection, towardsSun);  // unit length, as the block requires
+  storeInto(uniforms.lightViewProjection, light);
+  storeInto(uniforms.skyExposureRegion, exposureRegion_);
+  storeInto(uniforms.terrainRegion, scene_.terrainRegion);
+  storeInto(uniforms.sunColor, kSunColor);
+  uniforms.ambientIntensity = kAmbientIntensity;
+  storeInto(uniforms.skyColor, kSkyColor);
+  uniforms.exposure = kToneExposure;
+  uniforms.debugView = request.debugView;
+  uniforms.terrainHeightScale = scene_.terrainHeightScale;
+  uniforms.shadowMapTexel = request.shadows ? 1.f / float(kShadowResolution) : 0.f;
   for (std::size_t p = 0; p < passes.size(); ++p)
     for (std::size_t i = 0; i < objects_.size(); ++i) {
-      FrameUniforms f(frameBlock);
       glm::mat4 model = modelOf(i);
-      f.set("model", model);
-      f.set("viewProjection", passes[p].viewProjection);
-      f.set("normalMatrix", glm::transpose(glm::inverse(model)));
-      f.set("lightViewProjection", light);
-      f.set("skyExposureRegion", exposureRegion_);
-      f.set("terrainRegion", scene_.terrainRegion);
-      f.set("cameraPosition", passes[p].eye);
-      f.set("time", static_cast<float>(w.time));
-      f.set("sunDirection", towardsSun);
-      f.set("sunIntensity", w.conditions.sunIntensity);
-      f.set("sunColor", kSunColor);
-      f.set("ambientIntensity", kAmbientIntensity);
-      f.set("skyColor", kSkyColor);
-      f.set("temperature", w.conditions.temperature);
-      f.set("windDirection", glm::vec2(w.conditions.windDirection[0], w.conditions.windDirection[1]));
-      f.set("windIntensity", w.conditions.windIntensity);
-      f.set("precipitation", w.conditions.precipitation);
-      f.set("snowLevel", w.levels.snow);
-      f.set("wetnessLevel", w.levels.wetness);
-      f.set("mossLevel", w.levels.moss);
-      f.set("frostLevel", w.levels.frost);
-      f.set("puddleLevel", w.levels.puddles);
-      f.set("exposure", kToneExposure);
-      f.set("debugView", request.debugView);
-      f.set("terrainHeightScale", scene_.terrainHeightScale);
-      f.set("shadowMapTexel", request.shadows ? 1.f / float(kShadowResolution) : 0.f);
+      storeInto(uniforms.model, model);
+      storeInto(uniforms.viewProjection, passes[p].viewProjection);
+      storeInto(uniforms.normalMatrix, glm::transpose(glm::inverse(model)));
+      storeInto(uniforms.cameraPosition, passes[p].eye);
+      FrameUniforms f(frameBlock);
+      f.set(uniforms);
       frameBuffer.write(f.bytes().data(), f.bytes().size(), slice * (p * objects_.size() + i));
     }
 

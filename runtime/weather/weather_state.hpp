@@ -5,13 +5,14 @@
 #include <array>
 #include <string>
 
+#include "nodes/frame_fields.hpp"
+
 namespace wg {
 
-// Accepted input ranges. Outside them an input is almost certainly a unit or sign
-// mistake (Fahrenheit, kelvin, a percentage), so validate() rejects it rather than
-// letting it saturate silently. The simulation still clamps into them.
-inline constexpr float kMinTemperatureC = -60.0f;  // below any inhabited-area record low
-inline constexpr float kMaxTemperatureC = 60.0f;   // above the hottest recorded air temperature
+// Accepted input ranges are the frame table's (nodes/frame_fields.hpp). Outside them an
+// input is almost certainly a unit or sign mistake (Fahrenheit, kelvin, a percentage),
+// so validate() rejects it rather than letting it saturate silently. The simulation
+// still clamps into them.
 
 // What the weather is doing right now; set by the engine or a timeline.
 // Coordinates are world space with y up, so the ground plane is xz.

@@ -8,6 +8,7 @@
 #include "compiler/debug_views.hpp"
 #include "compiler/material_compiler.hpp"
 #include "nodes/weather_model.hpp"
+#include "runtime/weather/frame_weather.hpp"
 
 namespace wg::testing {
 
@@ -91,19 +92,9 @@ std::vector<PixelSurface> surfacePixels(SceneRenderer& renderer, RenderRequest r
 
 FrameState frameStateFor(const SceneRenderer& renderer, const WeatherState& w) {
   FrameState f;
+  writeWeather(w, f);
   glm::vec3 sun = glm::normalize(glm::vec3(w.conditions.sunDirection[0], w.conditions.sunDirection[1], w.conditions.sunDirection[2]));
-  f.sunDirection = {sun.x, sun.y, sun.z};
-  f.sunIntensity = w.conditions.sunIntensity;
-  f.temperature = w.conditions.temperature;
-  f.precipitation = w.conditions.precipitation;
-  f.windDirection = w.conditions.windDirection;
-  f.windIntensity = w.conditions.windIntensity;
-  f.snowLevel = w.levels.snow;
-  f.wetnessLevel = w.levels.wetness;
-  f.mossLevel = w.levels.moss;
-  f.frostLevel = w.levels.frost;
-  f.puddleLevel = w.levels.puddles;
-  f.time = static_cast<float>(w.time);
+  f.sunDirection = {sun.x, sun.y, sun.z};  // unit length, as the renderer uploads it
   const auto& s = renderer.scene();
   f.terrainHeightScale = s.terrainHeightScale;
   f.terrainRegion = {s.terrainRegion.x, s.terrainRegion.y, s.terrainRegion.z, s.terrainRegion.w};
