@@ -14,9 +14,8 @@ std::string checkDumpIrPassName(const std::string& name) {
   if (name == kDumpIrAfterEveryPass || findPass(name)) return "";
   std::vector<std::string_view> names{kDumpIrAfterEveryPass};
   for (const Pass& pass : passPipeline()) names.push_back(pass.name);
-  std::string hint = suggestClosest(name, names);
   return "--dump-ir-after: unknown pass '" + quoteUserText(name) + "'; " +
-         (hint.empty() ? "run 'weathergen list-passes' to see them, or use 'all'" : hint);
+         unknownNameHintOr(name, names, "run 'weathergen list-passes' to see them, or use 'all'");
 }
 
 namespace {

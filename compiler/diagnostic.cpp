@@ -51,6 +51,23 @@ std::string_view severityName(Severity s) { return s == Severity::Error ? "error
 
 // The file name and the pointer come from user text (paths, JSON keys): control
 // characters in them never reach the terminal raw.
+namespace {
+// A last defence for the terminal: callers quote user text, but a message or hint must
+// never carry a control character whatever path built it. Newlines stay: compiler logs
+// in internal diagnostics span lines.
+std::string withoutControls(const std::string& text) {
+  std::string out;
+  std::size_t start = 0;
+  for (std::size_t nl = text.find('\n'); ; nl = text.find('\n', start)) {
+    const std::size_t end = nl == std::string::npos ? text.size() : nl;
+    out += quoteUserText(std::string_view(text).substr(start, end - start), std::string::npos);
+    if (nl == std::string::npos) return out;
+    out += '\n';
+    start = nl + 1;
+  }
+}
+}  // namespace
+
 std::string formatDiagnosticText(const Diagnostic& d) {
   constexpr std::size_t kShown = 1024;
   std::string out = d.location.file.empty() ? std::string("weathergen") : quoteUserText(d.location.file, kShown);
@@ -60,10 +77,10 @@ std::string formatDiagnosticText(const Diagnostic& d) {
   out += severityName(d.info().severity);
   out += " ";
   out += d.info().id;
-  out += ": " + d.message;
+  out += ": " + withoutControls(d.message);
   if (!d.location.file.empty()) out += " [" + (d.location.pointer.empty() ? "/" : quoteUserText(d.location.pointer, kShown)) + "]";
   out += "\n";
-  if (!d.hint.empty()) out += "  hint: " + d.hint + "\n";
+  if (!d.hint.empty()) out += "  hint: " + withoutControls(d.hint) + "\n";
   return out;
 }
 
@@ -118,7 +135,22 @@ std::string suggestClosest(std::string_view word, const std::vector<std::string_
       best = c;
     }
   }
-  return best.empty() ? std::string() : "did you mean '" + std::string(best) + "'?";
+  return best.empty() ? std::string() : "did you mean '" + quoteUserText(best) + "'?";
+}
+
+std::string unknownNameHint(std::string_view word, const std::vector<std::string_view>& candidates,
+                            std::string_view label) {
+  if (std::string hint = suggestClosest(word, candidates); !hint.empty()) return hint;
+  std::string hint = std::string(label) + ":";
+  for (auto c : candidates) hint += " " + quoteUserText(c);
+  if (candidates.empty()) hint += " none";
+  return hint;
+}
+
+std::string unknownNameHintOr(std::string_view word, const std::vector<std::string_view>& candidates,
+                              std::string_view otherwise) {
+  std::string hint = suggestClosest(word, candidates);
+  return hint.empty() ? std::string(otherwise) : hint;
 }
 
 }  // namespace wg

@@ -53,6 +53,14 @@ std::string formatDiagnosticsJson(const std::vector<Diagnostic>& list);
 // "did you mean 'x'?" from candidates by edit distance, or "" when none is close.
 std::string suggestClosest(std::string_view word, const std::vector<std::string_view>& candidates);
 
+// The one hint for an unknown name: "did you mean 'x'?" when a candidate is close;
+// otherwise `label` and every candidate ("known fields: id op inputs"), or `otherwise`
+// when listing them would not help (hundreds of ops, a graph's node ids).
+std::string unknownNameHint(std::string_view word, const std::vector<std::string_view>& candidates,
+                            std::string_view label);
+std::string unknownNameHintOr(std::string_view word, const std::vector<std::string_view>& candidates,
+                              std::string_view otherwise);
+
 // "a, b, c": names listed in a hint.
 std::string listNames(const std::vector<std::string>& names);
 

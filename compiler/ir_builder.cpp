@@ -106,20 +106,13 @@ class Builder {
     return -1;
   }
 
-  std::string namesOf(const auto& list) const {
-    std::string out;
-    for (const auto& item : list) out += (out.empty() ? "" : ", ") + quoteUserText(item.name);
-    return out.empty() ? "none" : out;
-  }
-
   void resolveOp(std::uint32_t index) {
     PendingNode& p = pending_[index];
     const NodeDecl& n = *p.decl;
     p.op = findOp(n.op);
     if (!p.op) {
-      std::string hint = suggestClosest(n.op, opNames());
       report(DiagCode::UnknownOp, appendPointer(n.pointer, "op"),
-             {quoteUserText(n.op), hint.empty() ? "run 'weathergen list-ops' to see every op" : hint});
+             {quoteUserText(n.op), unknownNameHintOr(n.op, opNames(), "run 'weathergen list-ops' to see every op")});
       p.bad = true;
       return;
     }
@@ -133,9 +126,8 @@ class Builder {
         if (p.parameter < 0) {
           std::vector<std::string_view> names;
           for (const auto& q : graph_.parameters) names.push_back(q.name);
-          std::string hint = suggestClosest(n.param, names);
           report(DiagCode::UnknownParameter, appendPointer(n.pointer, "param"),
-                 {quoteUserText(n.param), hint.empty() ? "declared parameters: " + namesOf(graph_.parameters) : hint});
+                 {quoteUserText(n.param), unknownNameHint(n.param, names, "declared parameters")});
           p.bad = true;
         }
       }
@@ -154,12 +146,7 @@ class Builder {
       if (!spec) {
         std::vector<std::string_view> names;
         for (const auto& s : p.op->inputs) names.push_back(s.name);
-        std::string hint = suggestClosest(port, names);
-        if (hint.empty()) {
-          hint = "inputs of '" + std::string(p.op->name) + "':";
-          for (auto s : names) hint += " " + std::string(s);
-          if (names.empty()) hint += " none";
-        }
+        std::string hint = unknownNameHint(port, names, "inputs of '" + std::string(p.op->name) + "'");
         report(DiagCode::UnknownInput, source.pointer, {p.op->name, quoteUserText(port), hint});
         p.bad = true;
         continue;
@@ -173,8 +160,10 @@ class Builder {
                   "name a texture declared under \"textures\""});
           p.bad = true;
         } else if ((in.texture = findTexture(source.text)) < 0) {
+          std::vector<std::string_view> names;
+          for (const auto& t : graph_.textures) names.push_back(t.name);
           report(DiagCode::UnknownTexture, source.pointer,
-                 {quoteUserText(source.text), "declared textures: " + namesOf(graph_.textures)});
+                 {quoteUserText(source.text), unknownNameHint(source.text, names, "declared textures")});
           p.bad = true;
         }
         continue;
@@ -204,9 +193,8 @@ class Builder {
     if (it == ids_.end()) {
       std::vector<std::string_view> ids;
       for (const auto& n : graph_.nodes) ids.push_back(n.id);
-      std::string hint = suggestClosest(id, ids);
       report(DiagCode::UnknownNode, source.pointer,
-             {quoteUserText(source.text), quoteUserText(id), hint.empty() ? "link to the id of a node in \"nodes\"" : hint});
+             {quoteUserText(source.text), quoteUserText(id), unknownNameHintOr(id, ids, "link to the id of a node in \"nodes\"")});
       p.bad = true;
       return;
     }

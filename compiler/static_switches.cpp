@@ -48,14 +48,10 @@ class SwitchResolver {
 
   // The hint for an undeclared switch: the closest name, or the declared ones.
   std::string declaredSwitches(const std::string& missing) const {
-    std::vector<std::string> names;
     std::vector<std::string_view> candidates;
-    for (const auto& s : graph_.switches) {
-      names.push_back(s.name);
-      candidates.push_back(s.name);
-    }
-    if (std::string hint = suggestClosest(missing, candidates); !hint.empty()) return hint;
-    return names.empty() ? "the graph declares no switches; add them under \"switches\"" : "declared switches: " + listNames(names);
+    for (const auto& s : graph_.switches) candidates.push_back(s.name);
+    if (candidates.empty()) return "the graph declares no switches; add them under \"switches\"";
+    return unknownNameHint(missing, candidates, "declared switches");
   }
 
   void chooseValues(const SwitchValues& requested) {

@@ -89,9 +89,8 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
                                                   const JsonDocument& doc, DiagnosticList& diags) {
   bool ok = true;
   auto unknownPreset = [&](const std::string& name, SourceLocation where) {
-    std::string hint = suggestClosest(name, weatherPresetNames());
     diags.report(DiagCode::UnknownWeatherPreset, std::move(where),
-                 {quoteUserText(name), hint.empty() ? "presets: " + presetList() : hint});
+                 {quoteUserText(name), unknownNameHint(name, weatherPresetNames(), "presets")});
     ok = false;
   };
   auto invalid = [&](const std::string& at, const std::string& what, const std::string& fix) {
@@ -139,9 +138,7 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
         if (flag == kEffectFlags.end()) {
           std::vector<std::string_view> names;
           for (const auto& f : kEffectFlags) names.push_back(f.name);
-          std::string hint = suggestClosest(effect, names);
-          invalid(effectAt, "unknown weather effect '" + quoteUserText(effect) + "'",
-                  hint.empty() ? "effects: snow, displacement, terrainOrientation, moss, wetness, puddles, ice, hoarfrost, foliageDensity, skyExposure" : hint);
+          invalid(effectAt, "unknown weather effect '" + quoteUserText(effect) + "'", unknownNameHint(effect, names, "effects"));
         } else if (!on.is_boolean()) {
           invalid(effectAt, "effect '" + std::string(flag->name) + "' must be true or false", "write true or false");
         } else {
@@ -175,11 +172,7 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
     if (setting == kNumberSettings.end()) {
       std::vector<std::string_view> names = {"preset", "effects", "weights", "terms"};
       for (const auto& s : kNumberSettings) names.push_back(s.name);
-      std::string hint = suggestClosest(key, names);
-      invalid(at, "unknown weather setting '" + quoteUserText(key) + "'",
-              hint.empty() ? "settings: preset, effects, weights, terms, maxSnowHeight, minHeight, maxHeight, "
-                             "inclinationIntensity, terrainSlopeIntensity, terrainIntensity, foliageThinning"
-                           : hint);
+      invalid(at, "unknown weather setting '" + quoteUserText(key) + "'", unknownNameHint(key, names, "settings"));
       continue;
     }
     if (!value.is_number() || !std::isfinite(value.get<double>())) {
