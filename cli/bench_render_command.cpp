@@ -71,7 +71,7 @@ int runBenchRenderCommand(int argc, char** argv) {
       if (frames < 1) error = "--frames takes a whole number of frames from 1 to 1000000";
       else continue;
     }
-    std::fprintf(stderr, "weathergen: error WG9001: %s\n", error.empty() ? ("unknown option '" + cl.peek() + "'").c_str() : error.c_str());
+    std::fprintf(stderr, "weathergen: error WG9001: %s\n", error.empty() ? ("unknown option '" + quoteUserText(cl.peek()) + "'").c_str() : error.c_str());
     return kExitUsage;
   }
   constexpr std::uint32_t kMaxSide = 8192;

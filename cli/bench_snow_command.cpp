@@ -11,6 +11,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/number_text.hpp"
+#include "compiler/literal.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "runtime/snow/deformation_texel.hpp"
@@ -170,7 +171,7 @@ int runBenchSnowCommand(int argc, char** argv) {
       if (!(walkMinutes > 0.0) || !std::isfinite(walkMinutes)) error = "--walk-minutes takes a positive number";
       else continue;
     }
-    std::fprintf(stderr, "weathergen: error WG9001: %s\n", error.empty() ? ("unknown option '" + cl.peek() + "'").c_str() : error.c_str());
+    std::fprintf(stderr, "weathergen: error WG9001: %s\n", error.empty() ? ("unknown option '" + quoteUserText(cl.peek()) + "'").c_str() : error.c_str());
     return kExitUsage;
   }
   std::string error;

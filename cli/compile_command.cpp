@@ -152,7 +152,8 @@ std::optional<std::map<std::string, std::string>> graphFiles(const GraphOutput& 
   return files;
 }
 
-// No output, the depfile included, may replace an input: a graph, a library or an image.
+// No output, the depfile included, may replace an input: a graph, a library or an image;
+// nor may the depfile replace an output.
 std::string outputOverwritesInput(const std::vector<DepfileRule>& rules, const std::string& depfile) {
   std::error_code ec;
   std::set<std::filesystem::path> inputs;
@@ -160,6 +161,11 @@ std::string outputOverwritesInput(const std::vector<DepfileRule>& rules, const s
     for (const auto& input : rule.inputs) inputs.insert(std::filesystem::weakly_canonical(input, ec));
   auto clash = [&](const std::string& output) { return inputs.count(std::filesystem::weakly_canonical(output, ec)) > 0; };
   if (!depfile.empty() && clash(depfile)) return "--depfile '" + quoteUserText(depfile) + "' is one of the inputs; choose another path";
+  std::set<std::filesystem::path> outputs;
+  for (const auto& rule : rules)
+    for (const auto& output : rule.outputs) outputs.insert(std::filesystem::weakly_canonical(output, ec));
+  if (!depfile.empty() && outputs.count(std::filesystem::weakly_canonical(depfile, ec)))
+    return "--depfile '" + quoteUserText(depfile) + "' is one of the outputs; choose another path";
   for (const auto& rule : rules)
     for (const auto& output : rule.outputs)
       if (clash(output)) return "the output '" + quoteUserText(output) + "' would replace one of the inputs; choose another output directory";
@@ -252,6 +258,7 @@ int runCompileCommand(int argc, char** argv) {
     }
     if (auto v = cl.valueFor("--depfile", error); v || !error.empty()) {
       if (!v) return usageError(error, o.json);
+      if (v->empty()) return usageError("--depfile takes a file name (it is empty; is a build variable unset?)", o.json);
       o.depfile = *v;
       continue;
     }

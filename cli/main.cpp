@@ -67,6 +67,6 @@ int runSubcommand(int argc, char** argv) {
   if (command == "bench-snow") return wg::runBenchSnowCommand(argc, argv);
   if (command.starts_with("list-")) return wg::runListCommand(argc, argv);
   std::fprintf(stderr, "weathergen: error WG9001: unknown command '%s'\n  hint: run 'weathergen --help' for usage\n",
-               command.size() > 60 ? (command.substr(0, 60) + "...").c_str() : command.c_str());
+               wg::quoteUserText(command).c_str());
   return wg::kExitUsage;
 }

@@ -43,9 +43,35 @@ int renderSnowfieldScene(const RenderOptions& o) {
   try {
     return renderSnowfield(options);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "weathergen: error: %s\n", e.what());
+    std::fprintf(stderr, "weathergen: error: %s\n", quoteUserText(e.what(), 1000).c_str());
     return kExitInternal;
   }
+}
+
+// The picture (and a timeline's strip) must not replace a file the render reads.
+std::string outputReplacesInput(const RenderOptions& o) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> outputs = {std::filesystem::weakly_canonical(o.output, ec)};
+  if (!o.timelinePath.empty())
+    outputs.push_back(std::filesystem::weakly_canonical(std::filesystem::path(o.output).replace_extension(".strip.png"), ec));
+  for (const std::string* input : {&o.materialPath, &o.modelPath, &o.timelinePath}) {
+    if (input->empty()) continue;
+    const auto in = std::filesystem::weakly_canonical(*input, ec);
+    for (const auto& out : outputs)
+      if (out == in) return "-o '" + quoteUserText(o.output) + "' would replace the input '" + quoteUserText(*input) + "'; choose another output";
+  }
+  return "";
+}
+
+// --frames DIR is created when the stages are written: a file on its way fails now.
+std::string checkFramesFolder(const std::string& framesDir) {
+  std::error_code ec;
+  for (std::filesystem::path p = std::filesystem::absolute(framesDir, ec); !p.empty(); p = p.parent_path()) {
+    if (std::filesystem::exists(p, ec) && !std::filesystem::is_directory(p, ec))
+      return "--frames '" + quoteUserText(framesDir) + "': '" + quoteUserText(p.string()) + "' is a file; name a directory";
+    if (p == p.parent_path()) break;
+  }
+  return "";
 }
 
 // Checks between options, before anything is built.
@@ -59,10 +85,9 @@ std::string checkRenderOptions(const RenderOptions& o) {
     return "--preset-map, --model-scale and --snow-displacement take --model";
   if (!o.presetMap.empty() && o.weatherPreset) return "--weather-preset and --preset-map exclude each other";
   if (o.watchRenders && !o.watch) return "--watch-renders takes --watch";
-  std::error_code ec;
-  if (!o.framesDir.empty() && std::filesystem::exists(o.framesDir, ec) && !std::filesystem::is_directory(o.framesDir, ec))
-    return "--frames '" + quoteUserText(o.framesDir) + "' is a file; name a directory";
-  return "";
+  if (!o.framesDir.empty())
+    if (std::string e = checkFramesFolder(o.framesDir); !e.empty()) return e;
+  return outputReplacesInput(o);
 }
 
 // The scene and what to draw of it: checked before a device is opened.

@@ -7,7 +7,7 @@
 #include "compiler/debug_views.hpp"
 #include "compiler/json_document.hpp"
 #include "compiler/literal.hpp"
-#include "compiler/regular_file.hpp"
+#include "nodes/regular_file.hpp"
 #include "runtime/weather/frame_weather.hpp"
 
 namespace wg {

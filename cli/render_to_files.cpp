@@ -104,7 +104,7 @@ RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPl
     printDiagnostics(e.diagnostics(), false);
     result.exitCode = kExitBadInput;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "weathergen: error: %s\n", e.what());
+    std::fprintf(stderr, "weathergen: error: %s\n", quoteUserText(e.what(), 1000).c_str());
     result.exitCode = kExitInternal;
   }
   return result;

@@ -11,7 +11,7 @@
 #include "compiler/sampler_state_loader.hpp"
 #include "compiler/static_switches.hpp"
 #include "nodes/image_file.hpp"
-#include "compiler/regular_file.hpp"
+#include "nodes/regular_file.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/texture_generators.hpp"
 
@@ -171,8 +171,8 @@ class Loader {
   // headers do not depend on where the checkout lives (hermetic build caches). An
   // absolute path is recorded relative to the graph's folder too.
   std::string recordedTexturePath(const std::string& written, const std::string& resolved) const {
-    if (!std::filesystem::path(written).is_absolute())
-      return (scope_.writtenBase / written).lexically_normal().string();
+    const auto asWritten = (scope_.writtenBase / written).lexically_normal();
+    if (!asWritten.is_absolute()) return asWritten.string();  // a library included by absolute path makes it so
     std::error_code ec;
     const auto graphFolder = std::filesystem::absolute(doc_.file(), ec).parent_path();
     const auto relative = std::filesystem::path(resolved).lexically_relative(graphFolder);
@@ -196,8 +196,11 @@ class Loader {
     std::filesystem::path written = path.get<std::string>();
     std::filesystem::path resolved = (std::filesystem::path(doc_.file()).parent_path() / written).lexically_normal();
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(resolved, ec)) {
-      report(DiagCode::FileUnreadable, at, {quoteUserText(written.string()), "no such library file", "include paths are relative to the including graph"});
+    if (FileRead kind = inspectRegularFile(resolved.string()); kind.status != FileReadStatus::Ok) {
+      const bool missing = kind.status == FileReadStatus::NotFound;
+      report(DiagCode::FileUnreadable, at,
+             {quoteUserText(written.string()), missing ? "no such library file" : kind.reason,
+              missing ? "include paths are relative to the including graph" : "include a graph library file"});
       return;
     }
     // A library is never empty; files that claim size 0 include /proc entries whose
@@ -288,11 +291,7 @@ class Loader {
       if ((key == "description" || key == "$schema") && !value.is_string())
         report(DiagCode::WrongJsonKind, appendPointer(pointer, key), {"'" + key + "'", "a string", describeJsonKind(value)});
       if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-      std::string hint = suggestClosest(key, known);
-      if (hint.empty()) {
-        hint = "known fields:";
-        for (auto k : known) hint += " " + std::string(k);
-      }
+      std::string hint = unknownNameHint(key, known, "known fields");
       failed_ = true;
       std::string fieldPointer = appendPointer(pointer, key);
       diags_.report(DiagCode::UnknownField, doc_.locateKey(fieldPointer), {quoteUserText(key), hint});
@@ -430,11 +429,7 @@ class Loader {
       if (!spec) {
         std::vector<std::string_view> names;
         for (const auto& g : textureGenerators()) names.push_back(g.name);
-        std::string hint = suggestClosest(t.generator, names);
-        if (hint.empty()) {
-          hint = "built-in generators:";
-          for (auto n : names) hint += " " + std::string(n);
-        }
+        std::string hint = unknownNameHint(t.generator, names, "built-in generators");
         report(DiagCode::TextureUnsupported, appendPointer(pointer, "generator"),
                {shown, "unknown generator '" + quoteUserText(t.generator) + "'", hint});
         return;

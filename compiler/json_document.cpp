@@ -353,6 +353,14 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
                        {"the JSON nesting depth", std::to_string(depth), std::to_string(limits.maxDepth)});
     return std::nullopt;
   }
+  // nlohmann's lexer reads a NUL as the end of input, so whatever follows one would be
+  // ignored silently: a binary or truncated file. JSON text never holds one raw.
+  if (std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    auto [line, column] = lineColumnOfByte(text, nul);
+    diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column},
+                       {"a NUL byte; JSON text cannot hold one (is the file binary or cut short?)"});
+    return std::nullopt;
+  }
   nlohmann::json root;
   DuplicateAwareBuilder builder(root);
   try {

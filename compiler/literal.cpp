@@ -60,6 +60,16 @@ std::string quoteUserText(std::string_view text, std::size_t maxShown) {
   std::string out;
   for (std::size_t i = 0; i < text.size() && i < maxShown; ++i) {
     unsigned char c = static_cast<unsigned char>(text[i]);
+    // U+0080..U+009F (UTF-8 C2 80..C2 9F) are C1 controls: U+009B is a CSI to terminals.
+    if (c == 0xC2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) <= 0x9F &&
+        static_cast<unsigned char>(text[i + 1]) >= 0x80) {
+      static const char* hex = "0123456789abcdef";
+      const unsigned char c1 = static_cast<unsigned char>(text[++i]);
+      out += "\\u00";
+      out += hex[c1 >> 4];
+      out += hex[c1 & 15];
+      continue;
+    }
     if (c < 0x20 || c == 0x7f) {
       static const char* hex = "0123456789abcdef";
       out += "\\x";

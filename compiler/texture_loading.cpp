@@ -25,7 +25,7 @@ TextureLoadResult loadTextureSampler(const std::vector<TextureDecl>& textures) {
     } else {
       reason = "unknown generator '" + decl.generator + "'";
     }
-    if (!image) return {std::nullopt, decl.name, reason, decl.pointer};
+    if (!image) return {std::nullopt, decl.name, reason, decl.file.empty() ? decl.pointer : decl.pointer + "/file"};
     sampler.images.push_back(std::move(*image));
     sampler.states.push_back(decl.sampler);
   }

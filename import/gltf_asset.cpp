@@ -12,6 +12,7 @@
 #include "import/node_hierarchy.hpp"
 #include "nodes/image_file.hpp"
 #include "nodes/png_header.hpp"
+#include "nodes/regular_file.hpp"
 
 namespace wg::gltf {
 
@@ -94,7 +95,7 @@ bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std:
 bool fileExists(const std::string& path, void* user) {
   auto& ctx = *static_cast<LoadContext*>(user);
   return !confinedPath(ctx.folder, std::filesystem::path(path).lexically_relative(ctx.folder).string()).empty() &&
-         std::filesystem::is_regular_file(path);
+         inspectRegularFile(path).status == FileReadStatus::Ok;
 }
 
 std::string expandPath(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
@@ -239,7 +240,7 @@ std::optional<Asset> loadAsset(const std::string& path, DiagnosticList& diags) {
   std::vector<std::uint8_t> bytes;
   if (std::string e = readWholeFile(path, bytes); !e.empty()) {
     diags.report(DiagCode::FileUnreadable, {path, "", 0, 0},
-                 {quoteUserText(path), std::filesystem::exists(path) ? e : "no such file", "pass the path of a .gltf or .glb file"});
+                 {quoteUserText(path), e, "pass the path of a .gltf or .glb file"});
     return std::nullopt;
   }
   std::filesystem::path folder = std::filesystem::absolute(path).parent_path();

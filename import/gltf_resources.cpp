@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "compiler/literal.hpp"
-#include "compiler/regular_file.hpp"
+#include "nodes/regular_file.hpp"
 
 namespace wg::gltf {
 

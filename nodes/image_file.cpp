@@ -1,6 +1,7 @@
 #include "nodes/image_file.hpp"
 
 #include "nodes/png_header.hpp"
+#include "nodes/regular_file.hpp"
 
 #include <stb_image.h>
 
@@ -106,10 +107,9 @@ std::optional<ImageFileStatus> checkPngHeader(const std::vector<unsigned char>& 
 ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
                                std::string& error) {
   width = height = 0;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    error = std::filesystem::exists(path, ec) ? "not a regular file" : "file not found";
-    return ImageFileStatus::NotFound;
+  if (FileRead kind = inspectRegularFile(path); kind.status != FileReadStatus::Ok) {
+    error = kind.status == FileReadStatus::NotFound ? "file not found" : kind.reason;
+    return kind.status == FileReadStatus::NotFound ? ImageFileStatus::NotFound : ImageFileStatus::Unsupported;
   }
   const std::vector<unsigned char> head = readHead(path);
   const Format format = detectFormat(path, head);

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "compiler/json_document.hpp"
+#include "compiler/literal.hpp"
 #include "nodes/image_file.hpp"
 #include "runtime/material_compile_error.hpp"
 #include "nodes/texture_generators.hpp"
@@ -23,7 +25,14 @@ Image textureImage(const vk::ReflectedTexture& t, const std::string& graphPath) 
     std::string path = (std::filesystem::path(graphPath).parent_path() / source.at("file").get<std::string>()).string();
     std::string error;
     auto image = loadImageFile(path, error);
-    if (!image) throw std::runtime_error("texture '" + t.name + "': file '" + path + "': " + error);
+    if (!image) {
+      // The file changed since the compile read it (or a truncated image decodes only
+      // now): bad input, reported as the compiler would.
+      DiagnosticList diagnostics;
+      diagnostics.report(DiagCode::TextureUnsupported, {graphPath, appendPointer(appendPointer("/textures", t.name), "file"), 0, 0},
+                         {quoteUserText(t.name), "file '" + quoteUserText(path) + "': " + quoteUserText(error), "use a PNG, JPEG, TGA or BMP image"});
+      throw MaterialCompileError(graphPath, diagnostics.items());
+    }
     return *image;
   }
   const GeneratorSpec* spec = findTextureGenerator(source.at("generator").get<std::string>());

@@ -21,8 +21,9 @@ SPECIAL = {
 # A shorter list for the other places a name can come from.
 FEW = ["space", "dollar", "hash", "colon", "newline", "tab", "injection"]
 
-# Known bugs (issue 16 item 1, "escape or reject every character that Make or Ninja
-# treat specially"), each kept as an expected failure below:
+# Names that make or Ninja misread (issue 16 item 1, "escape or reject every character
+# that Make or Ninja treat specially"). These were bugs, now refused before anything is
+# written; the cases stay as regressions:
 # * a backslash is written doubled (`a\b.png` as `a\\b.png`): GNU make stops with "No
 #   rule to make target 'a\\b.png'" and Ninja reads `a\\b.png`, a file that does not
 #   exist, so the output is never clean. Both read a backslash literally unless it
@@ -102,18 +103,16 @@ class SpecialNames(DepfileCase):
                 self.texture_case(key)
                 self.clear()
 
-    @unittest.expectedFailure
     def test_names_that_make_or_ninja_misread(self):
         for key in KNOWN_BAD:
             with self.subTest(key):
                 self.texture_case(key)
                 self.clear()
 
-    # Bug (issue 16 item 1): the red team's newline injection is refused, but a ';' is
+    # Fixed (issue 16 item 1), kept as a regression: the red team's newline injection is refused, but a ';' is
     # written raw. With the texture `g.json;touch${IFS}PWNED;.png`, the depfile's rule
     # line reads `OUTPUTS: g.json g.json;touch$${IFS}PWNED;.png`, and the next `make`
     # that finds the outputs out of date runs `touch ${IFS}PWNED` as their recipe.
-    @unittest.expectedFailure
     def test_make_recipe_injection_through_a_semicolon(self):
         if not self.make:
             self.skipTest("no GNU make")
@@ -173,16 +172,14 @@ class DepfilePlaces(HostileCase):
                 self.failsUnchanged(["compile", self.graph, "-o", self.path("out"), "--target", "glsl",
                                      "--depfile", depfile], 2)
 
-    # Bug (issue 16 item 5): `--depfile OUT/g.frag.glsl`, one of the run's own outputs,
+    # Fixed (issue 16 item 5), kept as a regression: `--depfile OUT/g.frag.glsl`, one of the run's own outputs,
     # exits 0 and the depfile replaces the shader. The depfile must not be an output.
-    @unittest.expectedFailure
     def test_a_depfile_naming_one_of_the_outputs(self):
         self.failsUnchanged(["compile", self.graph, "-o", self.path("out"), "--target", "glsl",
                              "--depfile", self.path("out", "g.frag.glsl")], 2)
 
-    # Bug: `--depfile ''` (an unset build variable) is accepted and silently writes no
+    # Fixed, kept as a regression: `--depfile ''` (an unset build variable) is accepted and silently writes no
     # depfile; `-o ''` is a usage error, and so should this be.
-    @unittest.expectedFailure
     def test_an_empty_depfile_name(self):
         self.failsUnchanged(["compile", self.graph, "-o", self.path("out"), "--target", "glsl", "--depfile", ""], 2)
 

@@ -50,10 +50,9 @@ class AbsolutePaths(HostileCase):
         refl = self.reflection("g", self.path("out"))
         self.assertIn("../textures/ok.png", list(strings(refl)))
 
-    # Bug (issue 16 item 14): a library included by absolute path has its own image
+    # Fixed (issue 16 item 14), kept as a regression: a library included by absolute path has its own image
     # (relative to the library) recorded as an absolute path in NAME.reflect.json;
     # docs/graph-format.md says a library's images are reported relative to the graph.
-    @unittest.expectedFailure
     def test_an_absolute_library_with_its_own_image(self):
         lib = hs.library()
         lib["textures"] = {"t": {"file": "../textures/ok.png"}}

@@ -30,18 +30,16 @@ class Images(HostileCase):
 
     # compile reads only an image's header, so a PNG cut inside its pixel data compiles;
     # the commands that decode the pixels must report it as an input error.
-    # Bug (issue 16 item 10): eval reports "WG3003: texture 't': cannot decode image: IDA
-    # [/]" with neither the image file nor a line and pointer.
-    @unittest.expectedFailure
+    # Fixed (issue 16 item 10), kept as a regression: eval reported "WG3003: texture 't':
+    # cannot decode image: IDA [/]" with neither the image file nor a pointer.
     def test_eval_of_a_truncated_png_names_the_image_with_a_pointer(self):
         self.write("cut.png", hs.png_bytes(8, 8)[:40])
         graph = self.write("g.json", hs.texture_graph("cut.png"))
         self.failsUnchanged(["eval", graph], 1, "cut.png", "/textures/t/file")
 
-    # Bug (issue 16 item 12): `render --material` with a PNG cut inside its pixel data
+    # Fixed (issue 16 item 12), kept as a regression: `render --material` with a PNG cut inside its pixel data
     # exits 3 ("weathergen: error: texture 't': cannot decode image: IDA"): the decode
     # failure is a user's input error, exit 1.
-    @unittest.expectedFailure
     def test_render_of_a_truncated_png_is_an_input_error(self):
         self.write("cut.png", hs.png_bytes(8, 8)[:40])
         graph = self.write("g.json", hs.texture_graph("cut.png"))
