@@ -16,7 +16,7 @@
 #include "compiler/content_hash.hpp"
 #include "compiler/graph_loader.hpp"
 #include "compiler/literal.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "compiler/texture_loading.hpp"
 
 namespace wg {
@@ -233,7 +233,7 @@ int runEvalCommand(int argc, char** argv) {
   TextureLoadResult textures = loadTextureSampler(ir->textures);
   if (!textures.sampler) {
     DiagnosticList list;
-    list.report(DiagCode::TextureUnsupported, {o.graph, textures.pointer, 0, 0},
+    list.report(DiagCode::TextureUnsupported, locateInJsonFile(o.graph, textures.pointer),
                 {quoteUserText(textures.texture), quoteUserText(textures.reason), "check the texture's source"});
     printDiagnostics(list.items(), o.json);
     return kExitBadInput;

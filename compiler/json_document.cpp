@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "nodes/regular_file.hpp"
+
 namespace wg {
 
 std::string appendPointer(const std::string& pointer, std::string_view token) {
@@ -338,6 +340,14 @@ SourceLocation JsonDocument::locate(const std::string& pointer) const {
     if (slash == std::string::npos) return {file_, pointer, 1, 1};
     p.resize(slash);
   }
+}
+
+SourceLocation locateInJsonFile(const std::string& path, const std::string& pointer) {
+  std::string text;
+  if (readRegularFile(path, JsonLimits{}.maxBytes, text).status != FileReadStatus::Ok) return {path, pointer, 0, 0};
+  DiagnosticList ignored;
+  auto document = parseJsonDocument(path, std::move(text), ignored);
+  return document ? document->locate(pointer) : SourceLocation{path, pointer, 0, 0};
 }
 
 std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text,

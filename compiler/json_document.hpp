@@ -55,6 +55,11 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
                                               DiagnosticList& diagnostics,
                                               const JsonLimits& limits = {});
 
+// Where `pointer` is in the JSON file at `path`, read again (within the graph limits):
+// for errors found after the document is gone, such as an image that fails to decode.
+// Without a readable, valid file the location has the path and pointer only.
+SourceLocation locateInJsonFile(const std::string& path, const std::string& pointer);
+
 // Appends one RFC 6901 reference token to a pointer ("~" -> "~0", "/" -> "~1").
 std::string appendPointer(const std::string& pointer, std::string_view token);
 std::string appendPointer(const std::string& pointer, std::size_t index);

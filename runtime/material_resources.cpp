@@ -29,7 +29,8 @@ Image textureImage(const vk::ReflectedTexture& t, const std::string& graphPath) 
       // The file changed since the compile read it (or a truncated image decodes only
       // now): bad input, reported as the compiler would.
       DiagnosticList diagnostics;
-      diagnostics.report(DiagCode::TextureUnsupported, {graphPath, appendPointer(appendPointer("/textures", t.name), "file"), 0, 0},
+      diagnostics.report(DiagCode::TextureUnsupported,
+                         locateInJsonFile(graphPath, appendPointer(appendPointer("/textures", t.name), "file")),
                          {quoteUserText(t.name), "file '" + quoteUserText(path) + "': " + quoteUserText(error), "use a PNG, JPEG, TGA or BMP image"});
       throw MaterialCompileError(graphPath, diagnostics.items());
     }
