@@ -2,10 +2,6 @@
 
 namespace wg {
 
-std::string_view languageName(ShaderLanguage language) {
-  return language == ShaderLanguage::Glsl ? "glsl" : "hlsl";
-}
-
 std::string ShaderSyntax::constant(const Value& value) const {
   if (value.type == ValueType::Bool) return value.asBool() ? "true" : "false";
   if (value.width() == 1) return formatFloat(value.v[0]);

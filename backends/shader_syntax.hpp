@@ -8,11 +8,9 @@
 #include "compiler/material_interface.hpp"
 #include "compiler/pbr_output.hpp"
 #include "nodes/op_definition.hpp"
+#include "nodes/shader_stage.hpp"
 
 namespace wg {
-
-enum class ShaderLanguage : std::uint8_t { Glsl, Hlsl };
-std::string_view languageName(ShaderLanguage language);  // "glsl" / "hlsl"
 
 // A colour the fragment stage can show instead of the lit result (frame_debugView).
 struct DebugView {

@@ -5,7 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_common.hpp"
-#include "compiler/batch_compile.hpp"
+#include "driver/batch_compile.hpp"
 
 namespace {
 

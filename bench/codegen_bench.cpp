@@ -5,7 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_common.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace {
 

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "bench/bench_common.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "nodes/op_registry.hpp"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/synthetic_graph.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include "cli/material_outputs.hpp"
 #include "cli/variant_plan.hpp"
 #include "compiler/variant_index.hpp"
-#include "compiler/batch_compile.hpp"
+#include "driver/batch_compile.hpp"
 #include "cli/depfile.hpp"
 #include "cli/staged_directory.hpp"
 #include "compiler/material_input_files.hpp"
@@ -26,7 +26,7 @@
 #include "cli/diagnostic_output.hpp"
 #include "cli/ir_dump.hpp"
 #include "compiler/literal.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "compiler/weather_config.hpp"
 
 namespace wg {

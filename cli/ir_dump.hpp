@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/batch_compile.hpp"
+#include "driver/batch_compile.hpp"
 
 namespace wg {
 

@@ -3,7 +3,7 @@
 #include <map>
 #include <string>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace wg {
 

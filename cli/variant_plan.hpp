@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/batch_compile.hpp"
+#include "driver/batch_compile.hpp"
 #include "compiler/static_switches.hpp"
 
 namespace wg {

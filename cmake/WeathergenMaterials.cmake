@@ -21,7 +21,7 @@ cmake_policy(PUSH)
 cmake_policy(SET CMP0116 NEW)
 
 # The material NAME from the graph's "name", made file-safe the way the compiler does
-# (compiler/material_compiler.cpp, fileStemFor): [A-Za-z0-9_-] kept, others '_', 64 bytes.
+# (driver/material_compiler.cpp, fileStemFor): [A-Za-z0-9_-] kept, others '_', 64 bytes.
 function(_weathergen_material_stem graph out_var)
   file(READ "${graph}" text)
   string(JSON name ERROR_VARIABLE json_error GET "${text}" name)

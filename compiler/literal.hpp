@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "compiler/value.hpp"
+#include "nodes/value.hpp"
 
 namespace wg {
 

@@ -10,7 +10,7 @@
 #include "compiler/alpha_mode.hpp"
 #include "compiler/json_document.hpp"
 #include "compiler/pbr_output.hpp"
-#include "compiler/value.hpp"
+#include "nodes/value.hpp"
 #include "nodes/texture_sampling.hpp"
 
 namespace wg {

@@ -4,7 +4,8 @@
 #include <optional>
 #include <string_view>
 
-#include "compiler/value.hpp"
+#include "nodes/shader_stage.hpp"
+#include "nodes/value.hpp"
 
 namespace wg {
 
@@ -20,8 +21,6 @@ enum class PbrField : std::uint8_t {
   WorldPositionOffset,  // vertex stage
 };
 inline constexpr std::size_t kPbrFieldCount = 9;
-
-enum class ShaderStage : std::uint8_t { Vertex, Fragment };
 
 struct PbrFieldInfo {
   PbrField field;

@@ -2,8 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "backends/shader_syntax.hpp"
 #include "compiler/debug_views.hpp"
+#include "nodes/shader_stage.hpp"
 #include "nodes/texture_sampling.hpp"
 
 namespace wg {

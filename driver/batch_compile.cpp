@@ -1,4 +1,4 @@
-#include "compiler/batch_compile.hpp"
+#include "driver/batch_compile.hpp"
 
 #include <atomic>
 #include <mutex>

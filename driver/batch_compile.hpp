@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace wg {
 

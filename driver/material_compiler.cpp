@@ -1,4 +1,4 @@
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 #include <exception>
 
 #include "backends/spirv/spirv_toolchain.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "compiler/material_interface.hpp"
 
 namespace weathergen {

@@ -3,7 +3,7 @@
 #pragma once
 #include <algorithm>
 
-#include "compiler/value.hpp"
+#include "nodes/value.hpp"
 
 namespace wg {
 

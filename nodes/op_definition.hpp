@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/value.hpp"
+#include "nodes/value.hpp"
 #include "nodes/frame_state.hpp"
 
 namespace wg {

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compiler/value.hpp"
+#include "nodes/value.hpp"
 
 namespace wg {
 

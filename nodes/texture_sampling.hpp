@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/value.hpp"
+#include "nodes/value.hpp"
 #include "nodes/texture_image.hpp"
 
 namespace wg {

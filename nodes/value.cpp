@@ -1,4 +1,4 @@
-#include "compiler/value.hpp"
+#include "nodes/value.hpp"
 
 #include <charconv>
 #include <cmath>

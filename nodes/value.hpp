@@ -3,7 +3,7 @@
 #include <array>
 #include <string>
 
-#include "compiler/value_type.hpp"
+#include "nodes/value_type.hpp"
 
 namespace wg {
 

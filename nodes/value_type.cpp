@@ -1,4 +1,4 @@
-#include "compiler/value_type.hpp"
+#include "nodes/value_type.hpp"
 
 #include <array>
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "runtime/vulkan/gpu_image.hpp"
 #include "runtime/vulkan/material_pipeline.hpp"
 

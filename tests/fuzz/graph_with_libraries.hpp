@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace wg::fuzz {
 

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "compiler/diagnostic_codes.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "import/gltf_asset.hpp"
 #include "import/model_geometry.hpp"
 #include "import/model_import.hpp"

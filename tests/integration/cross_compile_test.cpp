@@ -9,7 +9,7 @@
 #include <regex>
 #include <set>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "process_support.hpp"
 
 namespace wg {

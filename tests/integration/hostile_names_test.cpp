@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "process_support.hpp"
 
 namespace wg {

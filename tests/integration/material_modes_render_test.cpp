@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "compiler/debug_views.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "nodes/srgb_transfer.hpp"
 #include "render_support.hpp"
 #include "runtime/image/png_file.hpp"

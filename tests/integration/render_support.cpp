@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "compiler/debug_views.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "nodes/weather_model.hpp"
 #include "runtime/weather/frame_weather.hpp"
 

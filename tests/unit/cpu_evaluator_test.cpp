@@ -10,7 +10,7 @@
 #include <string>
 
 #include "compiler/cpu_evaluator.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "nodes/texture_generators.hpp"
 
 namespace wg {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "backends/spirv/cross_compile.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace wg {
 namespace {

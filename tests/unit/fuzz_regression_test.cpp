@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "tests/fuzz/cli_options_case.hpp"
 #include "tests/fuzz/graph_with_libraries.hpp"
 #include "tests/fuzz/timeline_case.hpp"

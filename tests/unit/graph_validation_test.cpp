@@ -2,7 +2,7 @@
 // found in review.
 #include <gtest/gtest.h>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "ir_fixture.hpp"
 
 namespace wg {

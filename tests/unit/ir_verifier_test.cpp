@@ -8,7 +8,7 @@
 
 #include "compiler/graph_loader.hpp"
 #include "compiler/ir_verifier.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "compiler/pass_pipeline.hpp"
 #include "ir_fixture.hpp"
 

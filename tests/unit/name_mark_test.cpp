@@ -7,7 +7,7 @@
 #include <set>
 
 #include "compiler/cpp_header.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace wg {
 namespace {

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace wg {
 namespace {

@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "compiler/constant_count.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "ir_fixture.hpp"
 #include "nodes/image_file.hpp"
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "compiler/static_switches.hpp"
 #include "tests/unit/ir_fixture.hpp"
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compiler/cpu_evaluator.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 
 namespace wg {
 namespace {

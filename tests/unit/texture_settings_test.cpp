@@ -10,7 +10,7 @@
 
 #include "compiler/content_hash.hpp"
 #include "compiler/cpu_evaluator.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "nodes/srgb_transfer.hpp"
 #include "runtime/image/png_file.hpp"
 

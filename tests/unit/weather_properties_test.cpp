@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "compiler/cpu_evaluator.hpp"
-#include "compiler/material_compiler.hpp"
+#include "driver/material_compiler.hpp"
 #include "runtime/weather/weather_simulation.hpp"
 
 namespace wg {
