@@ -330,16 +330,19 @@ int runCompileCommand(int argc, char** argv) {
     auto [it, inserted] = stemOwner.emplace(g.stem, g.graph);
     if (!inserted) {
       DiagnosticList list;
-      list.report(DiagCode::InvalidSetting, {g.graph, "/name", 0, 0},
-                  {"material '" + quoteUserText(g.variants.front()->name) + "' writes the same files as " + quoteUserText(it->second),
-                   "give each material in one batch a distinct name"});
+      list.report(DiagCode::OutputNameCollision, {g.graph, "/name", 0, 0},
+                  {quoteUserText(g.variants.front()->name), quoteUserText(it->second)});
       diagnostics.push_back(list.items().front());
     }
   }
-  bool failed = false;
-  for (const auto& d : diagnostics) failed = failed || d.info().severity == Severity::Error;
+  bool failed = false, badInput = false;
+  for (const auto& d : diagnostics) {
+    failed = failed || d.info().severity == Severity::Error;
+    badInput = badInput || (d.info().severity == Severity::Error && d.info().category == DiagCategory::Input);
+  }
   if (!diagnostics.empty()) printDiagnostics(diagnostics, o.json);
-  if (failed) return internal ? kExitInternal : kExitBadInput;
+  // Only a batch's colliding names (WG2020, usage) leave every graph valid on its own.
+  if (failed) return internal ? kExitInternal : badInput ? kExitBadInput : kExitUsage;
 
   // Every file is known before the first is written.
   std::vector<std::map<std::string, std::string>> filesOf;

@@ -234,7 +234,7 @@ int runEvalCommand(int argc, char** argv) {
   if (!textures.sampler) {
     DiagnosticList list;
     list.report(DiagCode::TextureUnsupported, locateInJsonFile(o.graph, textures.pointer),
-                {quoteUserText(textures.texture), quoteUserText(textures.reason), "check the texture's source"});
+                {quoteUserText(textures.texture), quoteUserText(textures.reason)});
     printDiagnostics(list.items(), o.json);
     return kExitBadInput;
   }

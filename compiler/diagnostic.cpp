@@ -3,22 +3,37 @@
 #include "compiler/literal.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 
 namespace wg {
 
-std::string fillTemplate(std::string_view pattern, std::initializer_list<std::string_view> args) {
+std::string fillTemplate(std::string_view pattern, std::initializer_list<std::string_view> args,
+                         std::string_view arguments) {
+  // The index of a named placeholder among the space-separated argument names.
+  auto indexOf = [&](std::string_view name) {
+    std::size_t index = 0, start = 0;
+    while (start < arguments.size()) {
+      std::size_t end = std::min(arguments.find(' ', start), arguments.size());
+      if (arguments.substr(start, end - start) == name) return index;
+      ++index;
+      start = end + 1;
+    }
+    return args.size();  // unknown: filled with nothing (the table check forbids it)
+  };
   std::string out;
   out.reserve(pattern.size() + 32);
   for (std::size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] == '{' && i + 2 < pattern.size() && pattern[i + 2] == '}' &&
-        pattern[i + 1] >= '0' && pattern[i + 1] <= '9') {
-      std::size_t index = static_cast<std::size_t>(pattern[i + 1] - '0');
-      if (index < args.size()) out += *(args.begin() + index);
-      i += 2;
-    } else {
+    std::size_t end = pattern[i] == '{' ? pattern.find('}', i) : std::string_view::npos;
+    if (end == std::string_view::npos || end == i + 1) {
       out += pattern[i];
+      continue;
     }
+    std::string_view name = pattern.substr(i + 1, end - i - 1);
+    std::size_t index = name.size() == 1 && name[0] >= '0' && name[0] <= '9' ? static_cast<std::size_t>(name[0] - '0')
+                                                                             : indexOf(name);
+    if (index < args.size()) out += *(args.begin() + index);
+    i = end;
   }
   return out;
 }
@@ -26,8 +41,13 @@ std::string fillTemplate(std::string_view pattern, std::initializer_list<std::st
 Diagnostic& DiagnosticList::report(DiagCode code, SourceLocation location,
                                    std::initializer_list<std::string_view> args) {
   const auto& info = diagnosticInfo(code);
-  items_.push_back({code, std::move(location), fillTemplate(info.messageTemplate, args),
-                    fillTemplate(info.hintTemplate, args)});
+#ifndef NDEBUG
+  if (!info.arguments.empty() && args.size() != diagnosticArgumentCount(info))
+    throw std::logic_error(std::string(info.id) + " takes " + std::to_string(diagnosticArgumentCount(info)) +
+                           " values (" + std::string(info.arguments) + "), not " + std::to_string(args.size()));
+#endif
+  items_.push_back({code, std::move(location), fillTemplate(info.messageTemplate, args, info.arguments),
+                    fillTemplate(info.hintTemplate, args, info.arguments)});
   return items_.back();
 }
 

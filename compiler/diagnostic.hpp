@@ -26,12 +26,16 @@ struct Diagnostic {
   const DiagnosticInfo& info() const { return diagnosticInfo(code); }
 };
 
-// Fills "{0}".."{9}" in a template from args.
-std::string fillTemplate(std::string_view pattern, std::initializer_list<std::string_view> args);
+// Fills a template from args: "{0}".."{9}" by position, and "{name}" by the name's
+// position in `arguments` (a table row's space-separated argument names).
+std::string fillTemplate(std::string_view pattern, std::initializer_list<std::string_view> args,
+                         std::string_view arguments = {});
 
 class DiagnosticList {
  public:
-  // Renders message and hint from the table; args fill both templates.
+  // Renders message and hint from the table; args fill both templates, in the order of
+  // the row's named arguments (diagnostic_codes.cpp). A debug build throws
+  // std::logic_error when a row with named arguments gets a different number of values.
   Diagnostic& report(DiagCode code, SourceLocation location,
                      std::initializer_list<std::string_view> args = {});
   void append(const DiagnosticList& other);

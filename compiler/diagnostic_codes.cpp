@@ -1,5 +1,6 @@
 #include "compiler/diagnostic_codes.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace wg {
@@ -48,16 +49,40 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
     {UnknownParameter, "WG2012", E, In, "unknown-parameter", "parameter '{0}' is not declared",
      "{1}"},
     {InvalidParameter, "WG2013", E, In, "invalid-parameter", "parameter '{0}': {1}", "{2}"},
-    {InvalidSetting, "WG2014", E, In, "invalid-setting", "{0}", "{1}"},
+    {InvalidSetting, "WG2014", E, In, "invalid-setting", "{problem}", "{fix}", "problem fix"},
     {UnknownSwitch, "WG2015", E, In, "unknown-switch", "switch '{0}' is not declared", "{1}"},
-    {InvalidSwitch, "WG2016", E, In, "invalid-switch", "switch '{0}': {1}", "{2}"},
+    {InvalidSwitch, "WG2016", E, In, "invalid-switch", "switch '{switch}': {problem}", "{fix}", "switch problem fix"},
+    {UnknownSwitchValue, "WG2017", E, In, "unknown-switch-value", "switch '{switch}' has no value {value}",
+     "use one of: {values}", "switch value values"},
+    {SwitchCasesMismatch, "WG2018", E, In, "switch-cases-mismatch", "switch node '{node}' {problem}",
+     "give one case for each value of switch '{switch}': {values}", "node problem switch values"},
+    {EmptyName, "WG2019", E, In, "empty-name", "the {what} is empty", "write a non-empty {what}", "what"},
+    {OutputNameCollision, "WG2020", E, Use, "output-name-collision",
+     "material '{material}' writes the same files as {other}", "give each material in one batch a distinct name",
+     "material other"},
     {UnknownTexture, "WG3001", E, In, "unknown-texture", "texture '{0}' is not declared",
      "{1}"},
     {TextureFileMissing, "WG3002", E, In, "texture-file-missing",
      "texture '{0}': file '{1}' not found", "paths are relative to the graph file"},
-    {TextureUnsupported, "WG3003", E, In, "texture-unsupported", "texture '{0}': {1}", "{2}"},
+    {TextureUnsupported, "WG3003", E, In, "texture-unsupported", "texture '{texture}': {reason}",
+     "use a PNG, JPEG, TGA or BMP image", "texture reason"},
+    {DuplicateTexture, "WG3004", E, In, "duplicate-texture", "texture '{texture}' is also declared at {other}",
+     "rename one of them", "texture other"},
+    {TextureSourceConflict, "WG3005", E, In, "texture-source-conflict", "texture '{texture}' sets {what}",
+     "give exactly one source: an image 'file' or a procedural 'generator'", "texture what"},
+    {InvalidSamplerSetting, "WG3006", E, In, "invalid-sampler-setting", "texture '{texture}': {problem}", "{fix}",
+     "texture problem fix"},
+    {UnknownGenerator, "WG3007", E, In, "unknown-generator", "texture '{texture}': unknown generator '{generator}'",
+     "{suggestion}", "texture generator suggestion"},
+    {InvalidGeneratorOption, "WG3008", E, In, "invalid-generator-option", "texture '{texture}': {problem}",
+     "see 'weathergen list-generators' for each generator's options, seed and size", "texture problem"},
     {UnknownWeatherPreset, "WG4001", E, In, "unknown-weather-preset", "unknown weather preset '{0}'", "{1}"},
-    {InvalidWeatherSetting, "WG4002", E, In, "invalid-weather-setting", "{0}", "{1}"},
+    {InvalidWeatherSetting, "WG4002", E, In, "invalid-weather-setting", "{problem}", "{fix}", "problem fix"},
+    {InvalidWeatherEffect, "WG4003", E, In, "invalid-weather-effect", "weather effect '{effect}': {problem}", "{fix}",
+     "effect problem fix"},
+    {ReservedParameterPrefix, "WG4004", E, In, "reserved-parameter-prefix",
+     "parameter '{parameter}' uses the prefix 'weather.', which the weather pass reserves", "rename the parameter",
+     "parameter"},
     {GltfContainer, "WG5001", E, In, "gltf-container", "not a readable glTF 2.0 file: {0}", "{1}"},
     {GltfSchema, "WG5002", E, In, "gltf-schema", "{0} must be {1}, not {2}",
      "see the glTF 2.0 schema for this property; re-export the model or fix the file"},
@@ -89,7 +114,96 @@ constexpr bool tableMatchesEnum() {
   return true;
 }
 static_assert(tableMatchesEnum(), "kTable rows must follow DiagCode order");
+
+constexpr bool isDigit(char c) { return c >= '0' && c <= '9'; }
+constexpr bool isNameChar(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || isDigit(c) || c == '_'; }
+
+// Calls f(placeholder) for each "{...}" in pattern; false if a brace is unbalanced.
+template <class F>
+constexpr bool forEachPlaceholder(std::string_view pattern, F&& f) {
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] == '}') return false;
+    if (pattern[i] != '{') continue;
+    std::size_t end = pattern.find('}', i);
+    if (end == std::string_view::npos || end == i + 1) return false;
+    std::string_view name = pattern.substr(i + 1, end - i - 1);
+    for (char c : name)
+      if (!isNameChar(c)) return false;
+    if (!f(name)) return false;
+    i = end;
+  }
+  return true;
+}
+
+// Calls f(name) for each space-separated name in arguments.
+template <class F>
+constexpr void forEachArgument(std::string_view arguments, F&& f) {
+  std::size_t start = 0;
+  while (start < arguments.size()) {
+    std::size_t end = arguments.find(' ', start);
+    if (end == std::string_view::npos) end = arguments.size();
+    if (end > start) f(arguments.substr(start, end - start));
+    start = end + 1;
+  }
+}
+
+constexpr std::string_view checkRow(const DiagnosticInfo& info) {
+  const bool named = !info.arguments.empty();
+  bool legacyOk = true, namedOk = true;
+  auto declared = [&](std::string_view name) {
+    bool found = false;
+    forEachArgument(info.arguments, [&](std::string_view a) { found = found || a == name; });
+    return found;
+  };
+  auto check = [&](std::string_view name) {
+    if (!named) return legacyOk = name.size() == 1 && isDigit(name[0]);
+    return namedOk = !isDigit(name[0]) && declared(name);
+  };
+  if (!forEachPlaceholder(info.messageTemplate, check) || !forEachPlaceholder(info.hintTemplate, check)) {
+    if (!legacyOk) return "a row without named arguments uses a placeholder other than {0}..{9}";
+    if (!namedOk) return "a template uses a placeholder that is not among the row's arguments";
+    return "a template has an unbalanced or empty brace";
+  }
+  bool allUsed = true, unique = true;
+  std::size_t index = 0;
+  forEachArgument(info.arguments, [&](std::string_view a) {
+    bool used = false;
+    forEachPlaceholder(info.messageTemplate, [&](std::string_view p) { used = used || p == a; return true; });
+    forEachPlaceholder(info.hintTemplate, [&](std::string_view p) { used = used || p == a; return true; });
+    allUsed = allUsed && used;
+    std::size_t other = 0;
+    forEachArgument(info.arguments, [&](std::string_view b) { unique = unique && (other++ == index || a != b); });
+    ++index;
+  });
+  if (!allUsed) return "an argument is used by neither template";
+  if (!unique) return "an argument is named twice";
+  return "";
+}
+
+constexpr bool tableTemplatesAgree() {
+  for (const auto& row : kTable)
+    if (!checkRow(row).empty()) return false;
+  return true;
+}
+static_assert(tableTemplatesAgree(), "a row's templates and arguments disagree: see checkDiagnosticRow");
 }  // namespace
+
+std::string_view checkDiagnosticRow(const DiagnosticInfo& info) { return checkRow(info); }
+
+std::size_t diagnosticArgumentCount(const DiagnosticInfo& info) {
+  std::size_t count = 0;
+  if (!info.arguments.empty()) {
+    forEachArgument(info.arguments, [&](std::string_view) { ++count; });
+    return count;
+  }
+  auto highest = [&](std::string_view p) {
+    if (p.size() == 1 && isDigit(p[0])) count = std::max<std::size_t>(count, static_cast<std::size_t>(p[0] - '0') + 1);
+    return true;
+  };
+  forEachPlaceholder(info.messageTemplate, highest);
+  forEachPlaceholder(info.hintTemplate, highest);
+  return count;
+}
 
 const DiagnosticInfo& diagnosticInfo(DiagCode code) { return kTable[static_cast<std::size_t>(code)]; }
 

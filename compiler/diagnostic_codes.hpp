@@ -1,6 +1,7 @@
 // The one table of diagnostics: stable code, severity, category, message and hint
 // templates. Tests check codes, never wording. docs/diagnostics.md lists the same table.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -38,11 +39,22 @@ enum class DiagCode : std::uint16_t {
   InvalidSetting,
   UnknownSwitch,
   InvalidSwitch,
+  UnknownSwitchValue,
+  SwitchCasesMismatch,
+  EmptyName,
+  OutputNameCollision,
   UnknownTexture,
   TextureFileMissing,
   TextureUnsupported,
+  DuplicateTexture,
+  TextureSourceConflict,
+  InvalidSamplerSetting,
+  UnknownGenerator,
+  InvalidGeneratorOption,
   UnknownWeatherPreset,
   InvalidWeatherSetting,
+  InvalidWeatherEffect,
+  ReservedParameterPrefix,
   GltfContainer,
   GltfSchema,
   GltfBadReference,
@@ -66,9 +78,20 @@ struct DiagnosticInfo {
   Severity severity;
   DiagCategory category;
   std::string_view name;             // kebab-case summary
-  std::string_view messageTemplate;  // {0}, {1}... are filled by the reporter
+  std::string_view messageTemplate;  // {name} placeholders (or legacy {0}, {1}...)
   std::string_view hintTemplate;
+  // The named arguments, space-separated, in the order report() takes them:
+  // "texture reason" means report(code, at, {textureValue, reasonValue}). Empty for a
+  // row still on positional {0}..{9} placeholders. A static check over the table keeps
+  // the names and the templates in step; report() checks the count.
+  std::string_view arguments = {};
 };
+
+// How many values report() takes for this row: the named arguments, or for a legacy
+// row the highest {N} + 1.
+std::size_t diagnosticArgumentCount(const DiagnosticInfo& info);
+// "" when the row's templates and arguments agree; otherwise what is wrong.
+std::string_view checkDiagnosticRow(const DiagnosticInfo& info);
 
 const DiagnosticInfo& diagnosticInfo(DiagCode code);
 std::span<const DiagnosticInfo> allDiagnostics();

@@ -86,7 +86,7 @@ class Loader {
     graph_.sourceFile = doc_.file();
     if (auto* name = required(root, "", "name", nlohmann::json::value_t::string, "a string")) {
       graph_.name = name->get<std::string>();
-      if (graph_.name.empty()) report(DiagCode::InvalidSetting, "/name", {"the material name is empty", "give the material a name"});
+      if (graph_.name.empty()) report(DiagCode::EmptyName, "/name", {"material name"});
     }
     loadDeclarations(root);
     if (root.contains("include") && expectKind(root["include"], "/include", nlohmann::json::value_t::object, "'include'", "an object") &&
@@ -251,8 +251,9 @@ class Loader {
                {quoteUserText(graph_.parameters[i].name), "it is also declared at " + graph_.parameters[i - 1].pointer, "rename one of them"});
     for (std::size_t i = 1; i < graph_.textures.size(); ++i)
       if (graph_.textures[i].name == graph_.textures[i - 1].name)
-        report(DiagCode::TextureUnsupported, graph_.textures[i].pointer,
-               {quoteUserText(graph_.textures[i].name), "it is also declared at " + graph_.textures[i - 1].pointer, "rename one of them"});
+        // Reported where the graph declares it (loaded before any library): the name to change.
+        report(DiagCode::DuplicateTexture, graph_.textures[i - 1].pointer,
+               {quoteUserText(graph_.textures[i].name), graph_.textures[i].pointer});
   }
 
   Diagnostic& report(DiagCode code, const std::string& pointer, std::initializer_list<std::string_view> args) {
@@ -382,13 +383,12 @@ class Loader {
     t.name = scope_.names + name;
     t.pointer = pointer;
     if (name.empty())
-      report(DiagCode::TextureUnsupported, pointer, {shown, "the texture name is empty", "give the texture a name"});
+      report(DiagCode::EmptyName, pointer, {"texture name"});
     bool hasFile = j.contains("file"), hasGenerator = j.contains("generator");
     if (!loadSamplerState(j, pointer, shown, hasGenerator && !hasFile, doc_, diags_, t.sampler)) failed_ = true;
     if (hasFile == hasGenerator) {
-      report(DiagCode::TextureUnsupported, pointer,
-             {shown, hasFile ? "both 'file' and 'generator' are set" : "neither 'file' nor 'generator' is set",
-              "give exactly one source: an image 'file' or a procedural 'generator'"});
+      report(DiagCode::TextureSourceConflict, pointer,
+             {shown, hasFile ? "both 'file' and 'generator'" : "neither 'file' nor 'generator'"});
       return;
     }
     if (hasFile) {
@@ -397,8 +397,8 @@ class Loader {
       if (!file) return;
       if (file->get<std::string>().find('\0') != std::string::npos) {
         // The file system would read only up to the NUL: a different file than written.
-        report(DiagCode::TextureUnsupported, appendPointer(pointer, "file"),
-               {shown, "the file path holds a NUL character", "remove the \\u0000 from the path"});
+        report(DiagCode::FileUnreadable, appendPointer(pointer, "file"),
+               {quoteUserText(file->get<std::string>()), "the path holds a NUL character", "remove the \\u0000 from the path"});
         return;
       }
       // A library's file is reported relative to the including graph, like the graph's own.
@@ -413,7 +413,7 @@ class Loader {
           return;
         case ImageFileStatus::Unsupported:
           report(DiagCode::TextureUnsupported, appendPointer(pointer, "file"),
-                 {shown, "file '" + quoteUserText(t.file) + "': " + quoteUserText(error), "use a PNG, JPEG, TGA or BMP image"});
+                 {shown, "file '" + quoteUserText(t.file) + "': " + quoteUserText(error)});
           return;
         case ImageFileStatus::TooLarge:
           report(DiagCode::ResourceLimit, appendPointer(pointer, "file"),
@@ -430,23 +430,22 @@ class Loader {
         std::vector<std::string_view> names;
         for (const auto& g : textureGenerators()) names.push_back(g.name);
         std::string hint = unknownNameHint(t.generator, names, "built-in generators");
-        report(DiagCode::TextureUnsupported, appendPointer(pointer, "generator"),
-               {shown, "unknown generator '" + quoteUserText(t.generator) + "'", hint});
+        report(DiagCode::UnknownGenerator, appendPointer(pointer, "generator"), {shown, quoteUserText(t.generator), hint});
         return;
       }
       if (j.contains("seed")) {
         auto seed = integralValue(j["seed"]);
         if (!seed || *seed < 0 || *seed > 0xFFFFFFFFll)
-          report(DiagCode::TextureUnsupported, appendPointer(pointer, "seed"),
-                 {shown, "the seed must be an integer in [0, 4294967295]", "use a whole number"});
+          report(DiagCode::InvalidGeneratorOption, appendPointer(pointer, "seed"),
+                 {shown, "the seed must be a whole number in [0, 4294967295]"});
         else
           t.seed = static_cast<std::uint32_t>(*seed);
       }
       if (j.contains("size")) {
         std::int64_t n = integralValue(j["size"]).value_or(0);
         if (n < kMinTextureSize || n > kMaxTextureSize || (n & (n - 1)) != 0)
-          report(DiagCode::TextureUnsupported, appendPointer(pointer, "size"),
-                 {shown, "size must be a power of two from 16 to 2048", "use 64, 128, 256, 512, 1024 or 2048"});
+          report(DiagCode::InvalidGeneratorOption, appendPointer(pointer, "size"),
+                 {shown, "size must be a power of two from 16 to 2048"});
         else
           t.size = static_cast<int>(n);
       }
@@ -458,7 +457,7 @@ class Loader {
       std::string error = validateGeneratorOptions(*spec, options);
       if (!error.empty())
         // Our own message (it may quote a user's option name, hence the escaping).
-        report(DiagCode::TextureUnsupported, pointer, {shown, quoteUserText(error, 400), "see 'weathergen list-generators'"});
+        report(DiagCode::InvalidGeneratorOption, pointer, {shown, quoteUserText(error, 400)});
       t.options = std::move(options);
     }
     graph_.textures.push_back(std::move(t));
@@ -487,7 +486,7 @@ class Loader {
     if (!id || !op) return;
     n.id = scope_.names + id->get<std::string>();
     n.op = op->get<std::string>();
-    if (id->get<std::string>().empty()) report(DiagCode::InvalidSetting, appendPointer(pointer, "id"), {"the node id is empty", "give the node an id"});
+    if (id->get<std::string>().empty()) report(DiagCode::EmptyName, appendPointer(pointer, "id"), {"node id"});
     if (auto* param = optionalString(j, pointer, "param")) n.param = scope_.names + param->get<std::string>();
     if (n.op == kSwitchOp) {
       loadSwitchNode(j, n);

@@ -472,9 +472,7 @@ class Builder {
     if (!config->active()) return;
     for (const auto& p : graph_.parameters)
       if (p.name.starts_with("weather."))
-        report(DiagCode::InvalidWeatherSetting, p.pointer,
-               {"parameter '" + quoteUserText(p.name) + "' uses the prefix 'weather.', which the weather pass reserves",
-                "rename the parameter"});
+        report(DiagCode::ReservedParameterPrefix, p.pointer, {quoteUserText(p.name)});
   }
 
   const MaterialGraph& graph_;

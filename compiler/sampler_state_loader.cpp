@@ -25,7 +25,7 @@ class SamplerStateLoader {
       return;
     }
     if (j.size() != 2) {
-      report(DiagCode::TextureUnsupported, at,
+      report(DiagCode::InvalidSamplerSetting, at,
              {shown_, "'wrap' lists " + std::to_string(j.size()) + (j.size() == 1 ? " mode" : " modes"),
               "give one mode, or two as [u, v]: [\"repeat\", \"clamp\"]"});
       return;
@@ -63,7 +63,7 @@ class SamplerStateLoader {
     const std::string at = appendPointer(pointer_, "colorSpace");
     auto space = choice(j, at, "colour space", "srgb or linear", parseColorSpace);
     if (space && procedural && *space == ColorSpace::Srgb)
-      report(DiagCode::TextureUnsupported, at,
+      report(DiagCode::InvalidSamplerSetting, at,
              {shown_, "a procedural texture cannot be sRGB", "generators make linear values; colorSpace srgb is for image files"});
     else if (space)
       state.colorSpace = *space;
@@ -87,7 +87,7 @@ class SamplerStateLoader {
     }
     auto value = parse(j.get<std::string>());
     if (!value)
-      report(DiagCode::TextureUnsupported, at,
+      report(DiagCode::InvalidSamplerSetting, at,
              {shown_, "unknown " + noun + " '" + quoteUserText(j.get<std::string>()) + "'", "use " + std::string(choices)});
     return value;
   }

@@ -63,8 +63,7 @@ class SwitchResolver {
         continue;
       }
       if (std::find(s->values.begin(), s->values.end(), value) == s->values.end()) {
-        report(DiagCode::InvalidSwitch, s->pointer,
-               {quoteUserText(name), "'" + quoteUserText(value) + "' is not one of its values", "use one of: " + listNames(s->values)});
+        report(DiagCode::UnknownSwitchValue, s->pointer, {quoteUserText(name), "'" + quoteUserText(value) + "'", listNames(s->values)});
         continue;
       }
       values_[name] = value;
@@ -97,15 +96,14 @@ class SwitchResolver {
     std::string shown = quoteUserText(s.name);
     for (const auto& [value, source] : n.cases)
       if (std::find(s.values.begin(), s.values.end(), value) == s.values.end())
-        report(DiagCode::InvalidSwitch, source.pointer,
-               {shown, "node '" + quoteUserText(n.id) + "' has a case '" + quoteUserText(value) + "', which is not one of its values",
-                "cases are the switch's values: " + listNames(s.values)});
+        report(DiagCode::SwitchCasesMismatch, source.pointer,
+               {quoteUserText(n.id), "has a case '" + quoteUserText(value) + "', which is not a value of switch '" + shown + "'", shown,
+                listNames(s.values)});
     for (const auto& value : s.values) {
       bool covered = std::any_of(n.cases.begin(), n.cases.end(), [&](const auto& c) { return c.first == value; });
       if (!covered)
-        report(DiagCode::InvalidSwitch, appendPointer(n.pointer, "cases"),
-               {shown, "node '" + quoteUserText(n.id) + "' has no case for value '" + value + "'",
-                "add a case for every value: " + listNames(s.values)});
+        report(DiagCode::SwitchCasesMismatch, appendPointer(n.pointer, "cases"),
+               {quoteUserText(n.id), "has no case for value '" + value + "'", shown, listNames(s.values)});
     }
   }
 
@@ -147,11 +145,11 @@ class SwitchResolver {
     for (auto& item : effects->items()) {
       if (!item.value().is_object()) continue;  // booleans and wrong kinds: the weather resolver
       std::string at = appendPointer(effectsPointer, item.key());
-      if (auto on = effectFromSwitch(item.value(), at)) item.value() = *on;
+      if (auto on = effectFromSwitch(item.value(), at, quoteUserText(item.key()))) item.value() = *on;
     }
   }
 
-  std::optional<bool> effectFromSwitch(const nlohmann::json& setting, const std::string& at) {
+  std::optional<bool> effectFromSwitch(const nlohmann::json& setting, const std::string& at, const std::string& effect) {
     for (const auto& [key, value] : setting.items())
       if (key != "switch" && key != "when") {
         report(DiagCode::UnknownField, appendPointer(at, key), {quoteUserText(key), "a switched effect takes 'switch' and 'when'"});
@@ -159,8 +157,8 @@ class SwitchResolver {
       }
     auto name = setting.find("switch");
     if (name == setting.end() || !name->is_string()) {
-      report(DiagCode::InvalidWeatherSetting, at,
-             {"a weather effect is true, false or {\"switch\": NAME}", "write e.g. {\"switch\": \"moss\"}"});
+      report(DiagCode::InvalidWeatherEffect, at,
+             {effect, "a weather effect is true, false or {\"switch\": NAME}", "write e.g. {\"switch\": \"moss\"}"});
       return std::nullopt;
     }
     const SwitchDecl* s = findSwitch(name->get<std::string>());
@@ -172,8 +170,8 @@ class SwitchResolver {
     auto when = setting.find("when");
     if (when == setting.end()) {
       if (s->values != std::vector<std::string>{std::string(kSwitchOff), std::string(kSwitchOn)}) {
-        report(DiagCode::InvalidSwitch, at,
-               {quoteUserText(s->name), "it is not a bool switch, so the effect needs 'when'",
+        report(DiagCode::InvalidWeatherEffect, at,
+               {effect, "switch '" + quoteUserText(s->name) + "' is not a bool switch, so the effect needs 'when'",
                 "add \"when\": the values that turn the effect on, e.g. [\"" + s->values.back() + "\"]"});
         return std::nullopt;
       }
@@ -188,8 +186,9 @@ class SwitchResolver {
     for (std::size_t i = 0; i < when->size(); ++i) {
       const auto& v = (*when)[i];
       if (!v.is_string() || std::find(s->values.begin(), s->values.end(), v.get<std::string>()) == s->values.end()) {
-        report(DiagCode::InvalidSwitch, appendPointer(whenPointer, i),
-               {quoteUserText(s->name), "'when' lists something that is not one of its values", "use: " + listNames(s->values)});
+        report(DiagCode::UnknownSwitchValue, appendPointer(whenPointer, i),
+               {quoteUserText(s->name), v.is_string() ? "'" + quoteUserText(v.get<std::string>()) + "'" : describeJsonKind(v),
+                listNames(s->values)});
         return std::nullopt;
       }
       on = on || v.get<std::string>() == value;

@@ -31,7 +31,7 @@ Image textureImage(const vk::ReflectedTexture& t, const std::string& graphPath) 
       DiagnosticList diagnostics;
       diagnostics.report(DiagCode::TextureUnsupported,
                          locateInJsonFile(graphPath, appendPointer(appendPointer("/textures", t.name), "file")),
-                         {quoteUserText(t.name), "file '" + quoteUserText(path) + "': " + quoteUserText(error), "use a PNG, JPEG, TGA or BMP image"});
+                         {quoteUserText(t.name), "file '" + quoteUserText(path) + "': " + quoteUserText(error)});
       throw MaterialCompileError(graphPath, diagnostics.items());
     }
     return *image;

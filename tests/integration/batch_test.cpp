@@ -67,6 +67,20 @@ TEST(Batch, FailedBatchWritesNoDepfileAndNoOutputs) {
   EXPECT_TRUE(listFiles(dir.path()).empty());
 }
 
+// Each graph is valid alone; the command line put two that write the same files together.
+TEST(Batch, TwoMaterialsOfOneNameAreAUsageError) {
+  TempDir dir("same-name");
+  for (const char* folder : {"a", "b"}) {
+    fs::create_directories(dir.path() / folder);
+    testing::writeFile(dir.path() / folder / "g.json", R"({"name": "lit", "nodes": [], "output": {"roughness": 0.4}})");
+  }
+  auto r = runCommand(shellQuote(WG_CLI_PATH) + " compile " + shellQuote((dir.path() / "a" / "g.json").string()) + " " +
+                      shellQuote((dir.path() / "b" / "g.json").string()) + " -o " + shellQuote((dir.path() / "out").string()));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("WG2020"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
 TEST(Batch, JobCountIsValidated) {
   auto r = runCommand(shellQuote(WG_CLI_PATH) + " compile " + shellQuote(std::string(WG_SOURCE_DIR) + "/graphs/rock.json") +
                       " -j0 -o /tmp/never");

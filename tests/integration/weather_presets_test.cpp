@@ -283,12 +283,12 @@ TEST(WeatherErrors, BadWeightsShapeIsWG4002) {
              "/weather/terms/3");
 }
 
-TEST(WeatherErrors, ReservedParameterPrefixIsWG4002WithAnActivePreset) {
+TEST(WeatherErrors, ReservedParameterPrefixIsWG4004WithAnActivePreset) {
   TempDir dir("weather-err");
   const std::string parameters = R"({"weather.w1": {"type": "float", "default": 1}})";
-  expectOnly(compileText(dir, minimalGraph(R"("rock")", parameters)), "WG4002", "/parameters/weather.w1");
+  expectOnly(compileText(dir, minimalGraph(R"("rock")", parameters)), "WG4004", "/parameters/weather.w1");
   // The preset from the command line counts too.
-  expectOnly(compileText(dir, minimalGraph(R"("none")", parameters), "--weather-preset road"), "WG4002",
+  expectOnly(compileText(dir, minimalGraph(R"("none")", parameters), "--weather-preset road"), "WG4004",
              "/parameters/weather.w1");
   // Without weather the name is free.
   auto ok = compileText(dir, minimalGraph(R"("none")", parameters));

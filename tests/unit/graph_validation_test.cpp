@@ -49,7 +49,7 @@ TEST(GraphValidation, IntegralFloatsAreIntegers) {
                             "nodes": [], "output": {}})");
   EXPECT_TRUE(codes.empty());
   codes = codesFor(R"({"name": "t", "textures": {"t": {"generator": "fbm", "seed": 3.5}}, "nodes": [], "output": {}})");
-  EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::TextureUnsupported});
+  EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::InvalidGeneratorOption});
 }
 
 TEST(GraphValidation, DescriptionsMustBeStrings) {

@@ -133,7 +133,7 @@ TEST(PublicApi, SwitchesChooseTheVariant) {
   ASSERT_TRUE(high.ok && low.ok) << describe(low);
   EXPECT_NE(high.contentHash, low.contentHash);
   options.switches = {{"quality", "ultra"}};
-  EXPECT_TRUE(hasCode(weathergen::compile(g.file, g.text, options), "WG2016"));
+  EXPECT_TRUE(hasCode(weathergen::compile(g.file, g.text, options), "WG2017"));
   options.switches = {{"qualty", "low"}};
   EXPECT_TRUE(hasCode(weathergen::compile(g.file, g.text, options), "WG2015"));
 }

@@ -114,14 +114,15 @@ TEST(StaticSwitchErrors, ReportedByCode) {
             std::vector<std::string>{"WG2015"});
   EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"switch": "nope"}})")), std::vector<std::string>{"WG2015"});
   EXPECT_EQ(codesOf(kRoughnessGraph, {{"nope", "x"}}), std::vector<std::string>{"WG2015"});
-  // WG2016: missing case, extra case, unknown value, bool form on a non-bool switch.
+  // WG2018: missing case, extra case. WG2017: a value the switch does not have.
+  // WG4003: the bool form on a non-bool switch.
   EXPECT_EQ(codesOf(node(R"({"id": "s", "op": "switch", "switch": "q", "cases": {"a": 0.1}})")),
-            std::vector<std::string>{"WG2016"});
+            std::vector<std::string>{"WG2018"});
   EXPECT_EQ(codesOf(node(R"({"id": "s", "op": "switch", "switch": "q", "cases": {"a": 0.1, "b": 0.2, "c": 0.3}})")),
-            std::vector<std::string>{"WG2016"});
-  EXPECT_EQ(codesOf(kRoughnessGraph, {{"quality", "ultra"}}), std::vector<std::string>{"WG2016"});
-  EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"switch": "quality"}})")), std::vector<std::string>{"WG2016"});
-  EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"switch": "quality", "when": ["ultra"]}})")), std::vector<std::string>{"WG2016"});
+            std::vector<std::string>{"WG2018"});
+  EXPECT_EQ(codesOf(kRoughnessGraph, {{"quality", "ultra"}}), std::vector<std::string>{"WG2017"});
+  EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"switch": "quality"}})")), std::vector<std::string>{"WG4003"});
+  EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"switch": "quality", "when": ["ultra"]}})")), std::vector<std::string>{"WG2017"});
   // Declarations: bad default, duplicate value, one value, not a plain word, neither kind.
   for (const char* decl : {R"({"values": ["a", "b"], "default": "c"})", R"({"values": ["a", "a"], "default": "a"})",
                            R"({"values": ["a"], "default": "a"})", R"({"values": ["a b", "c"], "default": "c"})",
