@@ -5,7 +5,7 @@
 include(GNUInstallDirs)
 
 # The static libraries end up in a shared object.
-set_target_properties(weathergen_compiler weathergen_nodes PROPERTIES POSITION_INDEPENDENT_CODE ON)
+set_target_properties(weathergen_compiler weathergen_backends weathergen_compiler_core weathergen_nodes PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 add_library(weathergen_shared SHARED driver/public_api.cpp)
 add_library(weathergen::compiler ALIAS weathergen_shared)

@@ -31,7 +31,7 @@ ALLOWED_INCLUDES = {
 }
 
 # A backend sees the IR and the material interface, nothing else of the compiler
-# (issue 13, section 3: backends/ becomes its own target on these headers).
+# (issue 13, section 3): backends/ is its own CMake target, weathergen_backends.
 BACKEND_VISIBLE_COMPILER = {
     "compiler/ir.hpp",
     "compiler/material_interface.hpp",
