@@ -28,14 +28,19 @@ std::string recordedFile(const std::filesystem::path& graph, const std::string& 
 class RecordedPaths : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "wg-recorded-paths";
+    // One folder per test: ctest runs the tests of this fixture in parallel processes.
+    dir_ = std::filesystem::temp_directory_path() /
+           ("wg-recorded-paths-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_ / "graphs");
     std::filesystem::create_directories(dir_ / "images");
     const std::uint8_t texels[16 * 16 * 4] = {};
     ASSERT_TRUE(stbi_write_png((dir_ / "images" / "a.png").c_str(), 16, 16, 4, texels, 16 * 4));
   }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
+  void TearDown() override {
+    std::filesystem::remove_all(dir_);
+    std::filesystem::remove_all(dir_.string() + "-moved");
+  }
   std::filesystem::path dir_;
 };
 
