@@ -29,6 +29,12 @@ TEST(DiagnosticTable, TemplatesUseExactlyTheDeclaredArguments) {
   for (const auto& d : allDiagnostics()) EXPECT_EQ(checkDiagnosticRow(d), "") << d.id;
 }
 
+// Positional {0} rows are still read, but every row of the table names its arguments.
+TEST(DiagnosticTable, EveryRowNamesItsArguments) {
+  for (const auto& d : allDiagnostics())
+    EXPECT_FALSE(d.arguments.empty() && diagnosticArgumentCount(d) > 0) << d.id << " still uses {0}, {1}...";
+}
+
 TEST(DiagnosticTable, NamedArgumentsFillInDeclaredOrder) {
   EXPECT_EQ(fillTemplate("'{b}' then '{a}', '{b}' again", {"first", "second"}, "a b"), "'second' then 'first', 'second' again");
   EXPECT_EQ(fillTemplate("{1}/{0}", {"x", "y"}), "y/x");
