@@ -78,17 +78,17 @@ struct DiagnosticInfo {
   Severity severity;
   DiagCategory category;
   std::string_view name;             // kebab-case summary
-  std::string_view messageTemplate;  // {name} placeholders (or legacy {0}, {1}...)
+  std::string_view messageTemplate;  // {name} placeholders, filled by the reporter
   std::string_view hintTemplate;
   // The named arguments, space-separated, in the order report() takes them:
-  // "texture reason" means report(code, at, {textureValue, reasonValue}). Empty for a
-  // row still on positional {0}..{9} placeholders. A static check over the table keeps
-  // the names and the templates in step; report() checks the count.
+  // "texture reason" means report(code, at, {textureValue, reasonValue}). A static check
+  // over the table keeps the names and the templates in step (every row names its
+  // arguments; fillTemplate still reads positional {0}..{9}); report() checks the count.
   std::string_view arguments = {};
 };
 
-// How many values report() takes for this row: the named arguments, or for a legacy
-// row the highest {N} + 1.
+// How many values report() takes for this row: its named arguments (for a row with
+// positional placeholders, the highest {N} + 1).
 std::size_t diagnosticArgumentCount(const DiagnosticInfo& info);
 // "" when the row's templates and arguments agree; otherwise what is wrong.
 std::string_view checkDiagnosticRow(const DiagnosticInfo& info);
