@@ -99,20 +99,13 @@ BloomPass::BloomPass(vk::Context& ctx) : ctx_(ctx) {
   for (std::size_t i = 0; i < modules.size(); ++i) {
     Stage& s = *stages[i];
     s.module = vk::createShaderModule(ctx_, modules[i].words);
-    s.pipeline = vk::createComputePipeline(ctx_, s.module, set_->pipelineLayout());
+    s.pipeline = vk::createComputePipeline(ctx_, s.module.get(), set_->pipelineLayout());
     s.localSize[0] = modules[i].interface.localSize[0];
     s.localSize[1] = modules[i].interface.localSize[1];
   }
 }
 
-BloomPass::~BloomPass() {
-  VkDevice d = ctx_.device();
-  vkDeviceWaitIdle(d);
-  for (Stage* s : {&bright_, &blurH_, &blurV_, &composite_}) {
-    vkDestroyPipeline(d, s->pipeline, nullptr);
-    vkDestroyShaderModule(d, s->module, nullptr);
-  }
-}
+BloomPass::~BloomPass() { vkDeviceWaitIdle(ctx_.device()); }
 
 void BloomPass::record(VkCommandBuffer cmd, const vk::Image2D& colour, const BloomSettings& settings) {
   std::uint32_t w = colour.width(), h = colour.height(), hw = (w + 1) / 2, hh = (h + 1) / 2;
@@ -131,7 +124,7 @@ void BloomPass::record(VkCommandBuffer cmd, const vk::Image2D& colour, const Blo
   BloomConstants c{{std::int32_t(w), std::int32_t(h)}, {std::int32_t(hw), std::int32_t(hh)}, settings.threshold, settings.intensity};
   VkDescriptorSet set = set_->set();
   auto run = [&](const Stage& s, std::uint32_t x, std::uint32_t y) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, s.pipeline);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, s.pipeline.get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, set_->pipelineLayout(), 0, 1, &set, 0, nullptr);
     vkCmdPushConstants(cmd, set_->pipelineLayout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof c, &c);
     vkCmdDispatch(cmd, groups(x, s.localSize[0]), groups(y, s.localSize[1]), 1);

@@ -31,8 +31,8 @@ class BloomPass {
 
  private:
   struct Stage {
-    VkShaderModule module = VK_NULL_HANDLE;
-    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk::UniqueShaderModule module;
+    vk::UniquePipeline pipeline;
     std::uint32_t localSize[2] = {1, 1};
   };
   vk::Context& ctx_;

@@ -13,7 +13,7 @@
 
 namespace wg {
 
-VkSampler createSampler(vk::Context& ctx, std::string_view wrap, std::string_view filter) {
+vk::UniqueSampler createSampler(vk::Context& ctx, std::string_view wrap, std::string_view filter) {
   return vk::createSampler(ctx, wrap, wrap, filter, filter);
 }
 
@@ -83,10 +83,6 @@ MaterialResources::MaterialResources(vk::Context& ctx, const std::string& graphP
     image.upload(ctx, pixels.rgba.data(), pixels.rgba.size());
     textures_.push_back({&t, std::move(image), vk::createSampler(ctx, t)});
   }
-}
-
-MaterialResources::~MaterialResources() {
-  for (auto& t : textures_) vkDestroySampler(ctx_.device(), t.sampler, nullptr);
 }
 
 std::size_t MaterialResources::textureBytes() const {

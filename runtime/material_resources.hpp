@@ -9,6 +9,7 @@
 #include "driver/material_compiler.hpp"
 #include "runtime/vulkan/gpu_image.hpp"
 #include "runtime/vulkan/material_pipeline.hpp"
+#include "runtime/vulkan/vulkan_handle.hpp"
 
 namespace wg {
 
@@ -16,7 +17,6 @@ class MaterialResources {
  public:
   // Compiles graphPath (throws MaterialCompileError with the diagnostics on failure).
   MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options);
-  ~MaterialResources();
   MaterialResources(const MaterialResources&) = delete;
   MaterialResources& operator=(const MaterialResources&) = delete;
 
@@ -30,7 +30,7 @@ class MaterialResources {
   struct BoundTexture {
     const vk::ReflectedTexture* reflected;
     vk::Image2D image;
-    VkSampler sampler;
+    vk::UniqueSampler sampler;
   };
   const std::vector<BoundTexture>& textures() const { return textures_; }
   std::size_t textureBytes() const;
@@ -46,6 +46,6 @@ class MaterialResources {
 };
 
 // A sampler for a reflected wrap/filter pair.
-VkSampler createSampler(vk::Context& ctx, std::string_view wrap, std::string_view filter);
+vk::UniqueSampler createSampler(vk::Context& ctx, std::string_view wrap, std::string_view filter);
 
 }  // namespace wg

@@ -62,22 +62,13 @@ SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string g
   VkQueryPoolCreateInfo query{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   query.queryType = VK_QUERY_TYPE_TIMESTAMP;
   query.queryCount = 2;
-  vk::check(vkCreateQueryPool(ctx_.device(), &query, nullptr, &timestamps_), "vkCreateQueryPool");
+  VkQueryPool timestamps;
+  vk::check(vkCreateQueryPool(ctx_.device(), &query, nullptr, &timestamps), "vkCreateQueryPool");
+  timestamps_ = vk::UniqueQueryPool(ctx_.device(), timestamps);
   buildExposureMap();
 }
 
-SceneRenderer::~SceneRenderer() {
-  VkDevice d = ctx_.device();
-  vkDeviceWaitIdle(d);
-  for (auto fb : framebuffers_) vkDestroyFramebuffer(d, fb, nullptr);
-  for (auto pool : pools_) vkDestroyDescriptorPool(d, pool, nullptr);
-  vkDestroyQueryPool(d, timestamps_, nullptr);
-  vkDestroySampler(d, linearClamp_, nullptr);
-  vkDestroySampler(d, nearestClamp_, nullptr);
-  vkDestroySampler(d, linearRepeat_, nullptr);
-  vkDestroyRenderPass(d, colourPass_, nullptr);
-  vkDestroyRenderPass(d, depthPass_, nullptr);
-}
+SceneRenderer::~SceneRenderer() { vkDeviceWaitIdle(ctx_.device()); }
 
 void SceneRenderer::createPasses() {
   // Colour pass: RGBA32F colour kept for read-back, depth kept for later passes.
@@ -107,7 +98,9 @@ void SceneRenderer::createPasses() {
   info.pAttachments = attachments;
   info.subpassCount = 1;
   info.pSubpasses = &subpass;
-  vk::check(vkCreateRenderPass(ctx_.device(), &info, nullptr, &colourPass_), "vkCreateRenderPass");
+  VkRenderPass colourPass;
+  vk::check(vkCreateRenderPass(ctx_.device(), &info, nullptr, &colourPass), "vkCreateRenderPass");
+  colourPass_ = vk::UniqueRenderPass(ctx_.device(), colourPass);
 
   // Depth-only pass (shadow and sky-exposure maps): stored and left shader-readable.
   VkAttachmentDescription depthOnly = depth;
@@ -132,10 +125,12 @@ void SceneRenderer::createPasses() {
   depthInfo.pSubpasses = &depthSubpass;
   depthInfo.dependencyCount = 1;
   depthInfo.pDependencies = &after;
-  vk::check(vkCreateRenderPass(ctx_.device(), &depthInfo, nullptr, &depthPass_), "vkCreateRenderPass");
+  VkRenderPass depthPass;
+  vk::check(vkCreateRenderPass(ctx_.device(), &depthInfo, nullptr, &depthPass), "vkCreateRenderPass");
+  depthPass_ = vk::UniqueRenderPass(ctx_.device(), depthPass);
 }
 
-VkFramebuffer SceneRenderer::framebuffer(VkRenderPass pass, std::vector<VkImageView> views, std::uint32_t w, std::uint32_t h) {
+vk::UniqueFramebuffer SceneRenderer::framebuffer(VkRenderPass pass, std::vector<VkImageView> views, std::uint32_t w, std::uint32_t h) {
   VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
   info.renderPass = pass;
   info.attachmentCount = static_cast<std::uint32_t>(views.size());
@@ -145,8 +140,7 @@ VkFramebuffer SceneRenderer::framebuffer(VkRenderPass pass, std::vector<VkImageV
   info.layers = 1;
   VkFramebuffer fb;
   vk::check(vkCreateFramebuffer(ctx_.device(), &info, nullptr, &fb), "vkCreateFramebuffer");
-  framebuffers_.push_back(fb);
-  return fb;
+  return vk::UniqueFramebuffer(ctx_.device(), fb);
 }
 
 void SceneRenderer::uploadTerrain() {
@@ -309,7 +303,7 @@ std::array<VkDescriptorSet, 2> allocateMaterialSets(VkDevice device, VkDescripto
     writer.buffer(sets[1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);
   for (const auto& t : material.textures()) {
     writer.image(sets[1], t.reflected->binding, t.image.view());
-    writer.sampler(sets[1], t.reflected->samplerBinding, t.sampler);
+    writer.sampler(sets[1], t.reflected->samplerBinding, t.sampler.get());
   }
   return sets;
 }
@@ -396,8 +390,8 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | later);
   vk::Image2D depth(ctx_, request.width, request.height, vk::kDepthFormat,
                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (request.afterColourPass ? VK_IMAGE_USAGE_SAMPLED_BIT : 0));
-  VkFramebuffer colourTarget = framebuffer(colourPass_, {colour.view(), depth.view()}, request.width, request.height);
-  VkFramebuffer shadowTarget = framebuffer(depthPass_, {shadowMap_.view()}, kShadowResolution, kShadowResolution);
+  vk::UniqueFramebuffer colourTarget = framebuffer(colourPass_.get(), {colour.view(), depth.view()}, request.width, request.height);
+  vk::UniqueFramebuffer shadowTarget = framebuffer(depthPass_.get(), {shadowMap_.view()}, kShadowResolution, kShadowResolution);
 
   // Frame data: one dynamic slice per (pass, object).
   const vk::ReflectedBlock& frameBlock = mats.front()->reflection().frame;
@@ -448,19 +442,19 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   poolInfo.maxSets = static_cast<std::uint32_t>(setCount);
   poolInfo.poolSizeCount = 4;
   poolInfo.pPoolSizes = sizes;
-  VkDescriptorPool pool;
-  vk::check(vkCreateDescriptorPool(ctx_.device(), &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
-  pools_.push_back(pool);
+  VkDescriptorPool rawPool;
+  vk::check(vkCreateDescriptorPool(ctx_.device(), &poolInfo, nullptr, &rawPool), "vkCreateDescriptorPool");
+  vk::UniqueDescriptorPool pool(ctx_.device(), rawPool);
 
   DescriptorWriter writer;
   std::vector<std::array<VkDescriptorSet, 2>> sets(passes.size() * objects_.size());
   for (std::size_t p = 0; p < passes.size(); ++p)
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       SharedMaps maps{terrainHeight_.view(), passes[p].exposureView, passes[p].shadowView,
-                      (snowDeformation_ ? *snowDeformation_ : placeholderDeformation_).view(), linearClamp_, nearestClamp_,
-                      linearRepeat_};
+                      (snowDeformation_ ? *snowDeformation_ : placeholderDeformation_).view(), linearClamp_.get(), nearestClamp_.get(),
+                      linearRepeat_.get()};
       sets[p * objects_.size() + i] =
-          allocateMaterialSets(ctx_.device(), pool, *mats[i], mats[i]->pipeline(request.backend, colourPass_, depthPass_),
+          allocateMaterialSets(ctx_.device(), pool.get(), *mats[i], mats[i]->pipeline(request.backend, colourPass_.get(), depthPass_.get()),
                                writer, frameBuffer.handle(), frameBlock.size, maps);
     }
   vkUpdateDescriptorSets(ctx_.device(), static_cast<std::uint32_t>(writer.writes.size()), writer.writes.data(), 0, nullptr);
@@ -475,7 +469,7 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   const bool aov = request.debugView != 0;
 
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
+    vkCmdResetQueryPool(cmd, timestamps_.get(), 0, 2);
     for (std::size_t p = 0; p < passes.size(); ++p) {
       bool colourPass = passes[p].kind == PassKind::Colour;
       std::uint32_t w = colourPass ? request.width : kShadowResolution;
@@ -487,31 +481,31 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
       else clears[0].color = {{0.f, 0.f, 0.f, 0.f}};
       clears[1].depthStencil = {1.f, 0};
       VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-      begin.renderPass = colourPass ? colourPass_ : depthPass_;
-      begin.framebuffer = colourPass ? colourTarget : shadowTarget;
+      begin.renderPass = colourPass ? colourPass_.get() : depthPass_.get();
+      begin.framebuffer = colourPass ? colourTarget.get() : shadowTarget.get();
       begin.renderArea = {{0, 0}, {w, h}};
       begin.clearValueCount = colourPass ? 2 : 1;
       begin.pClearValues = colourPass ? clears : &clears[1];
-      if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
+      if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_.get(), 0);
       vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
       setViewport(cmd, w, h);
       for (std::size_t i : drawOrder) {
         if (!colourPass && !objects_[i]->source->castsShadow) continue;
         if (colourPass && !request.onlyObject.empty() && objects_[i]->source->name != request.onlyObject) continue;
-        auto& pipeline = mats[i]->pipeline(request.backend, colourPass_, depthPass_);
+        auto& pipeline = mats[i]->pipeline(request.backend, colourPass_.get(), depthPass_.get());
         drawIndexed(cmd, pipeline, colourPass ? pipeline.colourPipeline(aov) : pipeline.depthPipeline(), sets[p * objects_.size() + i],
                     static_cast<std::uint32_t>(slice * (p * objects_.size() + i)), objects_[i]->vertices.handle(),
                     objects_[i]->indices.handle(), objects_[i]->indexCount);
       }
       vkCmdEndRenderPass(cmd);
-      if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+      if (colourPass) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_.get(), 1);
       if (colourPass && request.afterColourPass)
         request.afterColourPass({cmd, &colour, &depth, passes[p].viewProjection, passes[p].eye, clip.nearPlane, clip.farPlane});
     }
   });
 
   std::uint64_t ticks[2] = {0, 0};
-  if (vkGetQueryPoolResults(ctx_.device(), timestamps_, 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),
+  if (vkGetQueryPoolResults(ctx_.device(), timestamps_.get(), 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),
                             VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS && ticks[1] > ticks[0])
     frame.gpuMilliseconds = double(ticks[1] - ticks[0]) * ctx_.properties().limits.timestampPeriod * 1e-6;
 
@@ -519,13 +513,6 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   frame.rgba.resize(std::size_t(request.width) * request.height * 4);
   std::memcpy(frame.rgba.data(), raw.data(), frame.rgba.size() * sizeof(float));
 
-  // Per-render objects go now; the pool and framebuffers are not reused.
-  vkDestroyDescriptorPool(ctx_.device(), pool, nullptr);
-  pools_.pop_back();
-  for (auto fb : {colourTarget, shadowTarget}) {
-    vkDestroyFramebuffer(ctx_.device(), fb, nullptr);
-    framebuffers_.erase(std::find(framebuffers_.begin(), framebuffers_.end(), fb));
-  }
   return frame;
 }
 
@@ -552,7 +539,7 @@ void SceneRenderer::buildExposureMap() {
   for (const auto& o : scene_.objects) mats.push_back(&material(o.graph, request.weatherPreset));
   vk::Image2D depth(ctx_, kExposureResolution, kExposureResolution, vk::kDepthFormat,
                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-  VkFramebuffer target = framebuffer(depthPass_, {depth.view()}, kExposureResolution, kExposureResolution);
+  vk::UniqueFramebuffer target = framebuffer(depthPass_.get(), {depth.view()}, kExposureResolution, kExposureResolution);
   const vk::ReflectedBlock& frameBlock = mats.front()->reflection().frame;
   VkDeviceSize alignment = ctx_.properties().limits.minUniformBufferOffsetAlignment;
   VkDeviceSize slice = (frameBlock.size + alignment - 1) / alignment * alignment;
@@ -567,8 +554,9 @@ void SceneRenderer::buildExposureMap() {
   poolInfo.maxSets = static_cast<std::uint32_t>(2 * drawn.size() + 2);
   poolInfo.poolSizeCount = 4;
   poolInfo.pPoolSizes = sizes;
-  VkDescriptorPool pool;
-  vk::check(vkCreateDescriptorPool(ctx_.device(), &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+  VkDescriptorPool rawPool;
+  vk::check(vkCreateDescriptorPool(ctx_.device(), &poolInfo, nullptr, &rawPool), "vkCreateDescriptorPool");
+  vk::UniqueDescriptorPool pool(ctx_.device(), rawPool);
   DescriptorWriter writer;
   std::vector<std::array<VkDescriptorSet, 2>> sets(drawn.size());
   for (std::size_t k = 0; k < drawn.size(); ++k) {
@@ -587,8 +575,8 @@ void SceneRenderer::buildExposureMap() {
     indexBuffers.emplace_back(ctx_, indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     indexBuffers.back().write(indices.data(), indices.size() * sizeof(std::uint32_t));
     SharedMaps maps{terrainHeight_.view(), placeholderHeight_.view(), placeholderShadow_.view(),
-                    placeholderDeformation_.view(), linearClamp_, nearestClamp_, linearRepeat_};
-    sets[k] = allocateMaterialSets(ctx_.device(), pool, *mats[i], mats[i]->pipeline(ShaderLanguage::Glsl, colourPass_, depthPass_),
+                    placeholderDeformation_.view(), linearClamp_.get(), nearestClamp_.get(), linearRepeat_.get()};
+    sets[k] = allocateMaterialSets(ctx_.device(), pool.get(), *mats[i], mats[i]->pipeline(ShaderLanguage::Glsl, colourPass_.get(), depthPass_.get()),
                                    writer, frameBuffer.handle(), frameBlock.size, maps);
   }
   vkUpdateDescriptorSets(ctx_.device(), static_cast<std::uint32_t>(writer.writes.size()), writer.writes.data(), 0, nullptr);
@@ -596,15 +584,15 @@ void SceneRenderer::buildExposureMap() {
     VkClearValue clear;
     clear.depthStencil = {1.f, 0};
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = depthPass_;
-    begin.framebuffer = target;
+    begin.renderPass = depthPass_.get();
+    begin.framebuffer = target.get();
     begin.renderArea = {{0, 0}, {kExposureResolution, kExposureResolution}};
     begin.clearValueCount = 1;
     begin.pClearValues = &clear;
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
     setViewport(cmd, kExposureResolution, kExposureResolution);
     for (std::size_t k = 0; k < drawn.size(); ++k) {
-      auto& pipeline = mats[drawn[k]]->pipeline(ShaderLanguage::Glsl, colourPass_, depthPass_);
+      auto& pipeline = mats[drawn[k]]->pipeline(ShaderLanguage::Glsl, colourPass_.get(), depthPass_.get());
       drawIndexed(cmd, pipeline, pipeline.depthPipeline(), sets[k], static_cast<std::uint32_t>(slice * k), vertexBuffers[k].handle(),
                   indexBuffers[k].handle(), static_cast<std::uint32_t>(scene_.objects[drawn[k]].mesh.indices.size()));
     }
@@ -617,9 +605,6 @@ void SceneRenderer::buildExposureMap() {
   exposureMap_ = vk::Image2D(ctx_, kExposureResolution, kExposureResolution, VK_FORMAT_R32_SFLOAT,
                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   exposureMap_.upload(ctx_, exposureHeights_.data(), exposureHeights_.size() * sizeof(float));
-  vkDestroyDescriptorPool(ctx_.device(), pool, nullptr);
-  vkDestroyFramebuffer(ctx_.device(), target, nullptr);
-  framebuffers_.erase(std::find(framebuffers_.begin(), framebuffers_.end(), target));
 }
 
 }  // namespace wg

@@ -90,24 +90,22 @@ class SceneRenderer {
   void createPasses();
   void buildExposureMap();
   void uploadTerrain();
-  VkFramebuffer framebuffer(VkRenderPass pass, std::vector<VkImageView> views, std::uint32_t w, std::uint32_t h);
+  vk::UniqueFramebuffer framebuffer(VkRenderPass pass, std::vector<VkImageView> views, std::uint32_t w, std::uint32_t h);
 
   vk::Context& ctx_;
   scene::Scene scene_;
   std::string graphsDirectory_;
-  VkRenderPass colourPass_ = VK_NULL_HANDLE, depthPass_ = VK_NULL_HANDLE;
+  vk::UniqueRenderPass colourPass_, depthPass_;  // outlive the materials' pipelines
   std::map<std::string, std::unique_ptr<MaterialResources>> materials_;  // by graph + preset
   std::vector<std::unique_ptr<Object>> objects_;
   vk::Image2D terrainHeight_, exposureMap_, shadowMap_, placeholderHeight_, placeholderShadow_, placeholderDeformation_;
   const vk::Image2D* snowDeformation_ = nullptr;
-  VkSampler linearClamp_ = VK_NULL_HANDLE;
-  VkSampler linearRepeat_ = VK_NULL_HANDLE;  // the toroidal snow deformation map
-  VkSampler nearestClamp_ = VK_NULL_HANDLE;  // depth formats need not be filterable; PCF filters
+  vk::UniqueSampler linearClamp_;
+  vk::UniqueSampler linearRepeat_;  // the toroidal snow deformation map
+  vk::UniqueSampler nearestClamp_;  // depth formats need not be filterable; PCF filters
   std::vector<float> exposureHeights_;
   glm::vec4 exposureRegion_{0.f};
-  VkQueryPool timestamps_ = VK_NULL_HANDLE;
-  std::vector<VkFramebuffer> framebuffers_;
-  std::vector<VkDescriptorPool> pools_;
+  vk::UniqueQueryPool timestamps_;
 };
 
 }  // namespace wg

@@ -29,19 +29,12 @@ DeformationPass::DeformationPass(vk::Context& ctx) : ctx_(ctx) {
   for (std::size_t i = 0; i < modules.size(); ++i) {
     Pipeline& p = *targets[i];
     p.module = vk::createShaderModule(ctx_, modules[i].words);
-    p.pipeline = vk::createComputePipeline(ctx_, p.module, set_->pipelineLayout());
+    p.pipeline = vk::createComputePipeline(ctx_, p.module.get(), set_->pipelineLayout());
     for (int axis = 0; axis < 3; ++axis) p.localSize[axis] = modules[i].interface.localSize[axis];
   }
 }
 
-DeformationPass::~DeformationPass() {
-  VkDevice d = ctx_.device();
-  vkDeviceWaitIdle(d);
-  for (Pipeline* p : {&stamp_, &normals_, &refill_}) {
-    vkDestroyPipeline(d, p->pipeline, nullptr);
-    vkDestroyShaderModule(d, p->module, nullptr);
-  }
-}
+DeformationPass::~DeformationPass() { vkDeviceWaitIdle(ctx_.device()); }
 
 void DeformationPass::bind(const std::string& block, const vk::Buffer& buffer) { set_->bindBuffer(block, buffer); }
 
@@ -54,7 +47,7 @@ void DeformationPass::dispatch(VkCommandBuffer cmd, const Pipeline& p, const Win
   std::uint32_t gx = groups(extent.x, p.localSize[0]), gy = groups(extent.y, p.localSize[1]);
   if (gx == 0 || gy == 0 || layers == 0) return;
   VkDescriptorSet set = set_->set();
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, set_->pipelineLayout(), 0, 1, &set, 0, nullptr);
   vkCmdPushConstants(cmd, set_->pipelineLayout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(WindowConstants), &window);
   vkCmdDispatch(cmd, gx, gy, layers);

@@ -49,8 +49,8 @@ class DeformationPass {
 
  private:
   struct Pipeline {
-    VkShaderModule module = VK_NULL_HANDLE;
-    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk::UniqueShaderModule module;
+    vk::UniquePipeline pipeline;
     std::uint32_t localSize[3] = {1, 1, 1};
   };
   void dispatch(VkCommandBuffer cmd, const Pipeline& p, const WindowConstants& window, glm::ivec2 extent,

@@ -49,13 +49,12 @@ GpuDeformationMap::GpuDeformationMap(vk::Context& ctx, const WindowSettings& set
   VkQueryPoolCreateInfo query{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   query.queryType = VK_QUERY_TYPE_TIMESTAMP;
   query.queryCount = 2;
-  vk::check(vkCreateQueryPool(ctx_.device(), &query, nullptr, &timestamps_), "vkCreateQueryPool");
+  VkQueryPool timestamps;
+  vk::check(vkCreateQueryPool(ctx_.device(), &query, nullptr, &timestamps), "vkCreateQueryPool");
+  timestamps_ = vk::UniqueQueryPool(ctx_.device(), timestamps);
 }
 
-GpuDeformationMap::~GpuDeformationMap() {
-  vkDeviceWaitIdle(ctx_.device());
-  vkDestroyQueryPool(ctx_.device(), timestamps_, nullptr);
-}
+GpuDeformationMap::~GpuDeformationMap() { vkDeviceWaitIdle(ctx_.device()); }
 
 void GpuDeformationMap::reserve(std::size_t stamps) {
   if (stamps <= capacity_) return;
@@ -84,18 +83,18 @@ WindowConstants GpuDeformationMap::constants(std::uint32_t refillQuanta) const {
 
 double GpuDeformationMap::submit(const std::function<void(VkCommandBuffer)>& record) {
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
+    vkCmdResetQueryPool(cmd, timestamps_.get(), 0, 2);
     vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                             VK_IMAGE_LAYOUT_GENERAL);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_.get(), 0);
     record(cmd);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_.get(), 1);
     vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     vk::computeToHostBarrier(cmd);  // host reads of the map (recentring, tests)
   });
   std::uint64_t ticks[2] = {0, 0};
-  if (vkGetQueryPoolResults(ctx_.device(), timestamps_, 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),
+  if (vkGetQueryPoolResults(ctx_.device(), timestamps_.get(), 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),
                             VK_QUERY_RESULT_64_BIT) != VK_SUCCESS)
     return 0.0;
   return double(ticks[1] - ticks[0]) * ctx_.properties().limits.timestampPeriod * 1e-6;

@@ -65,7 +65,7 @@ class GpuDeformationMap {
   std::size_t capacity_ = 0;
   PrintTileStore store_;
   DeformationRefill refill_;
-  VkQueryPool timestamps_ = VK_NULL_HANDLE;
+  vk::UniqueQueryPool timestamps_;
 };
 
 }  // namespace wg::snow

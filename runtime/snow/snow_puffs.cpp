@@ -61,11 +61,11 @@ SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
   simulateSet_->bindBuffer("Particles", particles_);
   drawSet_->bindBuffer("Particles", particles_);
   depthSampler_ = createSampler(ctx_, "clamp", "nearest");
-  drawSet_->bindSampler("DepthSampler", depthSampler_);
+  drawSet_->bindSampler("DepthSampler", depthSampler_.get());
   simulateLocalSize_ = simulate.interface.localSize[0];
 
   simulateModule_ = vk::createShaderModule(ctx_, simulate.words);
-  simulatePipeline_ = vk::createComputePipeline(ctx_, simulateModule_, simulateSet_->pipelineLayout());
+  simulatePipeline_ = vk::createComputePipeline(ctx_, simulateModule_.get(), simulateSet_->pipelineLayout());
 
   // Draws over the finished colour: load it, keep it; no depth attachment, the
   // fragment stage compares against the sampled scene depth itself.
@@ -97,17 +97,19 @@ SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
   passInfo.pSubpasses = &subpass;
   passInfo.dependencyCount = 1;
   passInfo.pDependencies = &before;
-  vk::check(vkCreateRenderPass(d, &passInfo, nullptr, &pass_), "vkCreateRenderPass");
+  VkRenderPass pass;
+  vk::check(vkCreateRenderPass(d, &passInfo, nullptr, &pass), "vkCreateRenderPass");
+  pass_ = vk::UniqueRenderPass(d, pass);
 
   vertexModule_ = vk::createShaderModule(ctx_, vertex.words);
   fragmentModule_ = vk::createShaderModule(ctx_, fragment.words);
   VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vertexModule_;
+  stages[0].module = vertexModule_.get();
   stages[0].pName = "main";
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = fragmentModule_;
+  stages[1].module = fragmentModule_.get();
   stages[1].pName = "main";
   VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
@@ -148,20 +150,13 @@ SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
   info.pColorBlendState = &blendState;
   info.pDynamicState = &dynamic;
   info.layout = drawSet_->pipelineLayout();
-  info.renderPass = pass_;
-  vk::check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &drawPipeline_), "vkCreateGraphicsPipelines");
+  info.renderPass = pass;
+  VkPipeline drawPipeline;
+  vk::check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &drawPipeline), "vkCreateGraphicsPipelines");
+  drawPipeline_ = vk::UniquePipeline(d, drawPipeline);
 }
 
-SnowPuffs::~SnowPuffs() {
-  VkDevice d = ctx_.device();
-  vkDeviceWaitIdle(d);
-  if (framebuffer_) vkDestroyFramebuffer(d, framebuffer_, nullptr);
-  vkDestroyPipeline(d, drawPipeline_, nullptr);
-  vkDestroyPipeline(d, simulatePipeline_, nullptr);
-  vkDestroyRenderPass(d, pass_, nullptr);
-  for (VkShaderModule m : {simulateModule_, vertexModule_, fragmentModule_}) vkDestroyShaderModule(d, m, nullptr);
-  vkDestroySampler(d, depthSampler_, nullptr);
-}
+SnowPuffs::~SnowPuffs() { vkDeviceWaitIdle(ctx_.device()); }
 
 void SnowPuffs::emit(std::span<const glm::vec3> footfalls) {
   auto* slots = static_cast<Particle*>(particles_.mapped());
@@ -187,7 +182,7 @@ void SnowPuffs::simulate(double seconds, glm::vec2 wind) {
   StepConstants c{{wind.x, wind.y}, float(seconds), settings_.gravity, settings_.drag, settings_.capacity};
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
     VkDescriptorSet set = simulateSet_->set();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, simulatePipeline_);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, simulatePipeline_.get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, simulateSet_->pipelineLayout(), 0, 1, &set, 0, nullptr);
     vkCmdPushConstants(cmd, simulateSet_->pipelineLayout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof c, &c);
     vkCmdDispatch(cmd, (settings_.capacity + simulateLocalSize_ - 1) / simulateLocalSize_, 1, 1);
@@ -198,16 +193,18 @@ void SnowPuffs::simulate(double seconds, glm::vec2 wind) {
 void SnowPuffs::record(const ColourPassTargets& t) {
   VkDevice d = ctx_.device();
   // The previous frame has been submitted and waited for: its framebuffer can go.
-  if (framebuffer_) vkDestroyFramebuffer(d, framebuffer_, nullptr);
+  framebuffer_.reset();
   VkImageView view = t.colour->view();
   VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  fb.renderPass = pass_;
+  fb.renderPass = pass_.get();
   fb.attachmentCount = 1;
   fb.pAttachments = &view;
   fb.width = t.colour->width();
   fb.height = t.colour->height();
   fb.layers = 1;
-  vk::check(vkCreateFramebuffer(d, &fb, nullptr, &framebuffer_), "vkCreateFramebuffer");
+  VkFramebuffer framebuffer;
+  vk::check(vkCreateFramebuffer(d, &fb, nullptr, &framebuffer), "vkCreateFramebuffer");
+  framebuffer_ = vk::UniqueFramebuffer(d, framebuffer);
   drawSet_->bindImage("SceneDepth", t.depth->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   vk::Image2D::transition(t.cmd, t.depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
@@ -224,8 +221,8 @@ void SnowPuffs::record(const ColourPassTargets& t) {
   ViewConstants c{t.viewProjection, glm::vec4(right, 0.f), glm::vec4(up, 0.f),
                   {t.nearPlane, t.farPlane, settings_.softness, kOpacity}};
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = pass_;
-  begin.framebuffer = framebuffer_;
+  begin.renderPass = pass_.get();
+  begin.framebuffer = framebuffer;
   begin.renderArea = {{0, 0}, {t.colour->width(), t.colour->height()}};
   vkCmdBeginRenderPass(t.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   VkViewport viewport{0.f, 0.f, float(t.colour->width()), float(t.colour->height()), 0.f, 1.f};
@@ -233,7 +230,7 @@ void SnowPuffs::record(const ColourPassTargets& t) {
   vkCmdSetViewport(t.cmd, 0, 1, &viewport);
   vkCmdSetScissor(t.cmd, 0, 1, &scissor);
   VkDescriptorSet set = drawSet_->set();
-  vkCmdBindPipeline(t.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, drawPipeline_);
+  vkCmdBindPipeline(t.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, drawPipeline_.get());
   vkCmdBindDescriptorSets(t.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, drawSet_->pipelineLayout(), 0, 1, &set, 0, nullptr);
   vkCmdPushConstants(t.cmd, drawSet_->pipelineLayout(), drawSet_->stages(), 0, sizeof c, &c);
   vkCmdDraw(t.cmd, settings_.capacity * kVerticesPerParticle, 1, 0, 0);

@@ -58,11 +58,11 @@ class SnowPuffs {
   vk::Buffer particles_;
   std::uint32_t next_ = 0, emitted_ = 0;
   std::unique_ptr<vk::ReflectedDescriptorSet> simulateSet_, drawSet_;
-  VkShaderModule simulateModule_ = VK_NULL_HANDLE, vertexModule_ = VK_NULL_HANDLE, fragmentModule_ = VK_NULL_HANDLE;
-  VkPipeline simulatePipeline_ = VK_NULL_HANDLE, drawPipeline_ = VK_NULL_HANDLE;
-  VkRenderPass pass_ = VK_NULL_HANDLE;
-  VkFramebuffer framebuffer_ = VK_NULL_HANDLE;  // the last frame's; kept until the next
-  VkSampler depthSampler_ = VK_NULL_HANDLE;
+  vk::UniqueShaderModule simulateModule_, vertexModule_, fragmentModule_;
+  vk::UniquePipeline simulatePipeline_, drawPipeline_;
+  vk::UniqueRenderPass pass_;
+  vk::UniqueFramebuffer framebuffer_;  // the last frame's; kept until the next
+  vk::UniqueSampler depthSampler_;
   std::uint32_t simulateLocalSize_ = 1;
 };
 

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "runtime/vulkan/vulkan_context.hpp"
+#include "runtime/vulkan/vulkan_handle.hpp"
 
 namespace wg::vk {
 
@@ -11,13 +12,10 @@ class Buffer {
  public:
   Buffer() = default;
   Buffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage);
-  ~Buffer();
   Buffer(Buffer&& other) noexcept;
   Buffer& operator=(Buffer&& other) noexcept;
-  Buffer(const Buffer&) = delete;
-  Buffer& operator=(const Buffer&) = delete;
 
-  VkBuffer handle() const { return buffer_; }
+  VkBuffer handle() const { return buffer_.get(); }
   VkDeviceSize size() const { return size_; }
   void* mapped() const { return mapped_; }
   void write(const void* data, VkDeviceSize bytes, VkDeviceSize offset = 0) {
@@ -25,10 +23,8 @@ class Buffer {
   }
 
  private:
-  void release();
-  VkDevice device_ = VK_NULL_HANDLE;
-  VkBuffer buffer_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  UniqueDeviceMemory memory_;  // stays mapped: freeing it unmaps it
+  UniqueBuffer buffer_;        // destroyed before its memory
   VkDeviceSize size_ = 0;
   void* mapped_ = nullptr;
 };

@@ -22,7 +22,8 @@ bool Image2D::isDepth() const { return format_ == VK_FORMAT_D32_SFLOAT; }
 VkDeviceSize Image2D::byteSize() const { return VkDeviceSize(width_) * height_ * texelSize(format_); }
 
 Image2D::Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage)
-    : device_(ctx.device()), format_(format), width_(width), height_(height) {
+    : format_(format), width_(width), height_(height) {
+  VkDevice device = ctx.device();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
@@ -33,47 +34,42 @@ Image2D::Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkForm
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  check(vkCreateImage(device_, &info, nullptr, &image_), "vkCreateImage");
+  VkImage image;
+  check(vkCreateImage(device, &info, nullptr, &image), "vkCreateImage");
+  image_ = UniqueImage(device, image);
   VkMemoryRequirements req;
-  vkGetImageMemoryRequirements(device_, image_, &req);
+  vkGetImageMemoryRequirements(device, image, &req);
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   if (alloc.memoryTypeIndex == UINT32_MAX) alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, 0);
-  check(vkAllocateMemory(device_, &alloc, nullptr, &memory_), "vkAllocateMemory");
-  check(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
+  VkDeviceMemory memory;
+  check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
+  memory_ = UniqueDeviceMemory(device, memory);
+  check(vkBindImageMemory(device, image, memory, 0), "vkBindImageMemory");
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  viewInfo.image = image_;
+  viewInfo.image = image;
   viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
   viewInfo.format = format;
   viewInfo.subresourceRange = {static_cast<VkImageAspectFlags>(isDepth() ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT),
                                0, 1, 0, 1};
-  check(vkCreateImageView(device_, &viewInfo, nullptr, &view_), "vkCreateImageView");
+  VkImageView view;
+  check(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
+  view_ = UniqueImageView(device, view);
 }
 
-Image2D::~Image2D() { release(); }
 Image2D::Image2D(Image2D&& o) noexcept { *this = std::move(o); }
 
 Image2D& Image2D::operator=(Image2D&& o) noexcept {
   if (this != &o) {
-    release();
-    device_ = std::exchange(o.device_, VK_NULL_HANDLE);
-    image_ = std::exchange(o.image_, VK_NULL_HANDLE);
-    memory_ = std::exchange(o.memory_, VK_NULL_HANDLE);
-    view_ = std::exchange(o.view_, VK_NULL_HANDLE);
+    view_ = std::move(o.view_);  // the old view, image and memory go in that order
+    image_ = std::move(o.image_);
+    memory_ = std::move(o.memory_);
     format_ = o.format_;
     width_ = o.width_;
     height_ = o.height_;
   }
   return *this;
-}
-
-void Image2D::release() {
-  if (!device_) return;
-  if (view_) vkDestroyImageView(device_, view_, nullptr);
-  if (image_) vkDestroyImage(device_, image_, nullptr);
-  if (memory_) vkFreeMemory(device_, memory_, nullptr);
-  device_ = VK_NULL_HANDLE;
 }
 
 void Image2D::transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
@@ -97,12 +93,12 @@ void Image2D::upload(Context& ctx, const void* texels, VkDeviceSize bytes) {
   staging.write(texels, bytes);
   VkImageAspectFlags aspect = isDepth() ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
-    transition(cmd, image_, aspect, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    transition(cmd, handle(), aspect, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
     VkBufferImageCopy region{};
     region.imageSubresource = {aspect, 0, 0, 1};
     region.imageExtent = {width_, height_, 1};
-    vkCmdCopyBufferToImage(cmd, staging.handle(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    transition(cmd, image_, aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    vkCmdCopyBufferToImage(cmd, staging.handle(), handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    transition(cmd, handle(), aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   });
 }
 
@@ -110,12 +106,12 @@ std::vector<unsigned char> Image2D::download(Context& ctx, VkImageLayout layout)
   Buffer staging(ctx, byteSize(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   VkImageAspectFlags aspect = isDepth() ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
-    transition(cmd, image_, aspect, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    transition(cmd, handle(), aspect, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     VkBufferImageCopy region{};
     region.imageSubresource = {aspect, 0, 0, 1};
     region.imageExtent = {width_, height_, 1};
-    vkCmdCopyImageToBuffer(cmd, image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
-    transition(cmd, image_, aspect, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
+    vkCmdCopyImageToBuffer(cmd, handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
+    transition(cmd, handle(), aspect, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
   });
   std::vector<unsigned char> out(byteSize());
   std::memcpy(out.data(), staging.mapped(), out.size());

@@ -10,14 +10,11 @@ class Image2D {
  public:
   Image2D() = default;
   Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage);
-  ~Image2D();
   Image2D(Image2D&& other) noexcept;
   Image2D& operator=(Image2D&& other) noexcept;
-  Image2D(const Image2D&) = delete;
-  Image2D& operator=(const Image2D&) = delete;
 
-  VkImage handle() const { return image_; }
-  VkImageView view() const { return view_; }
+  VkImage handle() const { return image_.get(); }
+  VkImageView view() const { return view_.get(); }
   VkFormat format() const { return format_; }
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
@@ -33,11 +30,10 @@ class Image2D {
                          VkImageLayout to);
 
  private:
-  void release();
-  VkDevice device_ = VK_NULL_HANDLE;
-  VkImage image_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
-  VkImageView view_ = VK_NULL_HANDLE;
+  // Destroyed view, image, memory.
+  UniqueDeviceMemory memory_;
+  UniqueImage image_;
+  UniqueImageView view_;
   VkFormat format_ = VK_FORMAT_UNDEFINED;
   std::uint32_t width_ = 0, height_ = 0;
 };

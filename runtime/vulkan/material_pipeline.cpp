@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "runtime/vulkan/reflected_descriptor_set.hpp"
+
 namespace wg::vk {
 
 namespace {
@@ -53,8 +55,8 @@ VertexLayout vertexLayoutFrom(const MaterialReflection& r) {
 MaterialPipeline::MaterialPipeline(Context& ctx, const MaterialReflection& reflection, const SpirvWords& vertex,
                                    const SpirvWords& fragment, VkRenderPass colourPass, VkRenderPass depthPass)
     : ctx_(ctx), reflection_(reflection), vertex_(vertexLayoutFrom(reflection)) {
-  vertexModule_ = module(vertex);
-  fragmentModule_ = module(fragment);
+  vertexModule_ = createShaderModule(ctx, vertex);
+  fragmentModule_ = createShaderModule(ctx, fragment);
 
   // Set 0: the frame block (dynamic: one slice per object) and the shared maps.
   std::vector<VkDescriptorSetLayoutBinding> set0 = {
@@ -65,52 +67,36 @@ MaterialPipeline::MaterialPipeline(Context& ctx, const MaterialReflection& refle
   if (!reflection.material.members.empty())
     set1.push_back({reflection.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr});
   addTextureBindings(set1, reflection.textures);
+  VkDescriptorSetLayout layouts[2];
   for (int s = 0; s < 2; ++s) {
     const auto& bindings = s == 0 ? set0 : set1;
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     info.bindingCount = static_cast<std::uint32_t>(bindings.size());
     info.pBindings = bindings.data();
-    check(vkCreateDescriptorSetLayout(ctx.device(), &info, nullptr, &setLayouts_[s]), "vkCreateDescriptorSetLayout");
+    check(vkCreateDescriptorSetLayout(ctx.device(), &info, nullptr, &layouts[s]), "vkCreateDescriptorSetLayout");
+    setLayouts_[s] = UniqueDescriptorSetLayout(ctx.device(), layouts[s]);
   }
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 2;
-  layoutInfo.pSetLayouts = setLayouts_;
-  check(vkCreatePipelineLayout(ctx.device(), &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
+  layoutInfo.pSetLayouts = layouts;
+  VkPipelineLayout layout;
+  check(vkCreatePipelineLayout(ctx.device(), &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
+  layout_ = UniquePipelineLayout(ctx.device(), layout);
   colour_ = build(colourPass, Kind::Colour);
   if (reflection.blended()) aov_ = build(colourPass, Kind::Aov);
   depth_ = build(depthPass, Kind::Depth);
 }
 
-MaterialPipeline::~MaterialPipeline() {
-  VkDevice d = ctx_.device();
-  vkDestroyPipeline(d, colour_, nullptr);
-  vkDestroyPipeline(d, depth_, nullptr);
-  vkDestroyPipeline(d, aov_, nullptr);
-  vkDestroyPipelineLayout(d, layout_, nullptr);
-  for (auto l : setLayouts_) vkDestroyDescriptorSetLayout(d, l, nullptr);
-  vkDestroyShaderModule(d, vertexModule_, nullptr);
-  vkDestroyShaderModule(d, fragmentModule_, nullptr);
-}
-
-VkShaderModule MaterialPipeline::module(const SpirvWords& words) {
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = words.size() * sizeof(std::uint32_t);
-  info.pCode = words.data();
-  VkShaderModule m;
-  check(vkCreateShaderModule(ctx_.device(), &info, nullptr, &m), "vkCreateShaderModule");
-  return m;
-}
-
-VkPipeline MaterialPipeline::build(VkRenderPass pass, Kind kind) {
+UniquePipeline MaterialPipeline::build(VkRenderPass pass, Kind kind) {
   const bool depthOnly = kind == Kind::Depth;
   const bool blended = kind == Kind::Colour && reflection_.blended();
   VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vertexModule_;
+  stages[0].module = vertexModule_.get();
   stages[0].pName = "main";
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = fragmentModule_;
+  stages[1].module = fragmentModule_.get();
   stages[1].pName = "main";
 
   VkVertexInputBindingDescription binding{0, vertex_.stride, VK_VERTEX_INPUT_RATE_VERTEX};
@@ -162,11 +148,11 @@ VkPipeline MaterialPipeline::build(VkRenderPass pass, Kind kind) {
   info.pDepthStencilState = &depth;
   info.pColorBlendState = &blend;
   info.pDynamicState = &dynamic;
-  info.layout = layout_;
+  info.layout = layout_.get();
   info.renderPass = pass;
   VkPipeline pipeline;
   check(vkCreateGraphicsPipelines(ctx_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateGraphicsPipelines");
-  return pipeline;
+  return UniquePipeline(ctx_.device(), pipeline);
 }
 
 }  // namespace wg::vk

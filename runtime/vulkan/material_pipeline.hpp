@@ -8,6 +8,7 @@
 #include "backends/spirv/spirv_toolchain.hpp"
 #include "runtime/vulkan/material_reflection.hpp"
 #include "runtime/vulkan/vulkan_context.hpp"
+#include "runtime/vulkan/vulkan_handle.hpp"
 
 namespace wg::vk {
 
@@ -23,32 +24,29 @@ class MaterialPipeline {
  public:
   MaterialPipeline(Context& ctx, const MaterialReflection& reflection, const SpirvWords& vertex,
                    const SpirvWords& fragment, VkRenderPass colourPass, VkRenderPass depthPass);
-  ~MaterialPipeline();
-  MaterialPipeline(const MaterialPipeline&) = delete;
-  MaterialPipeline& operator=(const MaterialPipeline&) = delete;
 
   // The lit colour pipeline; for an AOV (a debug view) a blended material is drawn
   // opaque with depth writes, so read-backs see its attributes unblended.
-  VkPipeline colourPipeline(bool aov = false) const { return aov && aov_ ? aov_ : colour_; }
-  VkPipeline depthPipeline() const { return depth_; }
-  VkPipelineLayout layout() const { return layout_; }
-  VkDescriptorSetLayout setLayout(std::uint32_t set) const { return setLayouts_[set]; }
+  VkPipeline colourPipeline(bool aov = false) const { return aov && aov_ ? aov_.get() : colour_.get(); }
+  VkPipeline depthPipeline() const { return depth_.get(); }
+  VkPipelineLayout layout() const { return layout_.get(); }
+  VkDescriptorSetLayout setLayout(std::uint32_t set) const { return setLayouts_[set].get(); }
   const VertexLayout& vertexLayout() const { return vertex_; }
   const MaterialReflection& reflection() const { return reflection_; }
 
  private:
   enum class Kind { Colour, Aov, Depth };
-  VkShaderModule module(const SpirvWords& words);
-  VkPipeline build(VkRenderPass pass, Kind kind);
+  UniquePipeline build(VkRenderPass pass, Kind kind);
 
   Context& ctx_;
   MaterialReflection reflection_;
   VertexLayout vertex_;
-  VkShaderModule vertexModule_ = VK_NULL_HANDLE, fragmentModule_ = VK_NULL_HANDLE;
-  VkDescriptorSetLayout setLayouts_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline colour_ = VK_NULL_HANDLE, depth_ = VK_NULL_HANDLE;
-  VkPipeline aov_ = VK_NULL_HANDLE;  // blended materials only
+  // Destroyed pipelines first, shader modules last.
+  UniqueShaderModule vertexModule_, fragmentModule_;
+  UniqueDescriptorSetLayout setLayouts_[2];
+  UniquePipelineLayout layout_;
+  UniquePipeline colour_, depth_;
+  UniquePipeline aov_;  // blended materials only
 };
 
 // Formats of the renderer's attachments.

@@ -43,33 +43,32 @@ ReflectedDescriptorSet::ReflectedDescriptorSet(Context& ctx, const std::vector<M
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
   setInfo.pBindings = layoutBindings.data();
-  check(vkCreateDescriptorSetLayout(d, &setInfo, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
+  VkDescriptorSetLayout setLayout;
+  check(vkCreateDescriptorSetLayout(d, &setInfo, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
+  setLayout_ = UniqueDescriptorSetLayout(d, setLayout);
   VkPushConstantRange range{stages, 0, pushConstantBytes_};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout_;
+  layoutInfo.pSetLayouts = &setLayout;
   layoutInfo.pushConstantRangeCount = pushConstantBytes_ > 0 ? 1 : 0;
   layoutInfo.pPushConstantRanges = &range;
-  check(vkCreatePipelineLayout(d, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
+  VkPipelineLayout layout;
+  check(vkCreatePipelineLayout(d, &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
+  layout_ = UniquePipelineLayout(d, layout);
   std::vector<VkDescriptorPoolSize> sizes;
   for (auto [type, count] : typeCounts) sizes.push_back({type, count});
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
   poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
   poolInfo.pPoolSizes = sizes.data();
-  check(vkCreateDescriptorPool(d, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
+  VkDescriptorPool pool;
+  check(vkCreateDescriptorPool(d, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+  pool_ = UniqueDescriptorPool(d, pool);
   VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  alloc.descriptorPool = pool_;
+  alloc.descriptorPool = pool;
   alloc.descriptorSetCount = 1;
-  alloc.pSetLayouts = &setLayout_;
+  alloc.pSetLayouts = &setLayout;
   check(vkAllocateDescriptorSets(d, &alloc, &set_), "vkAllocateDescriptorSets");
-}
-
-ReflectedDescriptorSet::~ReflectedDescriptorSet() {
-  VkDevice d = ctx_.device();
-  vkDestroyDescriptorPool(d, pool_, nullptr);
-  vkDestroyPipelineLayout(d, layout_, nullptr);
-  vkDestroyDescriptorSetLayout(d, setLayout_, nullptr);
 }
 
 const ModuleBinding& ReflectedDescriptorSet::find(const std::string& name) const {
@@ -113,13 +112,13 @@ void ReflectedDescriptorSet::bindSampler(const std::string& name, VkSampler samp
   write(b, nullptr, &info);
 }
 
-VkShaderModule createShaderModule(Context& ctx, const SpirvWords& words) {
+UniqueShaderModule createShaderModule(Context& ctx, const SpirvWords& words) {
   VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   info.codeSize = words.size() * sizeof(std::uint32_t);
   info.pCode = words.data();
   VkShaderModule m;
   check(vkCreateShaderModule(ctx.device(), &info, nullptr, &m), "vkCreateShaderModule");
-  return m;
+  return UniqueShaderModule(ctx.device(), m);
 }
 
 }  // namespace wg::vk

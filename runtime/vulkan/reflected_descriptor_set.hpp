@@ -9,17 +9,17 @@
 
 #include "backends/spirv/spirv_toolchain.hpp"
 #include "runtime/vulkan/gpu_buffer.hpp"
+#include "runtime/vulkan/vulkan_handle.hpp"
 
 namespace wg::vk {
 
 class ReflectedDescriptorSet {
  public:
   ReflectedDescriptorSet(Context& ctx, const std::vector<ModuleInterface>& modules, VkShaderStageFlags stages);
-  ~ReflectedDescriptorSet();
   ReflectedDescriptorSet(const ReflectedDescriptorSet&) = delete;
   ReflectedDescriptorSet& operator=(const ReflectedDescriptorSet&) = delete;
 
-  VkPipelineLayout pipelineLayout() const { return layout_; }
+  VkPipelineLayout pipelineLayout() const { return layout_.get(); }
   VkDescriptorSet set() const { return set_; }
   std::uint32_t pushConstantBytes() const { return pushConstantBytes_; }
   VkShaderStageFlags stages() const { return stages_; }
@@ -36,14 +36,14 @@ class ReflectedDescriptorSet {
   Context& ctx_;
   VkShaderStageFlags stages_;
   std::map<std::string, ModuleBinding> bindings_;
-  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  UniqueDescriptorSetLayout setLayout_;
+  UniquePipelineLayout layout_;
+  UniqueDescriptorPool pool_;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;  // freed with pool_
   std::uint32_t pushConstantBytes_ = 0;
 };
 
-// A shader module from SPIR-V words (the caller destroys it).
-VkShaderModule createShaderModule(Context& ctx, const SpirvWords& words);
+// A shader module from SPIR-V words.
+UniqueShaderModule createShaderModule(Context& ctx, const SpirvWords& words);
 
 }  // namespace wg::vk

@@ -16,7 +16,7 @@ CompiledModule compileRuntimeShader(std::string_view glsl, RuntimeStage stage, s
   return {std::move(r.words), std::move(interface)};
 }
 
-VkPipeline createComputePipeline(Context& ctx, VkShaderModule module, VkPipelineLayout layout) {
+UniquePipeline createComputePipeline(Context& ctx, VkShaderModule module, VkPipelineLayout layout) {
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -25,7 +25,7 @@ VkPipeline createComputePipeline(Context& ctx, VkShaderModule module, VkPipeline
   info.layout = layout;
   VkPipeline pipeline;
   check(vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateComputePipelines");
-  return pipeline;
+  return UniquePipeline(ctx.device(), pipeline);
 }
 
 }  // namespace wg::vk

@@ -6,6 +6,7 @@
 
 #include "backends/spirv/spirv_toolchain.hpp"
 #include "runtime/vulkan/vulkan_context.hpp"
+#include "runtime/vulkan/vulkan_handle.hpp"
 
 namespace wg::vk {
 
@@ -18,7 +19,7 @@ struct CompiledModule {
 
 CompiledModule compileRuntimeShader(std::string_view glsl, RuntimeStage stage, std::string_view what);
 
-// A compute pipeline over `module`'s "main" (the caller destroys it).
-VkPipeline createComputePipeline(Context& ctx, VkShaderModule module, VkPipelineLayout layout);
+// A compute pipeline over `module`'s "main".
+UniquePipeline createComputePipeline(Context& ctx, VkShaderModule module, VkPipelineLayout layout);
 
 }  // namespace wg::vk

@@ -11,7 +11,7 @@ VkSamplerAddressMode addressMode(std::string_view wrap) {
 VkFilter filterMode(std::string_view filter) { return filter == "nearest" ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
 }  // namespace
 
-VkSampler createSampler(Context& ctx, std::string_view wrapU, std::string_view wrapV, std::string_view minFilter,
+UniqueSampler createSampler(Context& ctx, std::string_view wrapU, std::string_view wrapV, std::string_view minFilter,
                         std::string_view magFilter) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.minFilter = filterMode(minFilter);
@@ -22,10 +22,10 @@ VkSampler createSampler(Context& ctx, std::string_view wrapU, std::string_view w
   info.maxLod = 0.f;  // one level: the CPU evaluator samples level 0 too
   VkSampler sampler;
   check(vkCreateSampler(ctx.device(), &info, nullptr, &sampler), "vkCreateSampler");
-  return sampler;
+  return UniqueSampler(ctx.device(), sampler);
 }
 
-VkSampler createSampler(Context& ctx, const ReflectedTexture& t) {
+UniqueSampler createSampler(Context& ctx, const ReflectedTexture& t) {
   return createSampler(ctx, t.wrapU, t.wrapV, t.minFilter, t.magFilter);
 }
 

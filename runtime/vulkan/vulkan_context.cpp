@@ -26,7 +26,7 @@ std::string lower(std::string s) {
   return s;
 }
 
-VkInstance createInstance(bool validation, std::string& error) {
+UniqueInstance createInstance(bool validation, std::string& error) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "weathergen";
   app.apiVersion = VK_API_VERSION_1_1;
@@ -34,7 +34,7 @@ VkInstance createInstance(bool validation, std::string& error) {
   if (validation) {
     if (!hasLayer(kValidationLayer)) {
       error = "the Vulkan validation layers are not installed (Debian package vulkan-validationlayers)";
-      return VK_NULL_HANDLE;
+      return {};
     }
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -48,9 +48,9 @@ VkInstance createInstance(bool validation, std::string& error) {
   VkInstance instance = VK_NULL_HANDLE;
   if (vkCreateInstance(&info, nullptr, &instance) != VK_SUCCESS) {
     error = "no Vulkan 1.1 instance (is a driver installed? Debian: mesa-vulkan-drivers)";
-    return VK_NULL_HANDLE;
+    return {};
   }
-  return instance;
+  return UniqueInstance(instance);
 }
 
 bool matches(const VkPhysicalDeviceProperties& p, const std::string& selector) {
@@ -76,18 +76,17 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onMessage(VkDebugUtilsMessageSeverityFla
 
 std::vector<std::string> Context::listDevices(std::string& error) {
   std::vector<std::string> names;
-  VkInstance instance = createInstance(false, error);
+  UniqueInstance instance = createInstance(false, error);
   if (!instance) return names;
   std::uint32_t count = 0;
-  vkEnumeratePhysicalDevices(instance, &count, nullptr);
+  vkEnumeratePhysicalDevices(instance.get(), &count, nullptr);
   std::vector<VkPhysicalDevice> devices(count);
-  vkEnumeratePhysicalDevices(instance, &count, devices.data());
+  vkEnumeratePhysicalDevices(instance.get(), &count, devices.data());
   for (auto d : devices) {
     VkPhysicalDeviceProperties p;
     vkGetPhysicalDeviceProperties(d, &p);
     names.emplace_back(p.deviceName);
   }
-  vkDestroyInstance(instance, nullptr);
   return names;
 }
 
@@ -97,22 +96,24 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options, std::str
   if (!ctx->instance_) return nullptr;
   if (options.validation) {
     auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(ctx->instance_, "vkCreateDebugUtilsMessengerEXT"));
+        vkGetInstanceProcAddr(ctx->instance(), "vkCreateDebugUtilsMessengerEXT"));
     VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                        VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     info.pfnUserCallback = onMessage;
     info.pUserData = ctx.get();
-    if (!createMessenger || createMessenger(ctx->instance_, &info, nullptr, &ctx->messenger_) != VK_SUCCESS) {
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    if (!createMessenger || createMessenger(ctx->instance(), &info, nullptr, &messenger) != VK_SUCCESS) {
       error = "cannot attach to the validation layers";
       return nullptr;
     }
+    ctx->messenger_ = UniqueDebugMessenger(ctx->instance(), messenger);
   }
   std::uint32_t count = 0;
-  vkEnumeratePhysicalDevices(ctx->instance_, &count, nullptr);
+  vkEnumeratePhysicalDevices(ctx->instance(), &count, nullptr);
   std::vector<VkPhysicalDevice> devices(count);
-  vkEnumeratePhysicalDevices(ctx->instance_, &count, devices.data());
+  vkEnumeratePhysicalDevices(ctx->instance(), &count, devices.data());
   // With no selector, prefer a CPU device: results then match CI's lavapipe.
   std::stable_sort(devices.begin(), devices.end(), [](VkPhysicalDevice a, VkPhysicalDevice b) {
     VkPhysicalDeviceProperties pa, pb;
@@ -151,30 +152,24 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options, std::str
   VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   deviceInfo.queueCreateInfoCount = 1;
   deviceInfo.pQueueCreateInfos = &queueInfo;
-  if (vkCreateDevice(ctx->physical_, &deviceInfo, nullptr, &ctx->device_) != VK_SUCCESS) {
+  VkDevice device = VK_NULL_HANDLE;
+  if (vkCreateDevice(ctx->physical_, &deviceInfo, nullptr, &device) != VK_SUCCESS) {
     error = "cannot create a logical device on " + ctx->deviceName();
     return nullptr;
   }
-  vkGetDeviceQueue(ctx->device_, ctx->queueFamily_, 0, &ctx->queue_);
+  ctx->device_ = UniqueDevice(device);
+  vkGetDeviceQueue(device, ctx->queueFamily_, 0, &ctx->queue_);
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.queueFamilyIndex = ctx->queueFamily_;
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  check(vkCreateCommandPool(ctx->device_, &poolInfo, nullptr, &ctx->commandPool_), "vkCreateCommandPool");
+  VkCommandPool pool = VK_NULL_HANDLE;
+  check(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
+  ctx->commandPool_ = UniqueCommandPool(device, pool);
   return ctx;
 }
 
 Context::~Context() {
-  if (device_) {
-    vkDeviceWaitIdle(device_);
-    if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
-    vkDestroyDevice(device_, nullptr);
-  }
-  if (messenger_) {
-    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-    if (destroy) destroy(instance_, messenger_, nullptr);
-  }
-  if (instance_) vkDestroyInstance(instance_, nullptr);
+  if (device_) vkDeviceWaitIdle(device_.get());
 }
 
 std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags flags) const {
@@ -183,16 +178,17 @@ std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFl
   return UINT32_MAX;
 }
 
-VkCommandBuffer Context::beginOneTime() {
+UniqueCommandBuffer Context::beginOneTime() {
   VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  info.commandPool = commandPool_;
+  info.commandPool = commandPool_.get();
   info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   info.commandBufferCount = 1;
-  VkCommandBuffer cmd;
-  check(vkAllocateCommandBuffers(device_, &info, &cmd), "vkAllocateCommandBuffers");
+  VkCommandBuffer raw;
+  check(vkAllocateCommandBuffers(device(), &info, &raw), "vkAllocateCommandBuffers");
+  UniqueCommandBuffer cmd({device(), commandPool_.get()}, raw);
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+  check(vkBeginCommandBuffer(raw, &begin), "vkBeginCommandBuffer");
   return cmd;
 }
 
@@ -203,7 +199,6 @@ void Context::endOneTime(VkCommandBuffer cmd) {
   submit.pCommandBuffers = &cmd;
   check(vkQueueSubmit(queue_, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
   check(vkQueueWaitIdle(queue_), "vkQueueWaitIdle");
-  vkFreeCommandBuffers(device_, commandPool_, 1, &cmd);
 }
 
 }  // namespace wg::vk

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "runtime/vulkan/vulkan_handle.hpp"
+
 namespace wg::vk {
 
 struct ContextOptions {
@@ -24,15 +26,15 @@ class Context {
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
-  VkInstance instance() const { return instance_; }
+  VkInstance instance() const { return instance_.get(); }
   VkPhysicalDevice physicalDevice() const { return physical_; }
-  VkDevice device() const { return device_; }
+  VkDevice device() const { return device_.get(); }
   VkQueue queue() const { return queue_; }
   std::uint32_t queueFamily() const { return queueFamily_; }
-  VkCommandPool commandPool() const { return commandPool_; }
+  VkCommandPool commandPool() const { return commandPool_.get(); }
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   std::string deviceName() const { return properties_.deviceName; }
-  bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+  bool validationEnabled() const { return static_cast<bool>(messenger_); }
 
   // Validation messages (warnings and errors) seen so far.
   const std::vector<std::string>& validationMessages() const { return messages_; }
@@ -44,31 +46,33 @@ class Context {
   // Records commands into a fresh command buffer, submits and waits.
   template <typename Record>
   void submitAndWait(Record&& record) {
-    VkCommandBuffer cmd = beginOneTime();
-    record(cmd);
-    endOneTime(cmd);
+    UniqueCommandBuffer cmd = beginOneTime();
+    record(cmd.get());
+    endOneTime(cmd.get());
   }
 
   static std::vector<std::string> listDevices(std::string& error);
 
  private:
   Context() = default;
-  VkCommandBuffer beginOneTime();
+  UniqueCommandBuffer beginOneTime();
   void endOneTime(VkCommandBuffer cmd);
   static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                   VkDebugUtilsMessageTypeFlagsEXT types,
                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
-  VkInstance instance_ = VK_NULL_HANDLE;
-  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  // Destroyed bottom-up: the pool, the device, the messenger, the instance. The
+  // messenger may still report while the device goes, so messages_ outlives it.
+  std::vector<std::string> messages_;
+  UniqueInstance instance_;
+  UniqueDebugMessenger messenger_;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
-  VkDevice device_ = VK_NULL_HANDLE;
+  UniqueDevice device_;
   VkQueue queue_ = VK_NULL_HANDLE;
   std::uint32_t queueFamily_ = 0;
-  VkCommandPool commandPool_ = VK_NULL_HANDLE;
+  UniqueCommandPool commandPool_;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_{};
-  std::vector<std::string> messages_;
 };
 
 // Throws std::runtime_error naming the call when a Vulkan call fails.
