@@ -4,7 +4,6 @@
 #include <functional>
 #include <stdexcept>
 
-#include "compiler/debug_views.hpp"
 #include "nodes/core_library.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
@@ -44,31 +43,8 @@ class StageWriter {
     source.alphaTested = graph_.alphaTested();
     source.alphaCutoff = graph_.alphaCutoff;
     source.alphaBlended = graph_.alphaMode == AlphaMode::Blend;
-    if (stage_ == ShaderStage::Fragment) {
-      for (const auto& view : kDebugViews) {
-        std::string expression;
-        if (view.coverage)
-          expression = syntax_.splat(ValueType::Vec3, coverageLocal(*view.coverage));
-        else if (view.name == "albedo")
-          expression = "wg_baseColor";
-        else if (view.name == "roughness")
-          expression = syntax_.splat(ValueType::Vec3, "wg_roughness");
-        else if (view.name == "normal")
-          expression = "(wg_N * 0.5 + 0.5)";
-        else if (view.name == "position")
-          expression = "wg_worldPosition";
-        else if (view.name == "geometricNormal")
-          expression = "wg_worldNormal";
-        else if (view.name == "texcoord")
-          expression = std::string(syntax_.typeName(ValueType::Vec3)) + "(wg_texcoord, 0.0)";
-        else if (view.name == "tangent")
-          expression = "wg_worldTangent.xyz";
-        else
-          continue;  // "lit" is the default colour
-        source.debugViews.push_back({view.id, view.name, std::move(expression),
-                                     view.name == "tangent" ? "wg_worldTangent.w" : ""});
-      }
-    }
+    if (stage_ == ShaderStage::Fragment)
+      for (const auto& view : graph_.debugViews) source.debugViews.push_back(debugView(view));
     return syntax_.assemble(source);
   }
 
@@ -82,6 +58,22 @@ class StageWriter {
     if (stage_ == ShaderStage::Fragment)
       for (std::size_t t = 0; t < kCoverageCount; ++t) slots.push_back(kPbrFieldCount + t);
     return slots;
+  }
+
+  // A view's colour and, for the tangent, its alpha, in the target language.
+  DebugView debugView(const IrDebugView& view) const {
+    switch (view.source) {
+      case DebugSource::Slot:
+        if (slotType(view.slot) == ValueType::Vec3) return {view.id, view.name, slotLocal(view.slot), ""};
+        return {view.id, view.name, syntax_.splat(ValueType::Vec3, slotLocal(view.slot)), ""};
+      case DebugSource::ShadingNormal: return {view.id, view.name, "(wg_N * 0.5 + 0.5)", ""};
+      case DebugSource::WorldPosition: return {view.id, view.name, "wg_worldPosition", ""};
+      case DebugSource::GeometricNormal: return {view.id, view.name, "wg_worldNormal", ""};
+      case DebugSource::Texcoord:
+        return {view.id, view.name, std::string(syntax_.typeName(ValueType::Vec3)) + "(wg_texcoord, 0.0)", ""};
+      case DebugSource::Tangent: return {view.id, view.name, "wg_worldTangent.xyz", "wg_worldTangent.w"};
+    }
+    throw std::logic_error("unhandled debug source");
   }
 
   static std::string coverageLocal(CoverageTerm term) {
@@ -108,15 +100,20 @@ class StageWriter {
       if (needed_[i] && !graph_.nodes[i].weather) emitNode(i, body, "  ");
     const auto slots = stageSlots();
     for (std::size_t slot : slots) {
-      const Operand& base = graph_.weatherGuarded ? graph_.unweathered[slot] : graph_.outputs[slot];
+      const Operand& base = graph_.weatherGuarded() ? graph_.unweathered[slot] : graph_.outputs[slot];
       body += "  ";
       body += syntax_.typeName(slotType(slot));
       body += " " + slotLocal(slot) + " = " + operandExpression(base, slotType(slot)) + ";\n";
     }
     bool anyGuarded = false;
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i) anyGuarded = anyGuarded || (needed_[i] && graph_.nodes[i].weather);
-    if (!graph_.weatherGuarded || !anyGuarded) return;
-    body += "  if (frame_snowLevel + frame_wetnessLevel + frame_mossLevel + frame_frostLevel + frame_puddleLevel > 0.0) {\n";
+    if (!graph_.weatherGuarded() || !anyGuarded) return;
+    body += "  if (";
+    for (std::size_t i = 0; i < graph_.weatherGuard.size(); ++i) {
+      if (i) body += " + ";
+      body += graph_.weatherGuard[i];
+    }
+    body += " > 0.0) {\n";
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
       if (needed_[i] && graph_.nodes[i].weather) emitNode(i, body, "    ");
     for (std::size_t slot : slots)
@@ -129,7 +126,7 @@ class StageWriter {
     needed_.assign(graph_.nodes.size(), false);
     for (std::size_t slot : stageSlots()) {
       for (const Operand* o : {&graph_.outputs[slot], &graph_.unweathered[slot]}) {
-        if (o == &graph_.unweathered[slot] && !graph_.weatherGuarded) continue;
+        if (o == &graph_.unweathered[slot] && !graph_.weatherGuarded()) continue;
         if (o->kind == Operand::Kind::Node) needed_[o->node] = true;
       }
     }

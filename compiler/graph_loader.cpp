@@ -51,8 +51,6 @@ std::optional<std::int64_t> integralValue(const nlohmann::json& j) {
 // Switch names and values appear in variant names ("quality=low,snow=on") and on the
 // command line, and include aliases prefix names ("stone.albedo"), so all are plain words.
 constexpr std::size_t kMaxSwitchValues = 16;
-constexpr const char* kPlainWordHint = "use letters, digits, '_' and '-' only, starting with a letter";
-
 bool isPlainWord(std::string_view word) {
   constexpr std::size_t kMaxWord = 32;
   if (word.empty() || word.size() > kMaxWord || !std::isalpha(static_cast<unsigned char>(word[0]))) return false;
@@ -128,8 +126,9 @@ class Loader {
     if (!mode) return;
     graph_.alphaMode = parseAlphaMode(mode->get<std::string>());
     if (!graph_.alphaMode)
-      report(DiagCode::InvalidSetting, "/alphaMode",
-             {"unknown alphaMode '" + quoteUserText(mode->get<std::string>()) + "'", "use opaque, mask or blend"});
+      report(DiagCode::UnknownAlphaMode, "/alphaMode",
+             {quoteUserText(mode->get<std::string>()),
+              unknownNameHint(mode->get<std::string>(), {"opaque", "mask", "blend"}, "alpha modes")});
   }
 
   // Parameters, textures and nodes: what a graph and a library both declare.
@@ -184,7 +183,7 @@ class Loader {
   void loadLibrary(const std::string& alias, const nlohmann::json& path) {
     std::string at = appendPointer("/include", alias);
     if (!isPlainWord(alias)) {
-      report(DiagCode::InvalidSetting, at, {"include alias '" + quoteUserText(alias) + "' is not a plain word", kPlainWordHint});
+      report(DiagCode::NotAPlainWord, at, {"include alias", quoteUserText(alias)});
       return;
     }
     if (!expectKind(path, at, nlohmann::json::value_t::string, "an include", "the path of a graph library")) return;
@@ -523,70 +522,79 @@ class Loader {
     std::string pointer = appendPointer("/switches", name);
     if (!expectKind(j, pointer, nlohmann::json::value_t::object, "a switch", "an object")) return;
     checkFields(j, pointer, {"type", "values", "default", "description"});
-    std::string shown = quoteUserText(name);
     SwitchDecl sw;
     sw.name = name;
     sw.pointer = pointer;
-    if (!isPlainWord(name))
-      report(DiagCode::InvalidSwitch, pointer, {shown, "the name is not a plain word", kPlainWordHint});
-    bool isBool = false;
-    if (auto* type = optionalString(j, pointer, "type")) {
-      isBool = type->get<std::string>() == "bool";
-      if (!isBool)
-        report(DiagCode::InvalidSwitch, appendPointer(pointer, "type"),
-               {shown, "type '" + quoteUserText(type->get<std::string>()) + "' is not a switch type",
-                "use \"type\": \"bool\", or list the choices in \"values\""});
-    }
-    if (isBool == j.contains("values")) {
-      report(DiagCode::InvalidSwitch, pointer, {shown, "it needs exactly one of \"type\": \"bool\" and \"values\"",
-                                                "write {\"type\": \"bool\", \"default\": true} or {\"values\": [\"low\", \"high\"], \"default\": \"high\"}"});
-      return;
-    }
-    if (isBool) {
+    if (!isPlainWord(name)) report(DiagCode::NotAPlainWord, pointer, {"switch", quoteUserText(name)});
+    std::optional<bool> isBool = switchIsBool(sw, j);
+    if (!isBool) return;
+    if (*isBool)
       sw.values = {std::string(kSwitchOff), std::string(kSwitchOn)};
-    } else {
-      std::string vp = appendPointer(pointer, "values");
-      const auto& values = j["values"];
-      if (!expectKind(values, vp, nlohmann::json::value_t::array, "'values'", "an array of strings")) return;
-      if (values.size() < 2 || values.size() > kMaxSwitchValues) {
-        report(DiagCode::InvalidSwitch, vp, {shown, "it lists " + std::to_string(values.size()) + " values",
-                                             "list 2 to " + std::to_string(kMaxSwitchValues) + " values"});
-        return;
-      }
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        std::string at = appendPointer(vp, i);
-        if (!expectKind(values[i], at, nlohmann::json::value_t::string, "a switch value", "a string")) return;
-        std::string v = values[i].get<std::string>();
-        if (!isPlainWord(v)) {
-          report(DiagCode::InvalidSwitch, at, {shown, "value '" + quoteUserText(v) + "' is not a plain word", kPlainWordHint});
-          return;
-        }
-        if (std::find(sw.values.begin(), sw.values.end(), v) != sw.values.end()) {
-          report(DiagCode::InvalidSwitch, at, {shown, "value '" + v + "' is listed twice", "list each value once"});
-          return;
-        }
-        sw.values.push_back(v);
+    else if (!loadSwitchValues(sw, j["values"]))
+      return;
+    if (loadSwitchDefault(sw, j, *isBool)) graph_.switches.push_back(std::move(sw));
+  }
+
+  // Whether the switch is a bool, or nullopt when it is neither or both.
+  std::optional<bool> switchIsBool(const SwitchDecl& sw, const nlohmann::json& j) {
+    bool isBool = false;
+    if (auto* type = optionalString(j, sw.pointer, "type")) {
+      isBool = type->get<std::string>() == "bool";
+      if (!isBool) {
+        report(DiagCode::InvalidSwitchType, appendPointer(sw.pointer, "type"),
+               {quoteUserText(sw.name), quoteUserText(type->get<std::string>())});
+        return std::nullopt;
       }
     }
+    if (isBool != j.contains("values")) return isBool;
+    report(DiagCode::SwitchKindAmbiguous, sw.pointer, {quoteUserText(sw.name)});
+    return std::nullopt;
+  }
+
+  bool loadSwitchValues(SwitchDecl& sw, const nlohmann::json& values) {
+    std::string vp = appendPointer(sw.pointer, "values");
+    if (!expectKind(values, vp, nlohmann::json::value_t::array, "'values'", "an array of strings")) return false;
+    if (values.size() < 2 || values.size() > kMaxSwitchValues) {
+      report(DiagCode::SwitchValueCount, vp,
+             {quoteUserText(sw.name), std::to_string(values.size()) + (values.size() == 1 ? " value" : " values"),
+              std::to_string(kMaxSwitchValues)});
+      return false;
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      std::string at = appendPointer(vp, i);
+      if (!expectKind(values[i], at, nlohmann::json::value_t::string, "a switch value", "a string")) return false;
+      std::string v = values[i].get<std::string>();
+      if (!isPlainWord(v)) {
+        report(DiagCode::NotAPlainWord, at, {"switch '" + quoteUserText(sw.name) + "': value", quoteUserText(v)});
+        return false;
+      }
+      if (std::find(sw.values.begin(), sw.values.end(), v) != sw.values.end()) {
+        report(DiagCode::DuplicateSwitchValue, at, {quoteUserText(sw.name), v});
+        return false;
+      }
+      sw.values.push_back(v);
+    }
+    return true;
+  }
+
+  bool loadSwitchDefault(SwitchDecl& sw, const nlohmann::json& j, bool isBool) {
     auto it = j.find("default");
     if (it == j.end()) {
-      report(DiagCode::MissingField, pointer, {"default"});
-      return;
+      report(DiagCode::MissingField, sw.pointer, {"default"});
+      return false;
     }
-    std::string dp = appendPointer(pointer, "default");
+    std::string dp = appendPointer(sw.pointer, "default");
     if (isBool) {
-      if (!expectKind(*it, dp, nlohmann::json::value_t::boolean, "the default of a bool switch", "true or false")) return;
+      if (!expectKind(*it, dp, nlohmann::json::value_t::boolean, "the default of a bool switch", "true or false")) return false;
       sw.defaultValue = it->get<bool>() ? kSwitchOn : kSwitchOff;
-    } else {
-      if (!expectKind(*it, dp, nlohmann::json::value_t::string, "the default", "one of the values")) return;
-      sw.defaultValue = it->get<std::string>();
-      if (std::find(sw.values.begin(), sw.values.end(), sw.defaultValue) == sw.values.end()) {
-        report(DiagCode::InvalidSwitch, dp, {shown, "the default '" + quoteUserText(sw.defaultValue) + "' is not one of its values",
-                                             "use one of: " + listNames(sw.values)});
-        return;
-      }
+      return true;
     }
-    graph_.switches.push_back(std::move(sw));
+    if (!expectKind(*it, dp, nlohmann::json::value_t::string, "the default", "one of the values")) return false;
+    sw.defaultValue = it->get<std::string>();
+    if (std::find(sw.values.begin(), sw.values.end(), sw.defaultValue) != sw.values.end()) return true;
+    report(DiagCode::UnknownSwitchValue, dp,
+           {quoteUserText(sw.name), "'" + quoteUserText(sw.defaultValue) + "'", listNames(sw.values)});
+    return false;
   }
 
   // {"id": "detail", "op": "switch", "switch": "quality", "cases": {"low": 0.5, "high": "noise.out"}}

@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compiler/material_graph.hpp"
@@ -59,6 +60,16 @@ const std::array<CoverageInfo, kCoverageCount>& coverageTerms();
 // Every root of the graph: the PBR fields, then the coverage terms.
 inline constexpr std::size_t kIrOutputCount = kPbrFieldCount + kCoverageCount;
 
+// What a fragment debug view (frame_debugView) shows instead of the lit colour: an
+// output slot, or a value the stage frame computes.
+enum class DebugSource : std::uint8_t { Slot, ShadingNormal, WorldPosition, GeometricNormal, Texcoord, Tangent };
+struct IrDebugView {
+  std::uint32_t id;
+  std::string_view name;
+  DebugSource source;
+  std::size_t slot = 0;  // DebugSource::Slot: index into IrGraph::outputs
+};
+
 struct IrGraph {
   std::string name;
   std::vector<IrNode> nodes;  // always in a valid topological order
@@ -75,19 +86,24 @@ struct IrGraph {
   // The bindings as they were before weather-inject. Shaders use them while every
   // weather level is 0 and run the weather nodes only otherwise (one uniform branch).
   std::array<Operand, kIrOutputCount> unweathered;
-  bool weatherGuarded = false;
+  // The frame uniforms whose sum, when above 0, runs the weather nodes; empty when the
+  // weather is off and nothing is guarded.
+  std::vector<std::string_view> weatherGuard;
+  std::vector<IrDebugView> debugViews;  // the fragment stage's views besides "lit"
+
+  bool weatherGuarded() const { return !weatherGuard.empty(); }
 
   // Every root: the outputs, then (with weather) the unweathered bindings.
   template <typename F>
   void forEachRoot(F&& f) {
     for (auto& o : outputs) f(o);
-    if (weatherGuarded)
+    if (weatherGuarded())
       for (auto& o : unweathered) f(o);
   }
   template <typename F>
   void forEachRoot(F&& f) const {
     for (const auto& o : outputs) f(o);
-    if (weatherGuarded)
+    if (weatherGuarded())
       for (const auto& o : unweathered) f(o);
   }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "compiler/debug_views.hpp"
 #include "compiler/literal.hpp"
 #include "nodes/op_registry.hpp"
 
@@ -65,6 +66,7 @@ class Builder {
     if (!orderAndDetectCycles()) return std::nullopt;
     if (!checkDepth()) return std::nullopt;
     ir_.name = graph_.name;
+    ir_.debugViews = fragmentDebugViews();
     ir_.parameters = graph_.parameters;
     ir_.includedFiles = graph_.includedFiles;
     ir_.textures = graph_.textures;
@@ -395,9 +397,7 @@ class Builder {
       case ValueRule::SwizzleText: {
         int w = accessorWidth("." + node.text, width);
         if (w == 0) {
-          report(DiagCode::InvalidSetting, textPointer(p),
-                 {"swizzle channels '" + quoteUserText(node.text) + "' do not fit a " + std::string(typeName(generic)),
-                  "use 1 to 4 channels the input has, all from x, y, z, w or all from r, g, b, a"});
+          report(DiagCode::SwizzleMismatch, textPointer(p), {quoteUserText(node.text), typeName(generic)});
           ok = false;
         }
         node.valueType = floatVectorOfWidth(std::max(w, 1));

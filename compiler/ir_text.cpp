@@ -65,7 +65,7 @@ std::string formatIrText(const IrGraph& graph) {
   out += "nodes:\n";
   for (std::size_t i = 0; i < graph.nodes.size(); ++i) out += nodeText(graph, i);
   out += "outputs:\n" + rootsText(graph, graph.outputs);
-  if (graph.weatherGuarded) out += "outputs without weather:\n" + rootsText(graph, graph.unweathered);
+  if (graph.weatherGuarded()) out += "outputs without weather:\n" + rootsText(graph, graph.unweathered);
   return out;
 }
 

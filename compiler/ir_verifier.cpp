@@ -140,7 +140,7 @@ std::string verifyIr(const IrGraph& graph, const IrVerifyOptions& options) {
   for (std::size_t i = 0; i < graph.nodes.size(); ++i)
     if (std::string problem = checkNode(graph, i); !problem.empty()) return problem;
   if (std::string problem = checkRoots(graph, graph.outputs, "output"); !problem.empty()) return problem;
-  if (graph.weatherGuarded)
+  if (graph.weatherGuarded())
     if (std::string problem = checkRoots(graph, graph.unweathered, "unweathered output"); !problem.empty()) return problem;
   return options.canonicalOrder ? checkCanonicalOrder(graph) : "";
 }

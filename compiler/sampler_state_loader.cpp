@@ -1,5 +1,9 @@
 #include "compiler/sampler_state_loader.hpp"
 
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostic.hpp"
 #include "compiler/literal.hpp"
 
 namespace wg {
@@ -25,9 +29,7 @@ class SamplerStateLoader {
       return;
     }
     if (j.size() != 2) {
-      report(DiagCode::InvalidSamplerSetting, at,
-             {shown_, "'wrap' lists " + std::to_string(j.size()) + (j.size() == 1 ? " mode" : " modes"),
-              "give one mode, or two as [u, v]: [\"repeat\", \"clamp\"]"});
+      report(DiagCode::WrapModeCount, at, {shown_, std::to_string(j.size()) + (j.size() == 1 ? " mode" : " modes")});
       return;
     }
     auto u = wrapMode(j[0], appendPointer(at, 0));
@@ -61,35 +63,41 @@ class SamplerStateLoader {
 
   void colorSpace(const nlohmann::json& j, bool procedural, SamplerState& state) {
     const std::string at = appendPointer(pointer_, "colorSpace");
-    auto space = choice(j, at, "colour space", "srgb or linear", parseColorSpace);
+    auto space = choice(j, at, "colour space", {"srgb", "linear"}, parseColorSpace);
     if (space && procedural && *space == ColorSpace::Srgb)
-      report(DiagCode::InvalidSamplerSetting, at,
-             {shown_, "a procedural texture cannot be sRGB", "generators make linear values; colorSpace srgb is for image files"});
+      report(DiagCode::ProceduralSrgb, at, {shown_});
     else if (space)
       state.colorSpace = *space;
   }
 
  private:
   std::optional<TextureWrap> wrapMode(const nlohmann::json& j, const std::string& at) {
-    return choice(j, at, "wrap mode", "repeat, clamp or mirror", parseTextureWrap);
+    return choice(j, at, "wrap mode", {"repeat", "clamp", "mirror"}, parseTextureWrap);
   }
   std::optional<TextureFilter> filterMode(const nlohmann::json& j, const std::string& at) {
-    return choice(j, at, "filter", "linear or nearest", parseTextureFilter);
+    return choice(j, at, "filter", {"linear", "nearest"}, parseTextureFilter);
   }
 
   // One of a setting's spellings, read by `parse`.
   template <class T>
-  std::optional<T> choice(const nlohmann::json& j, const std::string& at, const std::string& noun, std::string_view choices,
-                          std::optional<T> (*parse)(std::string_view)) {
+  std::optional<T> choice(const nlohmann::json& j, const std::string& at, const std::string& noun,
+                          const std::vector<std::string_view>& choices, std::optional<T> (*parse)(std::string_view)) {
     if (!j.is_string()) {
-      wrongKind(at, "the " + noun, choices, j);
+      wrongKind(at, "the " + noun, alternatives(choices), j);
       return std::nullopt;
     }
-    auto value = parse(j.get<std::string>());
-    if (!value)
-      report(DiagCode::InvalidSamplerSetting, at,
-             {shown_, "unknown " + noun + " '" + quoteUserText(j.get<std::string>()) + "'", "use " + std::string(choices)});
+    const std::string text = j.get<std::string>();
+    auto value = parse(text);
+    if (!value) report(DiagCode::UnknownSamplerValue, at, {shown_, noun, quoteUserText(text), unknownNameHint(text, choices, noun + "s")});
     return value;
+  }
+
+  // "a, b or c".
+  static std::string alternatives(const std::vector<std::string_view>& choices) {
+    std::string text;
+    for (std::size_t i = 0; i < choices.size(); ++i)
+      text += std::string(i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + std::string(choices[i]);
+    return text;
   }
 
   void wrongKind(const std::string& at, std::string_view what, std::string_view expected, const nlohmann::json& j) {

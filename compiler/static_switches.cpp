@@ -157,8 +157,7 @@ class SwitchResolver {
       }
     auto name = setting.find("switch");
     if (name == setting.end() || !name->is_string()) {
-      report(DiagCode::InvalidWeatherEffect, at,
-             {effect, "a weather effect is true, false or {\"switch\": NAME}", "write e.g. {\"switch\": \"moss\"}"});
+      report(DiagCode::WeatherEffectForm, at, {effect});
       return std::nullopt;
     }
     const SwitchDecl* s = findSwitch(name->get<std::string>());
@@ -170,9 +169,7 @@ class SwitchResolver {
     auto when = setting.find("when");
     if (when == setting.end()) {
       if (s->values != std::vector<std::string>{std::string(kSwitchOff), std::string(kSwitchOn)}) {
-        report(DiagCode::InvalidWeatherEffect, at,
-               {effect, "switch '" + quoteUserText(s->name) + "' is not a bool switch, so the effect needs 'when'",
-                "add \"when\": the values that turn the effect on, e.g. [\"" + s->values.back() + "\"]"});
+        report(DiagCode::WeatherEffectNeedsWhen, at, {effect, quoteUserText(s->name), s->values.back()});
         return std::nullopt;
       }
       return value == kSwitchOn;

@@ -3,6 +3,7 @@
 // graph is left as it is; only the output bindings move to the weathered values. With
 // preset "none" the pass does nothing, so the shader is exactly the unweathered one.
 #include <algorithm>
+#include <iterator>
 
 #include "compiler/ir_node_builder.hpp"
 #include "compiler/pass_pipeline.hpp"
@@ -210,10 +211,14 @@ class WeatherInjector {
 
 }  // namespace
 
+// Every weather level: while all are 0 the weather nodes leave the material as it was.
+constexpr std::string_view kWeatherLevels[] = {"frame_snowLevel", "frame_wetnessLevel", "frame_mossLevel",
+                                               "frame_frostLevel", "frame_puddleLevel"};
+
 void injectWeather(IrGraph& graph) {
   if (!graph.weather.active()) return;
   graph.unweathered = graph.outputs;
-  graph.weatherGuarded = true;
+  graph.weatherGuard.assign(std::begin(kWeatherLevels), std::end(kWeatherLevels));
   WeatherInjector(graph).run();
 }
 

@@ -154,7 +154,7 @@ TEST_F(GraphLibrary, BadIncludesAreReportedByCode) {
   EXPECT_EQ(codeOf(wallGraph("lib/nested.json")), "WG1005");
   writeFile(dir_.path() / "lib" / "truncated.json", R"({"nodes": [)");
   EXPECT_EQ(codeOf(wallGraph("lib/truncated.json")), "WG1001");
-  EXPECT_EQ(codeOf(R"({"name": "w", "include": {"two words": "lib/stone.json"}, "nodes": [], "output": {}})"), "WG2014");
+  EXPECT_EQ(codeOf(R"({"name": "w", "include": {"two words": "lib/stone.json"}, "nodes": [], "output": {}})"), "WG2021");
   // A graph parameter that a library also declares under the same prefixed name.
   EXPECT_EQ(codeOf(R"({"name": "w", "include": {"stone": "lib/stone.json"},
                        "parameters": {"stone.tint": {"type": "vec3", "default": [1, 1, 1]}}, "nodes": [], "output": {}})"),

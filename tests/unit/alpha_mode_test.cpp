@@ -121,8 +121,8 @@ std::vector<std::pair<DiagCode, std::string>> diagnosticsOf(const std::string& t
 
 TEST(AlphaMode, MalformedValuesAreRefused) {
   using Diags = std::vector<std::pair<DiagCode, std::string>>;
-  EXPECT_EQ(diagnosticsOf(graph(R"("alphaMode": "translucent",)")), (Diags{{DiagCode::InvalidSetting, "/alphaMode"}}));
-  EXPECT_EQ(diagnosticsOf(graph(R"("alphaMode": "BLEND",)")), (Diags{{DiagCode::InvalidSetting, "/alphaMode"}}));
+  EXPECT_EQ(diagnosticsOf(graph(R"("alphaMode": "translucent",)")), (Diags{{DiagCode::UnknownAlphaMode, "/alphaMode"}}));
+  EXPECT_EQ(diagnosticsOf(graph(R"("alphaMode": "BLEND",)")), (Diags{{DiagCode::UnknownAlphaMode, "/alphaMode"}}));
   EXPECT_EQ(diagnosticsOf(graph(R"("alphaMode": 2,)")), (Diags{{DiagCode::WrongJsonKind, "/alphaMode"}}));
   EXPECT_EQ(diagnosticsOf(graph(R"("doubleSided": "yes",)")), (Diags{{DiagCode::WrongJsonKind, "/doubleSided"}}));
   EXPECT_EQ(diagnosticsOf(graph(R"("doubleSided": 1,)")), (Diags{{DiagCode::WrongJsonKind, "/doubleSided"}}));

@@ -20,7 +20,7 @@ TEST(GraphValidation, MixedSwizzleSetsAreRejectedNotMiscompiled) {
   auto codes = codesFor(testing::graphJson(
       R"({"id": "uv", "op": "texcoord"}, {"id": "s", "op": "swizzle", "inputs": {"in": "uv.out", "channels": "xg"}})",
       R"("roughness": "s.out")"));
-  EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::InvalidSetting});
+  EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::SwizzleMismatch});
   EXPECT_TRUE(codesFor(testing::graphJson(
                            R"({"id": "uv", "op": "texcoord"}, {"id": "s", "op": "swizzle", "inputs": {"in": "uv.out", "channels": "g"}})",
                            R"("roughness": "s.out")"))

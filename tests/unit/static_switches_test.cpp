@@ -115,20 +115,29 @@ TEST(StaticSwitchErrors, ReportedByCode) {
   EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"switch": "nope"}})")), std::vector<std::string>{"WG2015"});
   EXPECT_EQ(codesOf(kRoughnessGraph, {{"nope", "x"}}), std::vector<std::string>{"WG2015"});
   // WG2018: missing case, extra case. WG2017: a value the switch does not have.
-  // WG4003: the bool form on a non-bool switch.
+  // WG4003: the bool form on a non-bool switch. WG4005: an effect object without "switch".
   EXPECT_EQ(codesOf(node(R"({"id": "s", "op": "switch", "switch": "q", "cases": {"a": 0.1}})")),
             std::vector<std::string>{"WG2018"});
   EXPECT_EQ(codesOf(node(R"({"id": "s", "op": "switch", "switch": "q", "cases": {"a": 0.1, "b": 0.2, "c": 0.3}})")),
             std::vector<std::string>{"WG2018"});
   EXPECT_EQ(codesOf(kRoughnessGraph, {{"quality", "ultra"}}), std::vector<std::string>{"WG2017"});
   EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"switch": "quality"}})")), std::vector<std::string>{"WG4003"});
+  EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"when": ["high"]}})")), std::vector<std::string>{"WG4005"});
   EXPECT_EQ(codesOf(weatherGraph(R"({"moss": {"switch": "quality", "when": ["ultra"]}})")), std::vector<std::string>{"WG2017"});
-  // Declarations: bad default, duplicate value, one value, not a plain word, neither kind.
-  for (const char* decl : {R"({"values": ["a", "b"], "default": "c"})", R"({"values": ["a", "a"], "default": "a"})",
-                           R"({"values": ["a"], "default": "a"})", R"({"values": ["a b", "c"], "default": "c"})",
-                           R"({"default": "a"})", R"({"type": "enum", "values": ["a", "b"], "default": "a"})"})
+  // Declarations, each with its own code: bad default, duplicate value, one value, not a
+  // plain word, neither kind, both kinds, a type other than bool.
+  const std::pair<const char*, const char*> declarations[] = {
+      {R"({"values": ["a", "b"], "default": "c"})", "WG2017"},
+      {R"({"values": ["a", "a"], "default": "a"})", "WG2025"},
+      {R"({"values": ["a"], "default": "a"})", "WG2024"},
+      {R"({"values": ["a b", "c"], "default": "c"})", "WG2021"},
+      {R"({"default": "a"})", "WG2023"},
+      {R"({"type": "bool", "values": ["a", "b"], "default": "a"})", "WG2023"},
+      {R"({"type": "enum", "values": ["a", "b"], "default": "a"})", "WG2016"},
+  };
+  for (const auto& [decl, code] : declarations)
     EXPECT_EQ(codesOf(graphJson("", "", std::string(R"("switches": {"q": )") + decl + "}, ")),
-              std::vector<std::string>{"WG2016"})
+              std::vector<std::string>{code})
         << decl;
   // Links to a switch name its one output; a switch cannot choose itself; ids stay unique.
   EXPECT_EQ(codesOf(node(R"({"id": "s", "op": "switch", "switch": "q", "cases": {"a": 0.1, "b": 0.2}})",

@@ -232,15 +232,15 @@ TEST_F(TextureSettingsGraph, MalformedSettingsAreRefusedWithTheirPointers) {
     std::string pointer;
   };
   const Case cases[] = {
-      {R"("file": "two.png", "colorSpace": "sRGB")", D::InvalidSamplerSetting, at + "colorSpace"},
+      {R"("file": "two.png", "colorSpace": "sRGB")", D::UnknownSamplerValue, at + "colorSpace"},
       {R"("file": "two.png", "colorSpace": true)", D::WrongJsonKind, at + "colorSpace"},
-      {R"("generator": "fbm", "colorSpace": "srgb")", D::InvalidSamplerSetting, at + "colorSpace"},
-      {R"("file": "two.png", "wrap": ["repeat"])", D::InvalidSamplerSetting, at + "wrap"},
-      {R"("file": "two.png", "wrap": ["repeat", "clamp", "mirror"])", D::InvalidSamplerSetting, at + "wrap"},
-      {R"("file": "two.png", "wrap": ["repeat", "bounce"])", D::InvalidSamplerSetting, at + "wrap/1"},
+      {R"("generator": "fbm", "colorSpace": "srgb")", D::ProceduralSrgb, at + "colorSpace"},
+      {R"("file": "two.png", "wrap": ["repeat"])", D::WrapModeCount, at + "wrap"},
+      {R"("file": "two.png", "wrap": ["repeat", "clamp", "mirror"])", D::WrapModeCount, at + "wrap"},
+      {R"("file": "two.png", "wrap": ["repeat", "bounce"])", D::UnknownSamplerValue, at + "wrap/1"},
       {R"("file": "two.png", "wrap": [1, "clamp"])", D::WrongJsonKind, at + "wrap/0"},
       {R"("file": "two.png", "wrap": {"u": "clamp"})", D::WrongJsonKind, at + "wrap"},
-      {R"("file": "two.png", "filter": {"min": "cubic"})", D::InvalidSamplerSetting, at + "filter/min"},
+      {R"("file": "two.png", "filter": {"min": "cubic"})", D::UnknownSamplerValue, at + "filter/min"},
       {R"("file": "two.png", "filter": {"max": "linear"})", D::UnknownField, at + "filter/max"},
       {R"("file": "two.png", "filter": ["linear", "nearest"])", D::WrongJsonKind, at + "filter"},
       {R"("file": "two.png", "filter": {"mag": 1})", D::WrongJsonKind, at + "filter/mag"},

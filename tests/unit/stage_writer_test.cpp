@@ -1,0 +1,70 @@
+// The stage writer takes the weather guard and the debug views from the IR: a backend
+// knows syntax, not which uniforms gate the weather or what each view shows.
+#include <gtest/gtest.h>
+
+#include "backends/shader_syntax.hpp"
+#include "backends/stage_writer.hpp"
+#include "compiler/debug_views.hpp"
+#include "compiler/pass_pipeline.hpp"
+#include "ir_fixture.hpp"
+
+namespace wg {
+namespace {
+
+IrGraph weatheredRock() {
+  IrGraph ir = testing::irBeforePasses(testing::graphJson(
+      R"({"id": "c", "op": "multiply", "inputs": {"a": [0.4, 0.4, 0.4], "b": 1.0}})", R"("baseColor": "c.out")",
+      R"("weather": {"preset": "rock"}, )"));
+  EXPECT_FALSE(runPassPipeline(ir).has_value());
+  return ir;
+}
+
+std::string fragmentText(const IrGraph& ir, ShaderLanguage language = ShaderLanguage::Glsl) {
+  MaterialInterface mi = buildMaterialInterface(ir);
+  return writeStage(ir, mi, syntaxFor(language), ShaderStage::Fragment, "0", nameNodes(ir, mi));
+}
+
+TEST(StageWriter, WeatherGuardComesFromTheIr) {
+  IrGraph ir = weatheredRock();
+  ASSERT_TRUE(ir.weatherGuarded());
+  EXPECT_NE(fragmentText(ir).find("if (frame_snowLevel + frame_wetnessLevel + frame_mossLevel + frame_frostLevel + "
+                                  "frame_puddleLevel > 0.0) {"),
+            std::string::npos);
+  ir.weatherGuard = {"frame_snowLevel"};
+  std::string text = fragmentText(ir);
+  EXPECT_NE(text.find("if (frame_snowLevel > 0.0) {"), std::string::npos);
+  EXPECT_EQ(text.find("frame_wetnessLevel +"), std::string::npos);
+}
+
+TEST(StageWriter, NoWeatherMeansNoGuard) {
+  IrGraph ir = testing::irBeforePasses(
+      testing::graphJson(R"({"id": "c", "op": "multiply", "inputs": {"a": [0.4, 0.4, 0.4], "b": 1.0}})", R"("baseColor": "c.out")"));
+  ASSERT_FALSE(runPassPipeline(ir).has_value());
+  EXPECT_FALSE(ir.weatherGuarded());
+  EXPECT_EQ(fragmentText(ir).find("> 0.0) {"), std::string::npos);
+}
+
+TEST(StageWriter, DebugViewsComeFromTheIr) {
+  IrGraph ir = weatheredRock();
+  ASSERT_EQ(ir.debugViews.size(), kDebugViews.size() - 1);  // every view but "lit"
+  std::string text = fragmentText(ir);
+  EXPECT_NE(text.find("if (frame_debugView == 4u) wg_color = vec3(wg_coverage_snow);"), std::string::npos);
+  EXPECT_NE(text.find("if (frame_debugView == 14u) { wg_color = wg_worldTangent.xyz; wg_alpha = wg_worldTangent.w; }"),
+            std::string::npos);
+
+  ir.debugViews[3].source = DebugSource::WorldPosition;  // view 4, "snow"
+  text = fragmentText(ir);
+  EXPECT_NE(text.find("if (frame_debugView == 4u) wg_color = wg_worldPosition;"), std::string::npos);
+  ir.debugViews.clear();
+  EXPECT_EQ(fragmentText(ir).find("frame_debugView =="), std::string::npos);
+}
+
+TEST(StageWriter, DebugViewsSplatScalarSlotsInEachLanguage) {
+  IrGraph ir = weatheredRock();
+  EXPECT_NE(fragmentText(ir).find("if (frame_debugView == 2u) wg_color = vec3(wg_roughness);"), std::string::npos);
+  EXPECT_NE(fragmentText(ir, ShaderLanguage::Hlsl).find("if (frame_debugView == 2u) wg_color = ((float3)(wg_roughness));"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace wg
