@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/command_line.hpp"
+#include "cli/bench_options.hpp"
 #include "cli/number_text.hpp"
 #include "compiler/literal.hpp"
 #include "cli/commands.hpp"
@@ -145,56 +145,61 @@ int runSnowWalk(vk::Context& ctx, double minutes) {
   return kExitOk;
 }
 
-}  // namespace
-
-int runBenchSnowCommand(int argc, char** argv) {
-  CommandLine cl(argc, argv, 2);
+struct BenchSnowOptions {
   std::string device;
   int frames = 120;
   double walkMinutes = 10.0;
-  while (!cl.done()) {
-    std::string error;
-    if (cl.flag("-h") || cl.flag("--help")) {
-      std::fputs(kUsage, stdout);
-      return kExitOk;
-    }
-    if (auto x = cl.valueFor("--device", error)) { device = *x; continue; }
-    if (auto x = cl.valueFor("--frames", error)) {
-      constexpr std::uint32_t kMaxFrames = 1000000;
-      const auto count = parseCountText(*x, 1, kMaxFrames);
-      frames = count ? static_cast<int>(*count) : 0;
-      if (frames < 1) error = "--frames takes a whole number of frames from 1 to 1000000";
-      else continue;
-    }
-    if (auto x = cl.valueFor("--walk-minutes", error)) {
-      walkMinutes = parseNumberText(*x).value_or(0.0);
-      if (!(walkMinutes > 0.0) || !std::isfinite(walkMinutes)) error = "--walk-minutes takes a positive number";
-      else continue;
-    }
-    std::fprintf(stderr, "weathergen: error WG9001: %s\n", error.empty() ? ("unknown option '" + quoteUserText(cl.peek()) + "'").c_str() : error.c_str());
-    return kExitUsage;
-  }
-  std::string error;
-  auto ctx = vk::Context::create({device, false}, error);
-  if (!ctx) return deviceUnavailable(error, device);
-  std::printf("Device: %s. Median of %d frames (after %d warm-up), stamps + normals, GPU timestamps.\n\n",
-              ctx->deviceName().c_str(), frames, kWarmUpFrames);
+  bool help = false;
+};
+
+std::string setWalkMinutes(const std::string& v, double& walkMinutes) {
+  walkMinutes = parseNumberText(v).value_or(0.0);
+  if (!(walkMinutes > 0.0) || !std::isfinite(walkMinutes)) return "--walk-minutes takes a positive number";
+  return "";
+}
+
+OptionTable benchSnowOptionTable(BenchSnowOptions& o) {
+  return {.options = {
+      {"--frames", "", "N", "frames measured per load (default 120)",
+       [&o](const std::string& v) { return setFrameCount(v, o.frames); }},
+      {"--walk-minutes", "", "M", "simulated minutes of the walk (default 10)",
+       [&o](const std::string& v) { return setWalkMinutes(v, o.walkMinutes); }},
+      {"--device", "", "NAME", "Vulkan device, as render takes it", storeValue(o.device)},
+      {"--help", "-h", "", "this help", storeFlag(o.help), true},
+  }};
+}
+
+// The movers on the default map, then 256 of them on smaller and larger maps.
+void measureMoverTable(vk::Context& ctx, int frames) {
   std::printf("| interactors | map | stamps/frame | GPU ms/frame | ms per interactor | vs 1 interactor |\n|---|---|---|---|---|---|\n");
   double one = 0.0;
   for (int count : {1, 16, 256, 1024}) {
-    double ms = measureMovers(*ctx, 1024, count, frames);
+    double ms = measureMovers(ctx, 1024, count, frames);
     if (count == 1) one = ms;
     std::printf("| %d | 1024² | %d | %.4f | %.5f | %.2fx |\n", count, count, ms, ms / count, one > 0 ? ms / one : 0.0);
     std::fflush(stdout);
   }
   for (std::uint32_t resolution : {512u, 2048u}) {
-    double ms = measureMovers(*ctx, resolution, 256, frames);
+    double ms = measureMovers(ctx, resolution, 256, frames);
     std::printf("| 256 | %u² | 256 | %.4f | %.5f | %.2fx |\n", resolution, ms, ms / 256, one > 0 ? ms / one : 0.0);
     std::fflush(stdout);
   }
+}
+
+}  // namespace
+
+int runBenchSnowCommand(int argc, char** argv) {
+  BenchSnowOptions o;
+  if (auto exit = parseBenchOptions(benchSnowOptionTable(o), argc, argv, o.help, kUsage)) return *exit;
+  std::string error;
+  auto ctx = vk::Context::create({o.device, false}, error);
+  if (!ctx) return deviceUnavailable(error, o.device);
+  std::printf("Device: %s. Median of %d frames (after %d warm-up), stamps + normals, GPU timestamps.\n\n",
+              ctx->deviceName().c_str(), o.frames, kWarmUpFrames);
+  measureMoverTable(*ctx, o.frames);
   std::printf("\nGlobal refill pass (1024², every texel and normal, on frames a quantum is due): %.4f ms\n",
-              measureRefill(*ctx, frames));
-  return runSnowWalk(*ctx, walkMinutes);
+              measureRefill(*ctx, o.frames));
+  return runSnowWalk(*ctx, o.walkMinutes);
 }
 
 }  // namespace wg

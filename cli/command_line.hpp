@@ -10,6 +10,7 @@ namespace wg {
 class CommandLine {
  public:
   CommandLine(int argc, char** argv, int first);
+  explicit CommandLine(std::vector<std::string> args) : args_(std::move(args)) {}
 
   bool done() const { return index_ >= args_.size(); }
   const std::string& peek() const { return args_[index_]; }

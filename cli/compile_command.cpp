@@ -21,7 +21,7 @@
 #include "cli/staged_directory.hpp"
 #include "compiler/material_input_files.hpp"
 #include "cli/progress_line.hpp"
-#include "cli/command_line.hpp"
+#include "cli/option_table.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "cli/ir_dump.hpp"
@@ -46,33 +46,8 @@ With --variants, each file set is named NAME.HASH.* after its content hash, so v
 with identical shaders share one set, and NAME.variants.json maps each variant to it.
 
 Options:
-  -o DIR, --output DIR       output directory (created if missing)
-  --target LIST              comma-separated glsl, hlsl, spirv, msl, glsles, or all
-                             (default: all = glsl,hlsl,spirv). MSL 2.0 and GLSL ES 3.10
-                             are translated by SPIRV-Cross from the validated SPIR-V
-                             of the GLSL stages
-  -O                         optimise SPIR-V with spirv-opt's performance passes
-  -O0                        no SPIR-V optimisation (default)
-  -j N                       compile N graphs at once (default: one per core); the
-                             output is byte-identical whatever N is
-  --emit-header              write NAME.hpp: the material and frame uniform blocks as
-                             C++ structs laid out as std140, with a static_assert on
-                             every offset (docs/engine-api.md)
-  --depfile FILE             write a Make-syntax depfile: each material's outputs
-                             depend on its graph, its graph libraries and its
-                             image files
-  --variants all|LIST        compile static-switch variants (docs/graph-format.md): all
-                             permutations, or LIST = SWITCH[=VALUE|VALUE...],... where a
-                             bare SWITCH means all its values; others keep their default
-  --weather-preset NAME      weather preset for every graph, replacing the graph's own
-                             (rock, terrain, foliage, river, road, none)
-  --diagnostics text|json    diagnostic format on stderr (default: text)
-  -q, --quiet                print nothing but diagnostics
-  --dump-ir-after PASS       debugging: print the IR after PASS (see list-passes; 'all'
-                             prints it after every pass) on stdout and write nothing;
-                             -o is not needed
-  -h, --help                 this help
-
+)";
+constexpr const char* kCompileUsageEnd = R"(
 Outputs are written atomically and only when every graph compiles.
 )";
 
@@ -100,16 +75,110 @@ bool parseTargets(const std::string& list, OutputTargets& t, std::string& error)
 struct Options {
   std::vector<std::string> graphs;
   std::string outputDir;
+  std::optional<std::string> targetList;  // every --target, joined by commas
   OutputTargets targets;
   bool optimize = false;
   bool json = false;
   bool quiet = false;
+  bool help = false;
   std::optional<std::string> weatherPreset;
   int jobs = 0;  // 0: one per core
   std::string depfile;
   std::optional<VariantSelection> variants;
   std::optional<std::string> dumpIrAfter;  // a pass name or "all": print IR, write nothing
 };
+
+std::string setJobs(const std::string& v, int& jobs) {
+  constexpr std::uint32_t kMaxJobs = 256;
+  const auto count = parseCountText(v, 1, kMaxJobs);
+  if (!count) return "-j takes a job count from 1 to 256";
+  jobs = static_cast<int>(*count);
+  return "";
+}
+
+std::string setDepfile(const std::string& v, std::string& depfile) {
+  if (v.empty()) return "--depfile takes a file name (it is empty; is a build variable unset?)";
+  depfile = v;
+  return "";
+}
+
+std::string setVariants(const std::string& v, std::optional<VariantSelection>& variants) {
+  std::string error;
+  variants = parseVariantSelection(v, error);
+  return error;
+}
+
+OptionTable compileOptionTable(Options& o) {
+  auto addTargets = [&o](const std::string& v) {
+    o.targetList = o.targetList ? *o.targetList + "," + v : v;
+    return std::string();
+  };
+  return {.options = {
+              {"--output", "-o", "DIR", "output directory (created if missing)", storeValue(o.outputDir)},
+              {"--target", "", "LIST",
+               "comma-separated glsl, hlsl, spirv, msl, glsles, or all\n"
+               "(default: all = glsl,hlsl,spirv). MSL 2.0 and GLSL ES 3.10\n"
+               "are translated by SPIRV-Cross from the validated SPIR-V\n"
+               "of the GLSL stages",
+               addTargets},
+              {"-O", "", "", "optimise SPIR-V with spirv-opt's performance passes", storeFlag(o.optimize)},
+              {"-O0", "", "", "no SPIR-V optimisation (default)", storeFlag(o.optimize, false)},
+              {"-j", "", "N",
+               "compile N graphs at once (default: one per core); the\n"
+               "output is byte-identical whatever N is",
+               [&o](const std::string& v) { return setJobs(v, o.jobs); }},
+              {"--emit-header", "", "",
+               "write NAME.hpp: the material and frame uniform blocks as\n"
+               "C++ structs laid out as std140, with a static_assert on\n"
+               "every offset (docs/engine-api.md)",
+               storeFlag(o.targets.header)},
+              {"--depfile", "", "FILE",
+               "write a Make-syntax depfile: each material's outputs\n"
+               "depend on its graph, its graph libraries and its\n"
+               "image files",
+               [&o](const std::string& v) { return setDepfile(v, o.depfile); }},
+              {"--variants", "", "all|LIST",
+               "compile static-switch variants (docs/graph-format.md): all\n"
+               "permutations, or LIST = SWITCH[=VALUE|VALUE...],... where a\n"
+               "bare SWITCH means all its values; others keep their default",
+               [&o](const std::string& v) { return setVariants(v, o.variants); }},
+              {"--weather-preset", "", "NAME",
+               "weather preset for every graph, replacing the graph's own\n"
+               "(rock, terrain, foliage, river, road, none)",
+               storeChecked(o.weatherPreset, checkWeatherPresetName)},
+              {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
+               [&o](const std::string& v) { return setDiagnosticsFormat(v, o.json); }},
+              {"--quiet", "-q", "", "print nothing but diagnostics", storeFlag(o.quiet)},
+              {"--dump-ir-after", "", "PASS",
+               "debugging: print the IR after PASS (see list-passes; 'all'\n"
+               "prints it after every pass) on stdout and write nothing;\n"
+               "-o is not needed",
+               storeChecked(o.dumpIrAfter, checkDumpIrPassName)},
+              {"--help", "-h", "", "this help", storeFlag(o.help), true},
+          },
+          .operand = [&o](const std::string& graph) {
+            o.graphs.push_back(graph);
+            return std::string();
+          }};
+}
+
+// Reads the command line into `o`; an exit code when the command is done (--help, or a
+// usage error already printed).
+std::optional<int> parseCompileOptions(int argc, char** argv, Options& o) {
+  o.json = jsonDiagnosticsRequested(argc, argv, 2);
+  const OptionTable table = compileOptionTable(o);
+  const OptionParseResult parsed = parseOptions(table, argc, argv, 2);
+  if (parsed.status == OptionParse::Failed) return usageError(parsed.error, o.json);
+  if (o.help) {
+    std::fputs((kCompileUsage + formatOptionList(table) + kCompileUsageEnd).c_str(), stdout);
+    return kExitOk;
+  }
+  std::string error;
+  if (!parseTargets(o.targetList.value_or("all"), o.targets, error)) return usageError(error, o.json);
+  if (o.graphs.empty()) return usageError("no input graphs", o.json);
+  if (o.outputDir.empty() && !o.dumpIrAfter) return usageError("no output directory; pass -o DIR", o.json);
+  return std::nullopt;
+}
 
 // The same diagnostic from several variants of one graph is printed once.
 void appendUnique(std::vector<Diagnostic>& all, Diagnostic d) {
@@ -183,113 +252,7 @@ std::string checkDepfileTarget(const std::string& depfile) {
   return "";
 }
 
-}  // namespace
-
-int runCompileCommand(int argc, char** argv) {
-  CommandLine cl(argc, argv, 2);
-  Options o;
-  std::string targetList = "all";
-  bool anyTarget = false;
-  // Scan once for the diagnostics format so usage errors use it too.
-  for (int i = 2; i < argc; ++i)
-    if (std::string(argv[i]) == "--diagnostics=json" || (std::string(argv[i]) == "--diagnostics" && i + 1 < argc &&
-                                                         std::string(argv[i + 1]) == "json"))
-      o.json = true;
-  while (!cl.done()) {
-    std::string error;
-    const std::string& arg = cl.peek();
-    if (cl.endOfOptions() || arg.empty() || arg[0] != '-' || arg == "-") {
-      o.graphs.push_back(cl.next());
-      continue;
-    }
-    if (cl.flag("--")) {
-      cl.markEndOfOptions();
-      continue;
-    }
-    if (cl.flag("-h") || cl.flag("--help")) {
-      std::fputs(kCompileUsage, stdout);
-      return kExitOk;
-    }
-    if (cl.flag("-O")) {
-      o.optimize = true;
-      continue;
-    }
-    if (cl.flag("-O0")) {
-      o.optimize = false;
-      continue;
-    }
-    if (cl.flag("--emit-header")) {
-      o.targets.header = true;
-      continue;
-    }
-    if (cl.flag("-q") || cl.flag("--quiet")) {
-      o.quiet = true;
-      continue;
-    }
-    if (auto v = cl.valueFor("--output", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      o.outputDir = *v;
-      continue;
-    }
-    if (auto v = cl.valueFor("-o", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      o.outputDir = *v;
-      continue;
-    }
-    if (auto v = cl.valueFor("--target", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      targetList = anyTarget ? targetList + "," + *v : *v;
-      anyTarget = true;
-      continue;
-    }
-    if (auto v = cl.valueFor("--weather-preset", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      if (std::string e = checkWeatherPresetName(*v); !e.empty()) return usageError(e, o.json);
-      o.weatherPreset = *v;
-      continue;
-    }
-    if (auto v = cl.valueFor("-j", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      constexpr std::uint32_t kMaxJobs = 256;
-      const auto jobs = parseCountText(*v, 1, kMaxJobs);
-      if (!jobs) return usageError("-j takes a job count from 1 to 256", o.json);
-      o.jobs = static_cast<int>(*jobs);
-      continue;
-    }
-    if (auto v = cl.valueFor("--depfile", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      if (v->empty()) return usageError("--depfile takes a file name (it is empty; is a build variable unset?)", o.json);
-      o.depfile = *v;
-      continue;
-    }
-    if (auto v = cl.valueFor("--variants", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      o.variants = parseVariantSelection(*v, error);
-      if (!o.variants) return usageError(error, o.json);
-      continue;
-    }
-    if (auto v = cl.valueFor("--dump-ir-after", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      if (std::string e = checkDumpIrPassName(*v); !e.empty()) return usageError(e, o.json);
-      o.dumpIrAfter = *v;
-      continue;
-    }
-    if (auto v = cl.valueFor("--diagnostics", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
-      o.json = *v == "json";
-      continue;
-    }
-    return usageError("unknown option '" + quoteUserText(arg) + "'", o.json);
-  }
-  std::string error;
-  if (!parseTargets(targetList, o.targets, error)) return usageError(error, o.json);
-  if (o.graphs.empty()) return usageError("no input graphs", o.json);
-  if (o.outputDir.empty() && !o.dumpIrAfter) return usageError("no output directory; pass -o DIR", o.json);
-
-  VariantPlan plan;
-  if (std::string e = planVariants(o.graphs, o.variants, plan); !e.empty()) return usageError(e, o.json);
-
+CompileOptions compileOptionsFor(const Options& o) {
   CompileOptions options;
   options.emitSpirv = o.targets.spirv;
   options.emitMsl = o.targets.msl;
@@ -298,9 +261,10 @@ int runCompileCommand(int argc, char** argv) {
   options.optimize = o.optimize;
   options.weatherPreset = o.weatherPreset;
   options.hashKeyedFileStem = o.variants.has_value();
-  if (o.dumpIrAfter) return dumpIrAfterPass(plan.jobs, *o.dumpIrAfter, options, o.json);
-  std::vector<Diagnostic> diagnostics;
-  bool internal = false;
+  return options;
+}
+
+std::vector<CompileResult> compileJobs(const VariantPlan& plan, const CompileOptions& options, const Options& o) {
   int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // Progress only for people: on a terminal, and not with -q or JSON diagnostics.
   ProgressLine progress(plan.jobs.size(), !o.quiet && !o.json && ::isatty(STDERR_FILENO));
@@ -309,13 +273,24 @@ int runCompileCommand(int argc, char** argv) {
     progress.update(done, job.switches.empty() ? job.graph : job.graph + " [" + variantName(job.switches) + "]");
   });
   progress.finish();
+  return results;
+}
 
-  std::vector<GraphOutput> outputs(o.graphs.size());
+// What the batch reported, each diagnostic once, and whether any was internal.
+struct BatchDiagnostics {
+  std::vector<Diagnostic> items;
+  bool internal = false;
+};
+
+// Each graph's compiled variants, in the order of the graphs.
+std::vector<GraphOutput> groupByGraph(const VariantPlan& plan, std::vector<CompileResult>& results,
+                                      std::size_t graphCount, BatchDiagnostics& diagnostics) {
+  std::vector<GraphOutput> outputs(graphCount);
   for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
     CompileResult& r = results[j];
     for (auto& d : r.diagnostics.items()) {
-      internal = internal || d.info().category == DiagCategory::Internal;
-      appendUnique(diagnostics, std::move(d));
+      diagnostics.internal = diagnostics.internal || d.info().category == DiagCategory::Internal;
+      appendUnique(diagnostics.items, std::move(d));
     }
     if (!r.material) continue;
     GraphOutput& g = outputs[plan.graphOf[j]];
@@ -324,28 +299,40 @@ int runCompileCommand(int argc, char** argv) {
     g.variants.push_back(&*r.material);
     g.switches.push_back(plan.jobs[j].switches);
   }
+  return outputs;
+}
+
+// Two graphs whose materials would write the same file names (WG2020).
+void reportNameCollisions(const std::vector<GraphOutput>& outputs, std::vector<Diagnostic>& diagnostics) {
   std::map<std::string, std::string> stemOwner;
   for (const auto& g : outputs) {
     if (g.variants.empty()) continue;
     auto [it, inserted] = stemOwner.emplace(g.stem, g.graph);
-    if (!inserted) {
-      DiagnosticList list;
-      list.report(DiagCode::OutputNameCollision, {g.graph, "/name", 0, 0},
-                  {quoteUserText(g.variants.front()->name), quoteUserText(it->second)});
-      diagnostics.push_back(list.items().front());
-    }
+    if (inserted) continue;
+    DiagnosticList list;
+    list.report(DiagCode::OutputNameCollision, {g.graph, "/name", 0, 0},
+                {quoteUserText(g.variants.front()->name), quoteUserText(it->second)});
+    diagnostics.push_back(list.items().front());
   }
+}
+
+// Prints the diagnostics; the exit code when one of them is an error.
+std::optional<int> reportDiagnostics(const BatchDiagnostics& diagnostics, bool json) {
   bool failed = false, badInput = false;
-  for (const auto& d : diagnostics) {
+  for (const auto& d : diagnostics.items) {
     failed = failed || d.info().severity == Severity::Error;
     badInput = badInput || (d.info().severity == Severity::Error && d.info().category == DiagCategory::Input);
   }
-  if (!diagnostics.empty()) printDiagnostics(diagnostics, o.json);
+  if (!diagnostics.items.empty()) printDiagnostics(diagnostics.items, json);
   // Only a batch's colliding names (WG2020, usage) leave every graph valid on its own.
-  if (failed) return internal ? kExitInternal : badInput ? kExitBadInput : kExitUsage;
+  if (!failed) return std::nullopt;
+  return diagnostics.internal ? kExitInternal : badInput ? kExitBadInput : kExitUsage;
+}
 
-  // Every file is known before the first is written.
-  std::vector<std::map<std::string, std::string>> filesOf;
+// Every file of every graph, known before the first is written; an exit code when two
+// variants disagree.
+std::optional<int> collectFiles(const std::vector<GraphOutput>& outputs, const VariantPlan& plan, const Options& o,
+                                std::vector<std::map<std::string, std::string>>& filesOf) {
   for (std::size_t g = 0; g < outputs.size(); ++g) {
     std::string error;
     auto files = graphFiles(outputs[g], plan.switchesOf[g], o, error);
@@ -357,19 +344,30 @@ int runCompileCommand(int argc, char** argv) {
     }
     filesOf.push_back(std::move(*files));
   }
-  std::size_t written = 0, compiled = 0;
+  return std::nullopt;
+}
+
+// Per graph: its files depend on the graph, its libraries and images, over every variant.
+std::vector<DepfileRule> depfileRules(const std::vector<GraphOutput>& outputs,
+                                      const std::vector<std::map<std::string, std::string>>& filesOf) {
   std::vector<DepfileRule> rules;
   for (std::size_t g = 0; g < outputs.size(); ++g) {
     DepfileRule rule;
     for (const auto& [path, bytes] : filesOf[g]) rule.outputs.push_back(path);
     rule.inputs.push_back(outputs[g].graph);
-    std::set<std::string> readFiles;  // graph libraries and image files, over every variant
+    std::set<std::string> readFiles;
     for (const CompiledMaterial* m : outputs[g].variants)
       for (auto& file : materialInputFiles(m->ir)) readFiles.insert(std::move(file));
     rule.inputs.insert(rule.inputs.end(), readFiles.begin(), readFiles.end());
     rules.push_back(std::move(rule));
-    compiled += outputs[g].variants.size();
   }
+  return rules;
+}
+
+// All or nothing: every output is staged, then published together, then the depfile.
+// Returns the exit code and counts the files written.
+int writeOutputs(const std::vector<std::map<std::string, std::string>>& filesOf, const std::vector<DepfileRule>& rules,
+                 const Options& o, std::size_t& written) {
   // The depfile is formatted before anything is written: a path it cannot express
   // safely stops the run with nothing written.
   std::string depfileError;
@@ -377,7 +375,6 @@ int runCompileCommand(int argc, char** argv) {
   if (!o.depfile.empty() && !(depfileText = formatDepfile(rules, depfileError))) return usageError(depfileError, o.json);
   if (std::string e = outputOverwritesInput(rules, o.depfile); !e.empty()) return usageError(e, o.json);
   if (std::string e = checkDepfileTarget(o.depfile); !e.empty()) return usageError(e, o.json);
-  // All or nothing: every output is staged, then published together.
   StagedDirectory staged(o.outputDir);
   for (const auto& files : filesOf)
     for (const auto& [path, bytes] : files) {
@@ -387,10 +384,37 @@ int runCompileCommand(int argc, char** argv) {
   if (std::string e = staged.publish(); !e.empty()) return usageError(e, o.json);
   if (depfileText)
     if (std::string werror = writeFileAtomically(o.depfile, *depfileText); !werror.empty()) return usageError(werror, o.json);
+  return kExitOk;
+}
+
+// Writes every graph's files and prints the summary line on a terminal.
+int writeCompiled(const std::vector<GraphOutput>& outputs, const VariantPlan& plan, const Options& o) {
+  std::vector<std::map<std::string, std::string>> filesOf;
+  if (auto exit = collectFiles(outputs, plan, o, filesOf)) return *exit;
+  std::size_t written = 0, compiled = 0;
+  for (const auto& g : outputs) compiled += g.variants.size();
+  if (int e = writeOutputs(filesOf, depfileRules(outputs, filesOf), o, written)) return e;
   if (!o.quiet && !o.json && ::isatty(STDOUT_FILENO))
     std::printf("compiled %zu material%s (%zu variant%s), wrote %zu files to %s\n", outputs.size(),
                 outputs.size() == 1 ? "" : "s", compiled, compiled == 1 ? "" : "s", written, o.outputDir.c_str());
   return kExitOk;
+}
+
+}  // namespace
+
+int runCompileCommand(int argc, char** argv) {
+  Options o;
+  if (auto exit = parseCompileOptions(argc, argv, o)) return *exit;
+  VariantPlan plan;
+  if (std::string e = planVariants(o.graphs, o.variants, plan); !e.empty()) return usageError(e, o.json);
+  const CompileOptions options = compileOptionsFor(o);
+  if (o.dumpIrAfter) return dumpIrAfterPass(plan.jobs, *o.dumpIrAfter, options, o.json);
+  std::vector<CompileResult> results = compileJobs(plan, options, o);
+  BatchDiagnostics diagnostics;
+  std::vector<GraphOutput> outputs = groupByGraph(plan, results, o.graphs.size(), diagnostics);
+  reportNameCollisions(outputs, diagnostics.items);
+  if (auto exit = reportDiagnostics(diagnostics, o.json)) return *exit;
+  return writeCompiled(outputs, plan, o);
 }
 
 }  // namespace wg

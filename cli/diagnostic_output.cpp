@@ -23,6 +23,25 @@ int usageError(const std::string& message, bool json) {
   return kExitUsage;
 }
 
+int briefUsageError(const std::string& message) {
+  std::fprintf(stderr, "weathergen: error WG9001: %s\n", message.c_str());
+  return kExitUsage;
+}
+
+bool jsonDiagnosticsRequested(int argc, char** argv, int first) {
+  for (int i = first; i < argc; ++i)
+    if (std::string(argv[i]) == "--diagnostics=json" ||
+        (std::string(argv[i]) == "--diagnostics" && i + 1 < argc && std::string(argv[i + 1]) == "json"))
+      return true;
+  return false;
+}
+
+std::string setDiagnosticsFormat(const std::string& value, bool& json) {
+  if (value != "text" && value != "json") return "--diagnostics takes text or json";
+  json = value == "json";
+  return "";
+}
+
 int deviceUnavailable(const std::string& error, const std::string& requestedDevice) {
   return usageError(error + (requestedDevice.empty() ? "; install mesa-vulkan-drivers for lavapipe" : "; pass --device with one of them"));
 }
@@ -32,6 +51,12 @@ std::string checkWeatherPresetName(const std::string& name) {
   std::string presets;
   for (auto n : weatherPresetNames()) presets += (presets.empty() ? "" : ", ") + std::string(n);
   return "unknown weather preset '" + quoteUserText(name) + "' (presets: " + presets + ")";
+}
+
+std::string setPresetMap(const std::string& rules, std::string& presetMap) {
+  if (rules.empty()) return "--preset-map takes rules, e.g. '*Leaf*=foliage,*=rock'";
+  presetMap = rules;
+  return "";
 }
 
 }  // namespace wg

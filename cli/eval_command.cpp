@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "cli/eval_inputs.hpp"
+#include "cli/option_table.hpp"
 #include "compiler/content_hash.hpp"
 #include "compiler/graph_loader.hpp"
 #include "compiler/literal.hpp"
@@ -32,14 +32,8 @@ shaders mirror, and prints JSON: the inputs used, every PBR output and every wea
 coverage term.
 
 Options:
-  --weather-preset NAME      weather preset, replacing the graph's own
-                             (rock, terrain, foliage, river, road, none)
-  --weather name=value,...   frame block weather members (below)
-  --at name=value,...        surface inputs at the point (below)
-  --param name=value,...     material parameters (with GRAPH, --help lists them)
-  --diagnostics text|json    diagnostic format on stderr (default: text)
-  -h, --help                 this help; with GRAPH, also the material's parameters
-
+)";
+constexpr const char* kEvalUsageEnd = R"(
 Vectors are written with ':' between components: normal=0:1:0, windDirection=1:0
 (world x:z). Each option may be repeated; each key may be given once.
 )";
@@ -49,6 +43,7 @@ constexpr int kHelpNameWidth = 32;
 constexpr int kJsonIndent = 2;
 
 struct Options {
+  std::vector<std::string> graphs;  // one, checked after parsing
   std::string graph;
   std::optional<std::string> weatherPreset;
   std::vector<std::pair<std::string, std::string>> lists;  // flag, "name=value,..." in order
@@ -56,6 +51,38 @@ struct Options {
   bool json = false;
 };
 
+// --weather, --at and --param keep their order and their flag: applied after the graph is read.
+OptionSetter storeList(Options& o, std::string_view flag) {
+  return [&o, flag](const std::string& v) {
+    o.lists.emplace_back(flag, v);
+    return std::string();
+  };
+}
+
+OptionTable evalOptionTable(Options& o) {
+  return {.options = {
+              {"--weather-preset", "", "NAME",
+               "weather preset, replacing the graph's own\n(rock, terrain, foliage, river, road, none)",
+               storeChecked(o.weatherPreset, checkWeatherPresetName)},
+              {"--weather", "", "name=value,...", "frame block weather members (below)", storeList(o, "--weather")},
+              {"--at", "", "name=value,...", "surface inputs at the point (below)", storeList(o, "--at")},
+              {"--param", "", "name=value,...", "material parameters (with GRAPH, --help lists them)",
+               storeList(o, "--param")},
+              {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
+               [&o](const std::string& v) { return setDiagnosticsFormat(v, o.json); }},
+              {"--help", "-h", "", "this help; with GRAPH, also the material's parameters", storeFlag(o.help)},
+          },
+          .operand = [&o](const std::string& graph) {
+            o.graphs.push_back(graph);
+            return std::string();
+          },
+          .unknownSuffix = "; run 'weathergen eval --help' for the options"};
+}
+
+std::string evalUsage() {
+  Options scratch;  // the listing reads only the rows' names and help
+  return kEvalUsage + formatOptionList(evalOptionTable(scratch)) + kEvalUsageEnd;
+}
 
 // A float as the JSON number of its shortest round-trip text, so 0.3f prints as 0.3
 // rather than as the double 0.30000001192092896.
@@ -85,7 +112,7 @@ std::string valueText(const Value& v) {
 }
 
 void printHelp(const IrGraph* graph) {
-  std::fputs(kEvalUsage, stdout);
+  std::fputs(evalUsage().c_str(), stdout);
   EvalInputs defaults = defaultEvalInputs();
   for (EvalInputGroup group : {EvalInputGroup::Weather, EvalInputGroup::Surface}) {
     std::printf("\n%s inputs (%s), with their defaults:\n", group == EvalInputGroup::Weather ? "Weather" : "Surface",
@@ -113,55 +140,13 @@ void printHelp(const IrGraph* graph) {
 
 // Parses the command line; returns an exit code when it should stop (help is left to
 // the caller, which may need the graph first).
-std::optional<int> parseOptions(int argc, char** argv, Options& o) {
-  CommandLine cl(argc, argv, 2);
-  for (int i = 2; i < argc; ++i)
-    if (std::string(argv[i]) == "--diagnostics=json" ||
-        (std::string(argv[i]) == "--diagnostics" && i + 1 < argc && std::string(argv[i + 1]) == "json"))
-      o.json = true;
-  std::vector<std::string> graphs;
-  while (!cl.done()) {
-    std::string error;
-    const std::string& arg = cl.peek();
-    if (cl.endOfOptions() || arg.empty() || arg[0] != '-' || arg == "-") {
-      graphs.push_back(cl.next());
-      continue;
-    }
-    if (cl.flag("--")) {
-      cl.markEndOfOptions();
-      continue;
-    }
-    if (cl.flag("-h") || cl.flag("--help")) {
-      o.help = true;
-      continue;
-    }
-    bool matched = false;
-    for (const char* flag : {"--weather", "--at", "--param"}) {
-      if (auto v = cl.valueFor(flag, error); v || !error.empty()) {
-        if (!v) return usageError(error, o.json);
-        o.lists.emplace_back(flag, *v);
-        matched = true;
-        break;
-      }
-    }
-    if (matched) continue;
-    if (auto v = cl.valueFor("--weather-preset", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      if (std::string e = checkWeatherPresetName(*v); !e.empty()) return usageError(e, o.json);
-      o.weatherPreset = *v;
-      continue;
-    }
-    if (auto v = cl.valueFor("--diagnostics", error); v || !error.empty()) {
-      if (!v) return usageError(error, o.json);
-      if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
-      o.json = *v == "json";
-      continue;
-    }
-    return usageError("unknown option '" + quoteUserText(arg) + "'; run 'weathergen eval --help' for the options", o.json);
-  }
-  if (graphs.size() > 1) return usageError("eval takes one graph, got " + std::to_string(graphs.size()), o.json);
-  if (graphs.empty() && !o.help) return usageError("no input graph; write 'weathergen eval GRAPH'", o.json);
-  if (!graphs.empty()) o.graph = graphs.front();
+std::optional<int> parseEvalOptions(int argc, char** argv, Options& o) {
+  o.json = jsonDiagnosticsRequested(argc, argv, 2);
+  const OptionParseResult parsed = parseOptions(evalOptionTable(o), argc, argv, 2);
+  if (parsed.status == OptionParse::Failed) return usageError(parsed.error, o.json);
+  if (o.graphs.size() > 1) return usageError("eval takes one graph, got " + std::to_string(o.graphs.size()), o.json);
+  if (o.graphs.empty() && !o.help) return usageError("no input graph; write 'weathergen eval GRAPH'", o.json);
+  if (!o.graphs.empty()) o.graph = o.graphs.front();
   return std::nullopt;
 }
 
@@ -199,38 +184,44 @@ Json inputsJson(const EvalInputs& used, const IrGraph& graph) {
   return {{"weather", std::move(weather)}, {"surface", std::move(surface)}, {"parameters", std::move(parameters)}};
 }
 
-}  // namespace
-
-int runEvalCommand(int argc, char** argv) {
-  Options o;
-  if (auto stop = parseOptions(argc, argv, o)) return *stop;
-  if (o.help && o.graph.empty()) {
-    printHelp(nullptr);
-    return kExitOk;
-  }
-
+// The graph built as compile builds it; nullopt when it has errors (printed).
+std::optional<IrGraph> buildEvalGraph(const Options& o) {
   DiagnosticList diagnostics;
   std::optional<IrGraph> ir;
   if (auto text = readGraphFile(o.graph, diagnostics))
     ir = buildOptimizedIr(o.graph, std::move(*text), diagnostics, CompileOptions{.weatherPreset = o.weatherPreset});
   if (!diagnostics.empty()) printDiagnostics(diagnostics.items(), o.json);
-  if (!ir || diagnostics.hasErrors()) return kExitBadInput;
-  if (o.help) {
-    printHelp(&*ir);
-    return kExitOk;
-  }
+  if (!ir || diagnostics.hasErrors()) return std::nullopt;
+  return ir;
+}
 
-  EvalInputs inputs = defaultEvalInputs();
+// The defaults with every --weather, --at and --param applied in order; "" or the usage message.
+std::string applyInputLists(const Options& o, const IrGraph& ir, EvalInputs& inputs) {
   std::set<std::string> seenWeather, seenSurface, seenParameters;
   for (const auto& [flag, list] : o.lists) {
-    std::string error = flag == "--param"     ? applyParameterList(list, *ir, inputs, seenParameters)
+    std::string error = flag == "--param"     ? applyParameterList(list, ir, inputs, seenParameters)
                         : flag == "--weather" ? applyEvalInputList(list, EvalInputGroup::Weather, inputs, seenWeather)
                                               : applyEvalInputList(list, EvalInputGroup::Surface, inputs, seenSurface);
-    if (!error.empty()) return usageError(error, o.json);
+    if (!error.empty()) return error;
   }
-  if (std::string error = finishEvalInputs(inputs); !error.empty()) return usageError(error, o.json);
+  return finishEvalInputs(inputs);
+}
 
-  TextureLoadResult textures = loadTextureSampler(ir->textures);
+Json resultJson(const EvalResult& result, const EvalInputs& inputs, const IrGraph& graph, const std::string& hash) {
+  Json outputs = Json::object(), coverage = Json::object();
+  for (const auto& info : pbrFields()) outputs[std::string(info.name)] = valueJson(result.output(info.field));
+  for (const auto& info : coverageTerms()) coverage[std::string(info.name)] = number(result.coverageOf(info.term));
+  return {{"material", graph.name},
+          {"contentHash", hash},
+          {"weatherPreset", graph.weather.preset},
+          {"inputs", inputsJson(inputs, graph)},
+          {"outputs", std::move(outputs)},
+          {"coverage", std::move(coverage)}};
+}
+
+// Runs the graph's ops at the point and prints the JSON.
+int evaluateAndPrint(IrGraph ir, const EvalInputs& inputs, const Options& o) {
+  TextureLoadResult textures = loadTextureSampler(ir.textures);
   if (!textures.sampler) {
     DiagnosticList list;
     list.report(DiagCode::TextureUnsupported, locateInJsonFile(o.graph, textures.pointer),
@@ -238,24 +229,33 @@ int runEvalCommand(int argc, char** argv) {
     printDiagnostics(list.items(), o.json);
     return kExitBadInput;
   }
-  const std::string hash = contentHash(*ir);
-  const CpuEvaluator evaluator(std::move(*ir), std::move(*textures.sampler));
+  const std::string hash = contentHash(ir);
+  const CpuEvaluator evaluator(std::move(ir), std::move(*textures.sampler));
   const EvalResult result = evaluator.evaluate(inputs);
-  const IrGraph& graph = evaluator.ir();
-
-  Json outputs = Json::object(), coverage = Json::object();
-  for (const auto& info : pbrFields()) outputs[std::string(info.name)] = valueJson(result.output(info.field));
-  for (const auto& info : coverageTerms()) coverage[std::string(info.name)] = number(result.coverageOf(info.term));
-  Json root = {{"material", graph.name},
-               {"contentHash", hash},
-               {"weatherPreset", graph.weather.preset},
-               {"inputs", inputsJson(inputs, graph)},
-               {"outputs", std::move(outputs)},
-               {"coverage", std::move(coverage)}};
   std::string text;
-  writeJson(text, root, 0);
+  writeJson(text, resultJson(result, inputs, evaluator.ir(), hash), 0);
   std::printf("%s\n", text.c_str());
   return kExitOk;
+}
+
+}  // namespace
+
+int runEvalCommand(int argc, char** argv) {
+  Options o;
+  if (auto stop = parseEvalOptions(argc, argv, o)) return *stop;
+  if (o.help && o.graph.empty()) {
+    printHelp(nullptr);
+    return kExitOk;
+  }
+  std::optional<IrGraph> ir = buildEvalGraph(o);
+  if (!ir) return kExitBadInput;
+  if (o.help) {
+    printHelp(&*ir);
+    return kExitOk;
+  }
+  EvalInputs inputs = defaultEvalInputs();
+  if (std::string error = applyInputLists(o, *ir, inputs); !error.empty()) return usageError(error, o.json);
+  return evaluateAndPrint(std::move(*ir), inputs, o);
 }
 
 }  // namespace wg

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/option_table.hpp"
 #include "cli/staged_directory.hpp"
 #include "compiler/literal.hpp"
 #include "import/gltf_asset.hpp"
@@ -25,17 +25,6 @@ beside them (MODEL_imageN.png|jpg) and MODEL.import.json, the index from each gl
 material (index and name) to its graph. Nothing is written if the model has an error.
 
 Options:
-  -o DIR, --output DIR       where to write (created if missing)
-  --weather-preset NAME      every material's weather: rock, terrain, foliage, river,
-                             road or none (default: rock)
-  --preset-map RULES         per material: 'GLOB=PRESET,...' matched against material
-                             names in order, e.g. '*Ground*=terrain,*Leaf*=foliage,*=rock';
-                             a material no rule matches gets no weather
-  --snow-displacement        keep the presets' snow displacement (off by default: it moves
-                             vertices along their normals, which tears meshes that are
-                             split at hard edges, as most glTF meshes are)
-  --diagnostics text|json    diagnostic format on stderr (default: text)
-  -q, --quiet                no summary line (on stdout)
 )";
 
 struct ImportOptions {
@@ -43,45 +32,46 @@ struct ImportOptions {
   bool json = false, quiet = false, help = false, presetGiven = false, displacement = false;
 };
 
+OptionTable importOptionTable(ImportOptions& o) {
+  return {.options = {
+              {"--output", "-o", "DIR", "where to write (created if missing)", storeValue(o.outputDir)},
+              {"--weather-preset", "", "NAME",
+               "every material's weather: rock, terrain, foliage, river,\nroad or none (default: rock)",
+               [&o](const std::string& v) {
+                 if (std::string e = checkWeatherPresetName(v); !e.empty()) return e;
+                 o.preset = v;
+                 o.presetGiven = true;
+                 return std::string();
+               }},
+              {"--preset-map", "", "RULES",
+               "per material: 'GLOB=PRESET,...' matched against material\n"
+               "names in order, e.g. '*Ground*=terrain,*Leaf*=foliage,*=rock';\n"
+               "a material no rule matches gets no weather",
+               [&o](const std::string& v) { return setPresetMap(v, o.presetMap); }},
+              {"--snow-displacement", "", "",
+               "keep the presets' snow displacement (off by default: it moves\n"
+               "vertices along their normals, which tears meshes that are\n"
+               "split at hard edges, as most glTF meshes are)",
+               storeFlag(o.displacement)},
+              {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
+               [&o](const std::string& v) { return setDiagnosticsFormat(v, o.json); }},
+              {"--quiet", "-q", "", "no summary line (on stdout)", storeFlag(o.quiet)},
+              {"--help", "-h", "", "", storeFlag(o.help)},
+          },
+          .operand = [&o](const std::string& model) {
+            if (!o.model.empty())
+              return "import takes one model; got '" + quoteUserText(o.model) + "' and '" + quoteUserText(model) + "'";
+            o.model = model;
+            return std::string();
+          },
+          .dashIsOperand = false,
+          .unknownSuffix = "; run 'weathergen import --help'"};
+}
+
 // Returns -1 when parsing succeeded, else the exit code.
-int parseOptions(int argc, char** argv, ImportOptions& o) {
-  CommandLine cl(argc, argv, 2);
-  while (!cl.done()) {
-    std::string error;
-    if (!cl.endOfOptions() && cl.peek() == "--") {
-      cl.next();
-      cl.markEndOfOptions();
-      continue;
-    }
-    if (cl.endOfOptions() || cl.peek().empty() || cl.peek()[0] != '-') {
-      if (!o.model.empty()) return usageError("import takes one model; got '" + quoteUserText(o.model) + "' and '" + quoteUserText(cl.peek()) + "'", o.json);
-      o.model = cl.next();
-      continue;
-    }
-    if (cl.flag("-h") || cl.flag("--help")) { o.help = true; continue; }
-    if (cl.flag("-q") || cl.flag("--quiet")) { o.quiet = true; continue; }
-    if (cl.flag("--snow-displacement")) { o.displacement = true; continue; }
-    if (auto v = cl.valueFor("-o", error)) { o.outputDir = *v; continue; }
-    if (auto v = cl.valueFor("--output", error)) { o.outputDir = *v; continue; }
-    if (auto v = cl.valueFor("--diagnostics", error)) {
-      if (*v != "text" && *v != "json") return usageError("--diagnostics takes text or json", o.json);
-      o.json = *v == "json";
-      continue;
-    }
-    if (auto v = cl.valueFor("--weather-preset", error)) {
-      if (std::string e = checkWeatherPresetName(*v); !e.empty()) return usageError(e, o.json);
-      o.preset = *v;
-      o.presetGiven = true;
-      continue;
-    }
-    if (auto v = cl.valueFor("--preset-map", error)) {
-      if (v->empty()) return usageError("--preset-map takes rules, e.g. '*Leaf*=foliage,*=rock'", o.json);
-      o.presetMap = *v;
-      continue;
-    }
-    if (!error.empty()) return usageError(error, o.json);
-    return usageError("unknown option '" + quoteUserText(cl.peek()) + "'; run 'weathergen import --help'", o.json);
-  }
+int parseImportOptions(int argc, char** argv, ImportOptions& o) {
+  const OptionParseResult parsed = parseOptions(importOptionTable(o), argc, argv, 2);
+  if (parsed.status == OptionParse::Failed) return usageError(parsed.error, o.json);
   if (o.help) return -1;
   if (o.model.empty()) return usageError("no model; write 'weathergen import MODEL.gltf -o DIR'", o.json);
   if (o.outputDir.empty()) return usageError("no output directory; pass -o DIR", o.json);
@@ -120,9 +110,10 @@ int writeImport(const gltf::Asset& asset, const gltf::ImportedModel& imported, c
 
 int runImportCommand(int argc, char** argv) {
   ImportOptions o;
-  if (int code = parseOptions(argc, argv, o); code >= 0) return code;
+  if (int code = parseImportOptions(argc, argv, o); code >= 0) return code;
   if (o.help) {
-    std::fputs(kImportUsage, stdout);
+    ImportOptions scratch;  // the listing reads only the rows' names and help
+    std::fputs((kImportUsage + formatOptionList(importOptionTable(scratch))).c_str(), stdout);
     return kExitOk;
   }
   std::string error;

@@ -7,9 +7,9 @@
 #include <cstdlib>
 
 #include "cli/bundled_graphs_directory.hpp"
-#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/option_table.hpp"
 #include "cli/orbit_camera_option.hpp"
 #include "compiler/literal.hpp"
 
@@ -20,51 +20,6 @@ namespace {
 constexpr const char* kRenderUsage = R"(Usage: weathergen render (--scene NAME | --material GRAPH.json | --model MODEL.gltf) -o OUT.png [options]
 
 Options:
-  --scene NAME              valley, rocks, river, road or snowfield (interactive snow:
-                            walkers, a vehicle and a camera that leaves and returns;
-                            writes OUT.png as a contact sheet and OUT.strip.png)
-  --material GRAPH.json     any material graph on the preview stand: a sphere, a rock,
-                            a 45 degree ramp and a cube on a post, on open ground next
-                            to a small roof
-  --model MODEL.gltf|glb    a glTF 2.0 model on a ground plane, every mesh drawn with
-                            its imported material weathered (rock unless
-                            --weather-preset or --preset-map says otherwise)
-  --preset-map RULES        with --model: 'GLOB=PRESET,...' per material name, as
-                            'weathergen import' takes it
-  --model-scale S           with --model: metres per model unit (glTF says 1; 0.001
-                            for a model authored in millimetres)
-  --snow-displacement       with --model: keep the snow displacement, as import takes it
-  --camera NAME             a camera preset of the scene (default: its first); the
-                            stand has front, sun-side, shade-side and close-up
-  --camera orbit:AZ,EL[,D]  any view of the scene's centre: azimuth (degrees from +z
-                            towards +x), elevation (degrees, -89 to 89), distance
-                            (metres; default: framed to the scene)
-  --weather k=v,...         weather state, as 'weathergen eval --help' lists it
-                            (temperature, precipitation, snowLevel, wetnessLevel, ...)
-  --timeline FILE           scripted weather (runtime/timelines/seasons.json): writes
-                            OUT.png as a labelled contact sheet, one frame per stage,
-                            and OUT.strip.png as a frame strip
-  --step SECONDS            simulation step for --timeline (default 300)
-  --frames DIR              with --timeline: also write each stage as DIR/SCENE-NN-LABEL.png
-  --weather-preset NAME     replace every material's preset (none for a baseline)
-  --backend glsl|hlsl       which emitted SPIR-V to draw with (default glsl)
-  --size WxH                image size (default 960x540)
-  --aov NAME                lit, albedo, roughness, normal, snow, wet, moss, frost,
-                            ice, puddle or density (default lit)
-  --device NAME             Vulkan device: cpu, gpu, integrated, discrete or a name
-                            (default: the CPU device, lavapipe)
-  --validation              enable the Vulkan validation layers; any message fails
-  --no-shadows              draw without the sun shadow map
-  --watch                   with --material or --model: render, then render again whenever the
-                            graph, a library it includes, an image it reads or the model
-                            (and its buffers and images) changes
-                            (one line per render; errors keep the last good image);
-                            Ctrl-C stops
-  --watch-renders N         with --watch: stop after N renders, failed ones included
-                            (for scripts and tests)
-  --graphs DIR              where the bundled graphs live (default: found next to the
-                            executable: the source tree, or share/weathergen/graphs)
-  -q, --quiet               no progress output
 )";
 
 // --size WxH; "" or a usage message.
@@ -108,74 +63,133 @@ std::string parseCamera(const std::string& v, RenderOptions& o) {
   return error;
 }
 
-// One of kValueOptions with its value; "" or a usage message.
-std::string parseValueOption(const std::string& name, const std::string& v, RenderOptions& o) {
-  if (name == "--scene") o.sceneName = v;
-  else if (name == "--material") o.materialPath = v;
-  else if (name == "--model") o.modelPath = v;
-  else if (name == "--preset-map") {
-    if (v.empty()) return "--preset-map takes rules, e.g. '*Leaf*=foliage,*=rock'";
-    o.presetMap = v;
-  }
-  else if (name == "--model-scale") return parseModelScale(v, o.modelScale);
-  else if (name == "--camera") return parseCamera(v, o);
-  else if (name == "-o" || name == "--output") o.output = v;
-  else if (name == "--timeline") o.timelinePath = v;
-  else if (name == "--aov") o.aov = v;
-  else if (name == "--device") o.device = v;
-  else if (name == "--graphs") o.graphsDir = v;
-  else if (name == "--frames") o.framesDir = v;
-  else if (name == "--weather") o.weatherLists.push_back(v);
-  else if (name == "--weather-preset") {
-    o.weatherPreset = v;
-    return checkWeatherPresetName(v);
-  } else if (name == "--backend") {
-    if (v != "glsl" && v != "hlsl") return "--backend takes glsl or hlsl";
-    o.request.backend = v == "glsl" ? ShaderLanguage::Glsl : ShaderLanguage::Hlsl;
-  } else if (name == "--size") return parseSize(v, o.request);
-  else if (name == "--step") return parseStep(v, o.step);
-  else if (name == "--watch-renders") return parseWatchRenders(v, o.watchRenders);
+std::string setBackend(const std::string& v, RenderRequest& request) {
+  if (v != "glsl" && v != "hlsl") return "--backend takes glsl or hlsl";
+  request.backend = v == "glsl" ? ShaderLanguage::Glsl : ShaderLanguage::Hlsl;
   return "";
 }
 
-constexpr const char* kValueOptions[] = {"--scene", "--material", "--model", "--preset-map", "--model-scale", "--camera",         "-o",      "--output",
-                                         "--timeline", "--aov",     "--device",         "--graphs", "--frames",
-                                         "--weather", "--weather-preset", "--backend",  "--size",  "--step",
-                                         "--watch-renders"};
+// Where the scene comes from, and how it is looked at.
+std::vector<Option> sceneOptions(RenderOptions& o) {
+  return {
+      {"--scene", "", "NAME",
+       "valley, rocks, river, road or snowfield (interactive snow:\n"
+       "walkers, a vehicle and a camera that leaves and returns;\n"
+       "writes OUT.png as a contact sheet and OUT.strip.png)",
+       storeValue(o.sceneName)},
+      {"--material", "", "GRAPH.json",
+       "any material graph on the preview stand: a sphere, a rock,\n"
+       "a 45 degree ramp and a cube on a post, on open ground next\n"
+       "to a small roof",
+       storeValue(o.materialPath)},
+      {"--model", "", "MODEL.gltf|glb",
+       "a glTF 2.0 model on a ground plane, every mesh drawn with\n"
+       "its imported material weathered (rock unless\n"
+       "--weather-preset or --preset-map says otherwise)",
+       storeValue(o.modelPath)},
+      {"--preset-map", "", "RULES", "with --model: 'GLOB=PRESET,...' per material name, as\n'weathergen import' takes it",
+       [&o](const std::string& v) { return setPresetMap(v, o.presetMap); }},
+      {"--model-scale", "", "S",
+       "with --model: metres per model unit (glTF says 1; 0.001\nfor a model authored in millimetres)",
+       [&o](const std::string& v) { return parseModelScale(v, o.modelScale); }},
+      {"--snow-displacement", "", "", "with --model: keep the snow displacement, as import takes it",
+       storeFlag(o.snowDisplacement)},
+      {"--camera", "", "NAME",
+       "a camera preset of the scene (default: its first); the\nstand has front, sun-side, shade-side and close-up",
+       [&o](const std::string& v) { return parseCamera(v, o); }},
+      {"--camera", "", "orbit:AZ,EL[,D]",
+       "any view of the scene's centre: azimuth (degrees from +z\n"
+       "towards +x), elevation (degrees, -89 to 89), distance\n"
+       "(metres; default: framed to the scene)",
+       nullptr},
+  };
+}
 
-bool parseFlag(CommandLine& cl, RenderOptions& o) {
-  if (cl.flag("--validation")) o.validation = true;
-  else if (cl.flag("--no-shadows")) o.request.shadows = false;
-  else if (cl.flag("-q") || cl.flag("--quiet")) o.quiet = true;
-  else if (cl.flag("--watch")) o.watch = true;
-  else if (cl.flag("--snow-displacement")) o.snowDisplacement = true;
-  else return false;
-  return true;
+// The weather, over time or at once.
+std::vector<Option> weatherOptions(RenderOptions& o) {
+  return {
+      {"--weather", "", "k=v,...",
+       "weather state, as 'weathergen eval --help' lists it\n(temperature, precipitation, snowLevel, wetnessLevel, ...)",
+       [&o](const std::string& v) {
+         o.weatherLists.push_back(v);
+         return std::string();
+       }},
+      {"--timeline", "", "FILE",
+       "scripted weather (runtime/timelines/seasons.json): writes\n"
+       "OUT.png as a labelled contact sheet, one frame per stage,\n"
+       "and OUT.strip.png as a frame strip",
+       storeValue(o.timelinePath)},
+      {"--step", "", "SECONDS", "simulation step for --timeline (default 300)",
+       [&o](const std::string& v) { return parseStep(v, o.step); }},
+      {"--frames", "", "DIR", "with --timeline: also write each stage as DIR/SCENE-NN-LABEL.png",
+       storeValue(o.framesDir)},
+      {"--weather-preset", "", "NAME", "replace every material's preset (none for a baseline)",
+       [&o](const std::string& v) {
+         o.weatherPreset = v;
+         return checkWeatherPresetName(v);
+       }},
+  };
+}
+
+// How it is drawn, and where to.
+std::vector<Option> outputOptions(RenderOptions& o) {
+  return {
+      {"--output", "-o", "OUT.png", "", storeValue(o.output)},  // in the usage line
+      {"--backend", "", "glsl|hlsl", "which emitted SPIR-V to draw with (default glsl)",
+       [&o](const std::string& v) { return setBackend(v, o.request); }},
+      {"--size", "", "WxH", "image size (default 960x540)", [&o](const std::string& v) { return parseSize(v, o.request); }},
+      {"--aov", "", "NAME",
+       "lit, albedo, roughness, normal, snow, wet, moss, frost,\nice, puddle or density (default lit)",
+       storeValue(o.aov)},
+      {"--device", "", "NAME",
+       "Vulkan device: cpu, gpu, integrated, discrete or a name\n(default: the CPU device, lavapipe)",
+       storeValue(o.device)},
+      {"--validation", "", "", "enable the Vulkan validation layers; any message fails", storeFlag(o.validation)},
+      {"--no-shadows", "", "", "draw without the sun shadow map", storeFlag(o.request.shadows, false)},
+  };
+}
+
+// Rendering again on every change, and what the rest needs.
+std::vector<Option> watchAndOtherOptions(RenderOptions& o) {
+  return {
+      {"--watch", "", "",
+       "with --material or --model: render, then render again whenever the\n"
+       "graph, a library it includes, an image it reads or the model\n"
+       "(and its buffers and images) changes\n"
+       "(one line per render; errors keep the last good image);\n"
+       "Ctrl-C stops",
+       storeFlag(o.watch)},
+      {"--watch-renders", "", "N",
+       "with --watch: stop after N renders, failed ones included\n(for scripts and tests)",
+       [&o](const std::string& v) { return parseWatchRenders(v, o.watchRenders); }},
+      {"--graphs", "", "DIR",
+       "where the bundled graphs live (default: found next to the\n"
+       "executable: the source tree, or share/weathergen/graphs)",
+       storeValue(o.graphsDir)},
+      {"--quiet", "-q", "", "no progress output", storeFlag(o.quiet)},
+  };
+}
+
+// `help` is set by --help, which ends the parse.
+OptionTable renderOptionTable(RenderOptions& o, bool& help) {
+  OptionTable table{.helpColumn = 26};
+  for (auto part : {sceneOptions, weatherOptions, outputOptions, watchAndOtherOptions})
+    for (auto& option : part(o)) table.options.push_back(std::move(option));
+  table.options.push_back({"--help", "-h", "", "", storeFlag(help), true});
+  return table;
 }
 
 }  // namespace
 
 std::optional<int> parseRenderOptions(int argc, char** argv, int first, RenderOptions& o) {
   o.graphsDir = bundledGraphsDirectory();
-  CommandLine cl(argc, argv, first);
-  while (!cl.done()) {
-    if (cl.flag("-h") || cl.flag("--help")) {
-      std::fputs(kRenderUsage, stdout);
-      return kExitOk;
-    }
-    if (parseFlag(cl, o)) continue;
-    std::string error;
-    bool matched = false;
-    for (const char* name : kValueOptions) {
-      auto v = cl.valueFor(name, error);
-      if (!v) continue;
-      if (std::string e = parseValueOption(name, *v, o); !e.empty()) return usageError(e);
-      matched = true;
-      break;
-    }
-    if (matched) continue;
-    if (!error.empty()) return usageError(error);
-    return usageError("unknown option '" + quoteUserText(cl.peek()) + "'");
+  bool help = false;
+  const OptionTable table = renderOptionTable(o, help);
+  const OptionParseResult parsed = parseOptions(table, argc, argv, first);
+  if (parsed.status == OptionParse::Failed) return usageError(parsed.error);
+  if (help) {
+    std::fputs((kRenderUsage + formatOptionList(table)).c_str(), stdout);
+    return kExitOk;
   }
   return std::nullopt;
 }

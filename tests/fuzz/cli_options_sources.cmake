@@ -9,6 +9,7 @@ function(weathergen_add_cli_options_case target)
     ${PROJECT_SOURCE_DIR}/cli/diagnostic_output.cpp
     ${PROJECT_SOURCE_DIR}/cli/eval_inputs.cpp
     ${PROJECT_SOURCE_DIR}/cli/number_text.cpp
+    ${PROJECT_SOURCE_DIR}/cli/option_table.cpp
     ${PROJECT_SOURCE_DIR}/cli/orbit_camera_option.cpp
     ${PROJECT_SOURCE_DIR}/cli/render_options.cpp)
   # render_options.hpp holds a RenderRequest: runtime headers, Vulkan's included.
