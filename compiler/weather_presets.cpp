@@ -75,6 +75,129 @@ std::string presetList() {
   return out;
 }
 
+// Reports a bad weather setting at its JSON pointer; `ok` turns false with the first.
+struct SettingErrors {
+  const JsonDocument& doc;
+  DiagnosticList& diags;
+  bool ok = true;
+  void invalid(const std::string& at, const std::string& what, const std::string& fix) {
+    diags.report(DiagCode::InvalidWeatherSetting, doc.locate(at), {what, fix});
+    ok = false;
+  }
+};
+
+// The preset the block names: a string, or an object's "preset". `overrides` is set to
+// an object block, whose other members change the preset.
+struct NamedPreset {
+  std::string name = "none";
+  std::string pointer;
+  const nlohmann::json* overrides = nullptr;
+};
+
+NamedPreset namedPreset(const std::optional<nlohmann::json>& block, const std::string& pointer, SettingErrors& errors) {
+  NamedPreset named{.pointer = pointer};
+  if (!block) return named;
+  if (block->is_string()) {
+    named.name = block->get<std::string>();
+  } else if (block->is_object()) {
+    named.overrides = &*block;
+    if (auto it = block->find("preset"); it != block->end()) {
+      named.pointer = appendPointer(pointer, "preset");
+      if (!it->is_string()) errors.invalid(named.pointer, "'preset' must be a string", "name a preset: " + presetList());
+      else named.name = it->get<std::string>();
+    } else {
+      errors.invalid(pointer, "the weather block has no 'preset'", "add \"preset\": one of " + presetList());
+    }
+  }
+  return named;
+}
+
+// "effects": {"moss": false, ...}
+void applyEffects(const nlohmann::json& value, const std::string& at, WeatherConfig& config, SettingErrors& errors) {
+  if (!value.is_object()) {
+    errors.invalid(at, "'effects' must be an object of booleans", "write e.g. {\"moss\": false}");
+    return;
+  }
+  for (const auto& [effect, on] : value.items()) {
+    const std::string& effectName = effect;  // clang 14 cannot capture structured bindings
+    auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [&](const EffectFlag& f) { return f.name == effectName; });
+    std::string effectAt = appendPointer(at, effect);
+    if (flag == kEffectFlags.end()) {
+      std::vector<std::string_view> names;
+      for (const auto& f : kEffectFlags) names.push_back(f.name);
+      errors.invalid(effectAt, "unknown weather effect '" + quoteUserText(effect) + "'", unknownNameHint(effect, names, "effects"));
+    } else if (!on.is_boolean()) {
+      errors.invalid(effectAt, "effect '" + std::string(flag->name) + "' must be true or false", "write true or false");
+    } else {
+      config.effects.*(flag->flag) = on.get<bool>();
+    }
+  }
+}
+
+// "weights": [w1, w2, w3, w4] in [0, 16], or "terms": four 0 or 1; the first bad one stops.
+void applyFourNumbers(const std::string& key, const nlohmann::json& value, const std::string& at, WeatherConfig& config,
+                      SettingErrors& errors) {
+  const bool weights = key == "weights";
+  auto& target = weights ? config.weights : config.terms;
+  bool shaped = value.is_array() && value.size() == 4 &&
+                std::all_of(value.begin(), value.end(), [](const auto& x) { return x.is_number(); });
+  if (!shaped) {
+    errors.invalid(at, "'" + key + "' must be an array of 4 numbers",
+                   weights ? "write [w1, w2, w3, w4]" : "write [inclination, sun, height, wind] as 0 or 1");
+    return;
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    float v = value[i].get<float>();
+    bool inRange = weights ? (v >= 0.f && v <= 16.f) : (v == 0.f || v == 1.f);
+    if (!inRange) {
+      errors.invalid(appendPointer(at, i), key + "[" + std::to_string(i) + "] is " + formatFloat(v),
+                     weights ? "weights lie in [0, 16]" : "terms are 0 (off) or 1 (on)");
+      return;
+    }
+    target[i] = v;
+  }
+}
+
+// One of kNumberSettings, a finite number within its range.
+void applyNumberSetting(const std::string& key, const nlohmann::json& value, const std::string& at,
+                        WeatherConfig& config, SettingErrors& errors) {
+  auto setting = std::find_if(kNumberSettings.begin(), kNumberSettings.end(),
+                              [&key](const NumberSetting& s) { return s.name == key; });
+  if (setting == kNumberSettings.end()) {
+    std::vector<std::string_view> names = {"preset", "effects", "weights", "terms"};
+    for (const auto& s : kNumberSettings) names.push_back(s.name);
+    errors.invalid(at, "unknown weather setting '" + quoteUserText(key) + "'", unknownNameHint(key, names, "settings"));
+    return;
+  }
+  if (!value.is_number() || !std::isfinite(value.get<double>())) {
+    errors.invalid(at, "'" + key + "' must be a finite number", "write a number");
+    return;
+  }
+  float v = value.get<float>();
+  if (v < setting->min || v > setting->max) {
+    errors.invalid(at, "'" + key + "' is " + formatFloat(v) + ", outside [" + formatFloat(setting->min) + ", " +
+                           formatFloat(setting->max) + "]",
+                   "use a value in that range");
+    return;
+  }
+  config.*(setting->field) = v;
+}
+
+// Every member of an object block but "preset" and "description", over the preset.
+void applyOverrides(const nlohmann::json& overrides, const std::string& pointer, WeatherConfig& config,
+                    SettingErrors& errors) {
+  for (const auto& [key, value] : overrides.items()) {
+    std::string at = appendPointer(pointer, key);
+    if (key == "preset" || key == "description") continue;
+    if (key == "effects") applyEffects(value, at, config, errors);
+    else if (key == "weights" || key == "terms") applyFourNumbers(key, value, at, config, errors);
+    else applyNumberSetting(key, value, at, config, errors);
+  }
+  if (config.minHeight >= config.maxHeight)
+    errors.invalid(pointer, "minHeight " + formatFloat(config.minHeight) + " is not below maxHeight " + formatFloat(config.maxHeight),
+                   "make minHeight smaller than maxHeight");
+}
+
 }  // namespace
 
 std::vector<std::string_view> weatherPresetNames() { return {kPresets.begin(), kPresets.end()}; }
@@ -87,111 +210,17 @@ std::optional<WeatherConfig> weatherPreset(std::string_view name) {
 std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::json>& block, const std::string& pointer,
                                                   const std::optional<std::string>& presetOverride,
                                                   const JsonDocument& doc, DiagnosticList& diags) {
-  bool ok = true;
-  auto unknownPreset = [&](const std::string& name, SourceLocation where) {
-    diags.report(DiagCode::UnknownWeatherPreset, std::move(where),
-                 {quoteUserText(name), unknownNameHint(name, weatherPresetNames(), "presets")});
-    ok = false;
-  };
-  auto invalid = [&](const std::string& at, const std::string& what, const std::string& fix) {
-    diags.report(DiagCode::InvalidWeatherSetting, doc.locate(at), {what, fix});
-    ok = false;
-  };
-
-  std::string presetName = "none";
-  std::string presetPointer = pointer;
-  const nlohmann::json* overrides = nullptr;
-  if (block) {
-    if (block->is_string()) {
-      presetName = block->get<std::string>();
-    } else if (block->is_object()) {
-      overrides = &*block;
-      if (auto it = block->find("preset"); it != block->end()) {
-        presetPointer = appendPointer(pointer, "preset");
-        if (!it->is_string()) invalid(presetPointer, "'preset' must be a string", "name a preset: " + presetList());
-        else presetName = it->get<std::string>();
-      } else {
-        invalid(pointer, "the weather block has no 'preset'", "add \"preset\": one of " + presetList());
-      }
-    }
-  }
-  if (presetOverride) presetName = *presetOverride;
-  auto config = weatherPreset(presetName);
+  SettingErrors errors{doc, diags};
+  NamedPreset named = namedPreset(block, pointer, errors);
+  if (presetOverride) named.name = *presetOverride;
+  auto config = weatherPreset(named.name);
   if (!config) {
-    unknownPreset(presetName, presetOverride ? SourceLocation{} : doc.locate(presetPointer));
+    diags.report(DiagCode::UnknownWeatherPreset, presetOverride ? SourceLocation{} : doc.locate(named.pointer),
+                 {quoteUserText(named.name), unknownNameHint(named.name, weatherPresetNames(), "presets")});
     return std::nullopt;
   }
-  if (!overrides) return ok ? config : std::nullopt;
-
-  for (const auto& [key, value] : overrides->items()) {
-    std::string at = appendPointer(pointer, key);
-    if (key == "preset" || key == "description") continue;
-    if (key == "effects") {
-      if (!value.is_object()) {
-        invalid(at, "'effects' must be an object of booleans", "write e.g. {\"moss\": false}");
-        continue;
-      }
-      for (const auto& [effect, on] : value.items()) {
-        const std::string& effectName = effect;  // clang 14 cannot capture structured bindings
-        auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [&](const EffectFlag& f) { return f.name == effectName; });
-        std::string effectAt = appendPointer(at, effect);
-        if (flag == kEffectFlags.end()) {
-          std::vector<std::string_view> names;
-          for (const auto& f : kEffectFlags) names.push_back(f.name);
-          invalid(effectAt, "unknown weather effect '" + quoteUserText(effect) + "'", unknownNameHint(effect, names, "effects"));
-        } else if (!on.is_boolean()) {
-          invalid(effectAt, "effect '" + std::string(flag->name) + "' must be true or false", "write true or false");
-        } else {
-          config->effects.*(flag->flag) = on.get<bool>();
-        }
-      }
-      continue;
-    }
-    if (key == "weights" || key == "terms") {
-      auto& target = key == "weights" ? config->weights : config->terms;
-      bool shaped = value.is_array() && value.size() == 4 &&
-                    std::all_of(value.begin(), value.end(), [](const auto& x) { return x.is_number(); });
-      if (!shaped) {
-        invalid(at, "'" + key + "' must be an array of 4 numbers", key == "weights" ? "write [w1, w2, w3, w4]" : "write [inclination, sun, height, wind] as 0 or 1");
-        continue;
-      }
-      for (std::size_t i = 0; i < 4; ++i) {
-        float v = value[i].get<float>();
-        bool inRange = key == "weights" ? (v >= 0.f && v <= 16.f) : (v == 0.f || v == 1.f);
-        if (!inRange) {
-          invalid(appendPointer(at, i), key + "[" + std::to_string(i) + "] is " + formatFloat(v),
-                  key == "weights" ? "weights lie in [0, 16]" : "terms are 0 (off) or 1 (on)");
-          break;
-        }
-        target[i] = v;
-      }
-      continue;
-    }
-    auto setting = std::find_if(kNumberSettings.begin(), kNumberSettings.end(),
-                                [&keyName = key](const NumberSetting& s) { return s.name == keyName; });
-    if (setting == kNumberSettings.end()) {
-      std::vector<std::string_view> names = {"preset", "effects", "weights", "terms"};
-      for (const auto& s : kNumberSettings) names.push_back(s.name);
-      invalid(at, "unknown weather setting '" + quoteUserText(key) + "'", unknownNameHint(key, names, "settings"));
-      continue;
-    }
-    if (!value.is_number() || !std::isfinite(value.get<double>())) {
-      invalid(at, "'" + key + "' must be a finite number", "write a number");
-      continue;
-    }
-    float v = value.get<float>();
-    if (v < setting->min || v > setting->max) {
-      invalid(at, "'" + key + "' is " + formatFloat(v) + ", outside [" + formatFloat(setting->min) + ", " +
-                      formatFloat(setting->max) + "]",
-              "use a value in that range");
-      continue;
-    }
-    (*config).*(setting->field) = v;
-  }
-  if (config->minHeight >= config->maxHeight)
-    invalid(pointer, "minHeight " + formatFloat(config->minHeight) + " is not below maxHeight " + formatFloat(config->maxHeight),
-            "make minHeight smaller than maxHeight");
-  return ok ? config : std::nullopt;
+  if (named.overrides) applyOverrides(*named.overrides, pointer, *config, errors);
+  return errors.ok ? config : std::nullopt;
 }
 
 }  // namespace wg
