@@ -108,58 +108,68 @@ std::string setVariants(const std::string& v, std::optional<VariantSelection>& v
   return error;
 }
 
-OptionTable compileOptionTable(Options& o) {
+// What is written, and where.
+std::vector<Option> outputOptions(Options& o) {
   auto addTargets = [&o](const std::string& v) {
     o.targetList = o.targetList ? *o.targetList + "," + v : v;
     return std::string();
   };
-  return {.options = {
-              {"--output", "-o", "DIR", "output directory (created if missing)", storeValue(o.outputDir)},
-              {"--target", "", "LIST",
-               "comma-separated glsl, hlsl, spirv, msl, glsles, or all\n"
-               "(default: all = glsl,hlsl,spirv). MSL 2.0 and GLSL ES 3.10\n"
-               "are translated by SPIRV-Cross from the validated SPIR-V\n"
-               "of the GLSL stages",
-               addTargets},
-              {"-O", "", "", "optimise SPIR-V with spirv-opt's performance passes", storeFlag(o.optimize)},
-              {"-O0", "", "", "no SPIR-V optimisation (default)", storeFlag(o.optimize, false)},
-              {"-j", "", "N",
-               "compile N graphs at once (default: one per core); the\n"
-               "output is byte-identical whatever N is",
-               [&o](const std::string& v) { return setJobs(v, o.jobs); }},
-              {"--emit-header", "", "",
-               "write NAME.hpp: the material and frame uniform blocks as\n"
-               "C++ structs laid out as std140, with a static_assert on\n"
-               "every offset (docs/engine-api.md)",
-               storeFlag(o.targets.header)},
-              {"--depfile", "", "FILE",
-               "write a Make-syntax depfile: each material's outputs\n"
-               "depend on its graph, its graph libraries and its\n"
-               "image files",
-               [&o](const std::string& v) { return setDepfile(v, o.depfile); }},
-              {"--variants", "", "all|LIST",
-               "compile static-switch variants (docs/graph-format.md): all\n"
-               "permutations, or LIST = SWITCH[=VALUE|VALUE...],... where a\n"
-               "bare SWITCH means all its values; others keep their default",
-               [&o](const std::string& v) { return setVariants(v, o.variants); }},
-              {"--weather-preset", "", "NAME",
-               "weather preset for every graph, replacing the graph's own\n"
-               "(rock, terrain, foliage, river, road, none)",
-               storeChecked(o.weatherPreset, checkWeatherPresetName)},
-              {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
-               [&o](const std::string& v) { return setDiagnosticsFormat(v, o.json); }},
-              {"--quiet", "-q", "", "print nothing but diagnostics", storeFlag(o.quiet)},
-              {"--dump-ir-after", "", "PASS",
-               "debugging: print the IR after PASS (see list-passes; 'all'\n"
-               "prints it after every pass) on stdout and write nothing;\n"
-               "-o is not needed",
-               storeChecked(o.dumpIrAfter, checkDumpIrPassName)},
-              {"--help", "-h", "", "this help", storeFlag(o.help), true},
-          },
-          .operand = [&o](const std::string& graph) {
-            o.graphs.push_back(graph);
-            return std::string();
-          }};
+  return {
+      {"--output", "-o", "DIR", "output directory (created if missing)", storeValue(o.outputDir)},
+      {"--target", "", "LIST",
+       "comma-separated glsl, hlsl, spirv, msl, glsles, or all\n"
+       "(default: all = glsl,hlsl,spirv). MSL 2.0 and GLSL ES 3.10\n"
+       "are translated by SPIRV-Cross from the validated SPIR-V\n"
+       "of the GLSL stages",
+       addTargets},
+      {"-O", "", "", "optimise SPIR-V with spirv-opt's performance passes", storeFlag(o.optimize)},
+      {"-O0", "", "", "no SPIR-V optimisation (default)", storeFlag(o.optimize, false)},
+      {"-j", "", "N", "compile N graphs at once (default: one per core); the\noutput is byte-identical whatever N is",
+       [&o](const std::string& v) { return setJobs(v, o.jobs); }},
+      {"--emit-header", "", "",
+       "write NAME.hpp: the material and frame uniform blocks as\n"
+       "C++ structs laid out as std140, with a static_assert on\n"
+       "every offset (docs/engine-api.md)",
+       storeFlag(o.targets.header)},
+      {"--depfile", "", "FILE",
+       "write a Make-syntax depfile: each material's outputs\n"
+       "depend on its graph, its graph libraries and its\n"
+       "image files",
+       [&o](const std::string& v) { return setDepfile(v, o.depfile); }},
+  };
+}
+
+// Which materials, how they are reported, and debugging.
+std::vector<Option> materialAndReportOptions(Options& o) {
+  return {
+      {"--variants", "", "all|LIST",
+       "compile static-switch variants (docs/graph-format.md): all\n"
+       "permutations, or LIST = SWITCH[=VALUE|VALUE...],... where a\n"
+       "bare SWITCH means all its values; others keep their default",
+       [&o](const std::string& v) { return setVariants(v, o.variants); }},
+      {"--weather-preset", "", "NAME",
+       "weather preset for every graph, replacing the graph's own\n(rock, terrain, foliage, river, road, none)",
+       storeChecked(o.weatherPreset, checkWeatherPresetName)},
+      {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
+       [&o](const std::string& v) { return setDiagnosticsFormat(v, o.json); }},
+      {"--quiet", "-q", "", "print nothing but diagnostics", storeFlag(o.quiet)},
+      {"--dump-ir-after", "", "PASS",
+       "debugging: print the IR after PASS (see list-passes; 'all'\n"
+       "prints it after every pass) on stdout and write nothing;\n"
+       "-o is not needed",
+       storeChecked(o.dumpIrAfter, checkDumpIrPassName)},
+      {"--help", "-h", "", "this help", storeFlag(o.help), true},
+  };
+}
+
+OptionTable compileOptionTable(Options& o) {
+  OptionTable table{.operand = [&o](const std::string& graph) {
+    o.graphs.push_back(graph);
+    return std::string();
+  }};
+  table.options = outputOptions(o);
+  for (auto& option : materialAndReportOptions(o)) table.options.push_back(std::move(option));
+  return table;
 }
 
 // Reads the command line into `o`; an exit code when the command is done (--help, or a
