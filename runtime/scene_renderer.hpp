@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "nodes/frame_state.hpp"
+#include "runtime/frame_recording.hpp"
 #include "runtime/material_resources.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/weather/weather_state.hpp"
@@ -85,12 +87,29 @@ class SceneRenderer {
 
  private:
   struct Object;
-  struct MaterialSet;
+  struct Pass;
+  struct Frame;
   MaterialResources& material(const std::string& graph, const std::optional<std::string>& preset);
-  void createPasses();
-  void buildExposureMap();
+  vk::MaterialPipeline& pipelineOf(MaterialResources& material, const RenderRequest& request);
   void uploadTerrain();
-  vk::UniqueFramebuffer framebuffer(VkRenderPass pass, std::vector<VkImageView> views, std::uint32_t w, std::uint32_t h);
+  void buildExposureMap();
+  std::vector<float> drawSkyOccluders(const glm::mat4& topDown);
+  std::vector<float> depthFromAbove(const std::vector<ObjectDraw>& draws);
+
+  // The steps of render(), in order.
+  std::vector<MaterialResources*> materialsFor(const RenderRequest& request);
+  void uploadObjects(const std::vector<MaterialResources*>& materials);
+  const scene::CameraPreset& cameraFor(const RenderRequest& request) const;
+  std::vector<Pass> passesFor(const Frame& frame) const;
+  glm::mat4 modelOf(std::size_t object, const RenderRequest& request) const;
+  FrameState sharedFrameState(const Frame& frame) const;
+  void writeFrameSlices(Frame& frame) const;
+  void allocateDescriptorSets(Frame& frame);
+  void createTargets(Frame& frame);
+  std::vector<std::size_t> drawOrder(const Frame& frame) const;
+  std::vector<ObjectDraw> drawsOf(Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
+  void recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
+  RenderedFrame readBack(Frame& frame);
 
   vk::Context& ctx_;
   scene::Scene scene_;
