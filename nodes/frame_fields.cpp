@@ -41,7 +41,7 @@ using F = FrameState;
 
 // Ordered so std140 packs without holes: matrices and vec4s first, then each vec3
 // followed by a float, then the scalars.
-constexpr std::array<FrameField, 26> kFrameFields = {{
+constexpr std::array<FrameField, 27> kFrameFields = {{
     field<&F::model, T::Mat4>("model", "object to world"),
     field<&F::viewProjection, T::Mat4>("viewProjection", "world to clip space"),
     field<&F::normalMatrix, T::Mat4>("normalMatrix", "inverse transpose of model"),
@@ -53,7 +53,8 @@ constexpr std::array<FrameField, 26> kFrameFields = {{
                               kWeather),
     field<&F::sunDirection, T::Vec3>("sunDirection", "towards the sun, world x:y:z, y up (normalised)", -kInf, kInf,
                                      kWeather),
-    field<&F::sunIntensity, T::Float>("sunIntensity", "weather's sun strength", 0.f, 1.f, kWeather),
+    field<&F::sunIntensity, T::Float>("sunIntensity", "the sun light's brightness (radiance = sunColor * sunIntensity)",
+                                      0.f, 1.f, kWeather),
     field<&F::sunColor, T::Vec3>("sunColor", "linear radiance at full intensity; radiance = sunColor * sunIntensity"),
     field<&F::ambientIntensity, T::Float>("ambientIntensity", "sky light scale"),
     field<&F::skyColor, T::Vec3>("skyColor", "linear sky radiance"),
@@ -63,6 +64,10 @@ constexpr std::array<FrameField, 26> kFrameFields = {{
                                       -kInf, kInf, kWeather),
     field<&F::windIntensity, T::Float>("windIntensity", "0 calm .. 1 blizzard", 0.f, 1.f, kWeather),
     field<&F::precipitation, T::Float>("precipitation", "0 dry .. 1 heavy (about 10 mm/h of rain)", 0.f, 1.f, kWeather),
+    field<&F::sunMelt, T::Float>("sunMelt",
+                                 "eq. 3.5's SunIntensity: how strongly direct sun melts snow and dries moss on the faces "
+                                 "it shines on (not the light)",
+                                 0.f, 1.f, kWeather),
     field<&F::snowLevel, T::Float>("snowLevel", "accumulated snow", 0.f, 1.f, kWeather),
     field<&F::wetnessLevel, T::Float>("wetnessLevel", "accumulated wetness", 0.f, 1.f, kWeather),
     field<&F::mossLevel, T::Float>("mossLevel", "moss growth", 0.f, 1.f, kWeather),

@@ -27,6 +27,7 @@ struct FrameState {
   std::array<float, 2> windDirection{1.f, 0.f};
   float windIntensity = 0.f;
   float precipitation = 0.f;
+  float sunMelt = 0.f;  // eq. 3.5's SunIntensity: the sun's melting and drying strength, not its light
   float snowLevel = 0.f, wetnessLevel = 0.f, mossLevel = 0.f, frostLevel = 0.f, puddleLevel = 0.f;
   float exposure = 1.f;
   std::uint32_t debugView = 0;

@@ -14,6 +14,15 @@ constexpr float kShelterClearance = 0.1f;
 constexpr float kShelterFull = 0.5f;
 // Eq. 3.4 gate: faces within this much of vertical (as n.up, about 6 degrees) fade in.
 constexpr float kFacingRamp = 0.1f;
+// Eq. 3.5 for snow: at full melt strength a face that gets 2/3 of a full sun more direct
+// sun than level ground loses all cover (a 30-degree slope facing a sun on the horizon
+// gets 0.5 more, and keeps f_sun = 0.25).
+constexpr float kSunMeltScale = 1.5f;
+// Eq. 3.5 for moss: the printed SunIntensity offset; also the scale of the sun term, so
+// full sun maps N . L in [-1, 1] onto [1, 0].
+constexpr float kMossShadeBias = 0.5f;
+// Moss clings to tops and sides; overhangs fade out by 30 degrees below the horizontal.
+constexpr float kMossOverhangRamp = 2.f;
 // Eq. 3.10: the displacement noise is brightened so it never opens holes.
 constexpr float kNoiseBrightening = 0.75f;
 // Eq. 3.12: the height map is shifted by 0.05 texture units to measure slope.
@@ -80,8 +89,13 @@ float inclination(glm::vec3 normal, glm::vec3 detailNormal, float intensity) {
   return c * c * c * facing;
 }
 
-float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float sunIntensity) {
-  return clamp01(glm::dot(normal, -towardsSun) * clamp01(sunIntensity) + 1.f);
+float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float melt) {
+  float excess = std::max(glm::dot(normal, towardsSun), 0.f) - std::max(glm::dot(kUp, towardsSun), 0.f);
+  return clamp01(1.f - kSunMeltScale * clamp01(melt) * excess);
+}
+
+float sunShade(glm::vec3 normal, glm::vec3 towardsSun, float melt) {
+  return clamp01(kMossShadeBias - kMossShadeBias * clamp01(melt) * glm::dot(normal, towardsSun));
 }
 
 float windFlow(glm::vec2 xz, glm::vec2 direction, float time) {
@@ -175,7 +189,7 @@ glm::vec2 toVec2(const std::array<float, 2>& a) { return {a[0], a[1]}; }
 float shapedPrediction(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
                        float terrain, const SnowShape& shape) {
   float inc = lerp(1.f, inclination(normal, detailNormal, shape.inclinationIntensity), shape.terms.x);
-  float sun = lerp(1.f, sunFacing(normal, toVec3(frame.sunDirection), frame.sunIntensity), shape.terms.y);
+  float sun = lerp(1.f, sunFacing(normal, toVec3(frame.sunDirection), frame.sunMelt), shape.terms.y);
   float h = lerp(1.f, height(position.y, shape.minHeight, shape.maxHeight), shape.terms.z);
   float wind = windInfluence(normal, {position.x, position.z}, toVec2(frame.windDirection), frame.windIntensity,
                              frame.time) *
@@ -205,11 +219,12 @@ float mossCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position
                    const SnowShape& shape) {
   float level = clamp01(frame.mossLevel);
   if (level <= 0.f) return 0.f;
-  float sun = sunFacing(normal, toVec3(frame.sunDirection), frame.sunIntensity);
+  // Least sun (eq. 3.5 read for moss) and low ground (eq. 3.9), weighted as eq. 3.1's
+  // w1 and w3; tops and sides alike, but not overhangs.
+  float shade = sunShade(normal, toVec3(frame.sunDirection), frame.sunMelt);
   float low = heightInverted(position.y, shape.minHeight, shape.maxHeight);
-  // Moss clings to tops and sides but not to overhangs.
-  float facing = 0.5f + 0.5f * glm::dot(normal, kUp);
-  float predicted = clamp01(shape.weights.x * sun * shape.weights.z * low) * facing;
+  float facing = clamp01(1.f + kMossOverhangRamp * glm::dot(normal, kUp));
+  float predicted = clamp01(shape.weights.x * shade * shape.weights.z * low) * facing;
   float noise = 0.5f * coverageNoise(position + glm::vec3(kDecorrelate.x, 0.f, kDecorrelate.y)) +
                 0.5f * (1.f - detailMask(diffuse));
   return transition(noise, predicted * level);

@@ -40,8 +40,13 @@ float lerp(float a, float b, float p);       // eq. 3.3
 // Eq. 3.4: Clamp(N.up + (Nd.up) * intensity)^3, Nd the normal-mapped world normal,
 // times Clamp(N.up / 0.1) so undersides never hold snow whatever the normal map does.
 float inclination(glm::vec3 normal, glm::vec3 detailNormal, float intensity);
-// Eq. 3.5: Clamp(N . sunTravel * sunIntensity + 1): sun-facing sides lose cover.
-float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float sunIntensity);
+// Eq. 3.5 for snow, relative to level ground:
+// Clamp(1 - 1.5 melt (max(N . L, 0) - max(up . L, 0))). Faces that get more direct sun
+// than level ground lose cover; level ground keeps snowLevel's cover under any sun.
+float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float melt);
+// Eq. 3.5 for moss, as printed with SunIntensity 0.5: Clamp(0.5 - 0.5 melt (N . L)).
+// The side facing away from the sun scores highest, the side facing it lowest.
+float sunShade(glm::vec3 normal, glm::vec3 towardsSun, float melt);
 // Eq. 3.6: f_pan(h, v) = flow(xz + (h, v) * time); f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x).
 float windFlow(glm::vec2 xz, glm::vec2 direction, float time);
 // Eq. 3.7: Clamp(N . (d.x, 0, d.y) * f_wind(d) + windIntensity).

@@ -59,10 +59,10 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                           [](const Value* in, const EvalContext&) {
                             return Value::scalar(inclination(v3(in[0]), v3(in[1]), in[2].x()));
                           }));
-  ops.push_back(weatherOp("weather_sun", "eq. 3.5: less cover on sides facing the sun", {vec3Required("normal")}, F,
-                          "wg_sun_facing({normal}, frame_sunDirection, frame_sunIntensity)",
+  ops.push_back(weatherOp("weather_sun", "eq. 3.5: less cover on faces that get more sun than level ground",
+                          {vec3Required("normal")}, F, "wg_sun_facing({normal}, frame_sunDirection, frame_sunMelt)",
                           [](const Value* in, const EvalContext& c) {
-                            return Value::scalar(sunFacing(v3(in[0]), arr3(c.frame->sunDirection), c.frame->sunIntensity));
+                            return Value::scalar(sunFacing(v3(in[0]), arr3(c.frame->sunDirection), c.frame->sunMelt));
                           },
                           V));
   ops.push_back(weatherOp("weather_wind", "eq. 3.6-3.7: two-phase panning wind flow and its influence",

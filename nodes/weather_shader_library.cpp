@@ -21,9 +21,15 @@ float wg_inclination(vec3 n, vec3 nd, float intensity) {
   // The geometric normal gates the normal-map term: overhangs never hold snow.
   return c * c * c * wg_clamp01(dot(n, vec3(0.0, 1.0, 0.0)) / 0.1);
 }
-// Eq. 3.5: sun-facing sides lose cover, the more the stronger the sun.
-float wg_sun_facing(vec3 n, vec3 towardsSun, float intensity) {
-  return wg_clamp01(dot(n, -towardsSun) * wg_clamp01(intensity) + 1.0);
+// Eq. 3.5 for snow: faces that get more direct sun than level ground lose cover, in
+// proportion to the melt strength (not the light's brightness).
+float wg_sun_facing(vec3 n, vec3 towardsSun, float melt) {
+  float excess = max(dot(n, towardsSun), 0.0) - max(dot(vec3(0.0, 1.0, 0.0), towardsSun), 0.0);
+  return wg_clamp01(1.0 - 1.5 * wg_clamp01(melt) * excess);
+}
+// Eq. 3.5 for moss, as printed with SunIntensity 0.5: the side facing away scores highest.
+float wg_sun_shade(vec3 n, vec3 towardsSun, float melt) {
+  return wg_clamp01(0.5 - 0.5 * wg_clamp01(melt) * dot(n, towardsSun));
 }
 // Eq. 3.6: two panning phases of the flow noise.
 float wg_wind_flow(vec2 xz, vec2 d, float t) {
@@ -95,7 +101,7 @@ float wg_coverage_noise(vec3 p) { return wg_value_noise(vec2(p.x * 1.5, p.z * 1.
 // terms = (inclination, sun, height, wind) as 0 or 1.
 float wg_shaped_prediction(vec3 n, vec3 nd, vec3 p, float terrain, vec4 w, vec4 shape, vec4 terms) {
   float inc = wg_lerp(1.0, wg_inclination(n, nd, shape.z), terms.x);
-  float sun = wg_lerp(1.0, wg_sun_facing(n, frame_sunDirection, frame_sunIntensity), terms.y);
+  float sun = wg_lerp(1.0, wg_sun_facing(n, frame_sunDirection, frame_sunMelt), terms.y);
   float h = wg_lerp(1.0, wg_height(p.y, shape.x, shape.y), terms.z);
   float wind = wg_wind_influence(n, vec2(p.x, p.z), frame_windDirection, frame_windIntensity, frame_time) * terms.w;
   return wg_prediction(inc, sun, h, terrain, wind, w);
@@ -120,10 +126,10 @@ vec3 wg_snow_offset(vec3 n, vec3 p, float exposure, vec4 w, vec4 shape, vec4 ter
 float wg_moss_coverage(vec3 n, vec3 p, vec3 diffuse, vec4 w, vec4 shape) {
   float level = wg_clamp01(frame_mossLevel);
   if (level <= 0.0) return 0.0;
-  float sun = wg_sun_facing(n, frame_sunDirection, frame_sunIntensity);
+  float shade = wg_sun_shade(n, frame_sunDirection, frame_sunMelt);
   float low = wg_height_inverted(p.y, shape.x, shape.y);
-  float facing = 0.5 + 0.5 * dot(n, vec3(0.0, 1.0, 0.0));
-  float predicted = wg_clamp01(w.x * sun * w.z * low) * facing;
+  float facing = wg_clamp01(1.0 + 2.0 * dot(n, vec3(0.0, 1.0, 0.0)));  // not on overhangs
+  float predicted = wg_clamp01(w.x * shade * w.z * low) * facing;
   float noise = 0.5 * wg_coverage_noise(p + vec3(17.3, 0.0, 9.1)) + 0.5 * (1.0 - wg_detail_mask(diffuse));
   return wg_transition(noise, predicted * level);
 }

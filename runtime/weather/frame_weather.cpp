@@ -16,6 +16,7 @@ void forEachWeatherMember(Weather& weather, Frame& frame, Visit visit) {
   visit(weather.conditions.windIntensity, frame.windIntensity);
   visit(weather.conditions.sunDirection, frame.sunDirection);
   visit(weather.conditions.sunIntensity, frame.sunIntensity);
+  visit(weather.conditions.sunMelt, frame.sunMelt);
   visit(weather.time, frame.time);  // double in the simulation, float in the block
   visit(weather.levels.snow, frame.snowLevel);
   visit(weather.levels.wetness, frame.wetnessLevel);

@@ -17,6 +17,14 @@ constexpr double kTetensA = 17.27;
 constexpr double kTetensB = 237.3;  // °C
 // Temperature a NaN input is replaced with: at the freezing point no thermal rate acts.
 constexpr double kNeutralTemperatureC = 0.0;
+// Sun melt: the sun's height (sin of its elevation) over which it rises from nothing
+// (on the horizon, grazing every face) to full strength, about 6 degrees.
+constexpr double kSunMeltElevationRamp = 0.1;
+
+double smoothstep(double e0, double e1, double x) {
+  const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
 
 double clampOr(double x, double lo, double hi, double fallback) {
   return std::isnan(x) ? fallback : std::clamp(x, lo, hi);
@@ -53,7 +61,8 @@ constexpr std::array kRateFields{&WeatherRates::snowAccumulation,
                                  &WeatherRates::mossDrying,
                                  &WeatherRates::freezePerDegree,
                                  &WeatherRates::thawPerDegree};
-constexpr std::array kTemperatureFields{&WeatherRates::rainAboveC, &WeatherRates::snowBelowC,
+constexpr std::array kTemperatureFields{&WeatherRates::sunMeltColdC, &WeatherRates::sunMeltFullC,
+                                        &WeatherRates::rainAboveC, &WeatherRates::snowBelowC,
                                         &WeatherRates::snowReferenceC,
                                         &WeatherRates::evaporationReferenceC};
 static_assert(sizeof(WeatherRates) ==
@@ -182,6 +191,20 @@ float storeLevel(double x, float previous) {
 float sanitizedLevel(float x) { return static_cast<float>(clampOr(x, 0.0, 1.0, 0.0)); }
 
 }  // namespace
+
+float sunMeltStrength(const WeatherConditions& conditions, const WeatherRates& rates) {
+  const WeatherConditions c = sanitized(conditions);
+  const WeatherRates r = sanitized(rates);
+  const auto& d = c.sunDirection;
+  const double length = std::sqrt(double(d[0]) * d[0] + double(d[1]) * d[1] + double(d[2]) * d[2]);
+  if (!(length > 0.0) || !std::isfinite(length)) return 0.f;
+  const double elevation = smoothstep(0.0, kSunMeltElevationRamp, double(d[1]) / length);
+  const double warmth = r.sunMeltFullC > r.sunMeltColdC
+                            ? smoothstep(r.sunMeltColdC, r.sunMeltFullC, c.temperature)
+                            : (c.temperature >= r.sunMeltFullC ? 1.0 : 0.0);
+  const double light = clampOr(c.sunIntensity, 0.0, 1.0, 0.0);
+  return static_cast<float>(light * elevation * warmth);
+}
 
 double snowFraction(double temperatureC, const WeatherRates& rates) {
   return snowFractionSanitized(

@@ -37,12 +37,21 @@ inline constexpr double kRainMeltPerDegree = 4.186 / 333.55;
 // Rates are per simulated second.
 struct WeatherRates {
   // --- Precipitation phase -------------------------------------------------------
-  // All rain above rainAboveC, all snow below snowBelowC, a smoothstep blend (sleet,
-  // freezing rain) between. The thesis switches rain to snow at <= 0 °C; a 1 °C band
-  // placed just below 0 keeps "no snow above 0 °C" exact while making every rate a
-  // continuous function of temperature. Real mixed-phase bands are ~2 °C wide.
-  double rainAboveC = 0.0;
-  double snowBelowC = -1.0;
+  // All snow at and below snowBelowC, all rain at and above rainAboveC, a smoothstep
+  // blend (sleet) between. The thesis: "if temperature is less than or equal to zero
+  // rain becomes snowfall" (3.1), so everything at or below 0 °C is snow; the 1 °C band
+  // that keeps every rate a continuous function of temperature lies above 0 °C, where
+  // real mixed-phase precipitation is observed (about -1 to +3 °C of air temperature).
+  double rainAboveC = 1.0;
+  double snowBelowC = 0.0;
+
+  // --- Sun melt (eq. 3.5's SunIntensity, see sunMeltStrength) ----------------------
+  // Direct sun warms a sunlit snow surface above the air temperature, so sun-facing
+  // slopes lose snow (melt and sublimation) in sub-freezing air too; in deep cold that
+  // no longer shows. The melt strength rises from 0 at sunMeltColdC to full at
+  // sunMeltFullC (smoothstep) and above.
+  double sunMeltColdC = -15.0;
+  double sunMeltFullC = 0.0;
 
   // --- Snow ----------------------------------------------------------------------
   // Heavy snowfall (precipitation 1) at snowReferenceC covers 95 % in 2 h: ~2.5-5 cm/h
@@ -137,8 +146,13 @@ struct WeatherDynamics {
   LevelDynamics rainMemory;
 };
 
-// Fraction of precipitation that falls as snow at this temperature: 1 below
-// rates.snowBelowC, 0 above rates.rainAboveC, smoothstep between.
+// Eq. 3.5's SunIntensity derived from the sun and the temperature: the light's
+// brightness, times a ramp from 0 with the sun on the horizon to 1 from about 6 degrees
+// up, times the temperature ramp of rates.sunMeltColdC..sunMeltFullC. In [0, 1]; the
+// default conditions (full sun overhead, 15 °C) give 1.
+float sunMeltStrength(const WeatherConditions& conditions, const WeatherRates& rates = {});
+// Fraction of precipitation that falls as snow at this temperature: 1 at and below
+// rates.snowBelowC, 0 at and above rates.rainAboveC, smoothstep between.
 double snowFraction(double temperatureC, const WeatherRates& rates = {});
 // Drying speed relative to the reference (20 °C, light breeze, no precipitation):
 // vapour pressure ratio * wind function ratio * (1 - precipitation).

@@ -44,7 +44,8 @@ std::string validate(const WeatherConditions& c) {
         checkRange("precipitation", c.precipitation, 0.0f, 1.0f),
         checkRange("windIntensity", c.windIntensity, 0.0f, 1.0f),
         checkFinite("windDirection", c.windDirection), checkFinite("sunDirection", c.sunDirection),
-        checkRange("sunIntensity", c.sunIntensity, 0.0f, 1.0f)}) {
+        checkRange("sunIntensity", c.sunIntensity, 0.0f, 1.0f),
+        checkRange("sunMelt", c.sunMelt, 0.0f, 1.0f)}) {
     if (!error.empty()) return error;
   }
   return {};

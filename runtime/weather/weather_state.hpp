@@ -25,7 +25,12 @@ struct WeatherConditions {
       1.0f, 0.0f};             // where the wind blows to, xz; any length, zero allowed
   float windIntensity = 0.0f;  // [0, 1]: calm .. blizzard-force wind
   std::array<float, 3> sunDirection{0.0f, 1.0f, 0.0f};  // towards the sun; any length
-  float sunIntensity = 1.0f;                            // [0, 1]
+  float sunIntensity = 1.0f;  // [0, 1]: the light's brightness (radiance = sunColor * sunIntensity)
+  // [0, 1]: eq. 3.5's SunIntensity, how strongly direct sun melts snow and dries moss on
+  // the faces it shines on. Set it directly, or derive it with sunMeltStrength()
+  // (weather_simulation.hpp; simulateTimeline does). The default is what the default
+  // conditions derive: a full sun overhead at 15 °C.
+  float sunMelt = 1.0f;
 };
 
 // Accumulated amounts, each in [0, 1]: 0 none, 1 full cover / fully soaked / frozen over.

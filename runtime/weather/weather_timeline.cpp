@@ -42,12 +42,14 @@ std::string number(double x) {
   return out.str();
 }
 
-// Keeps the engine-owned sun while taking everything the timeline scripts.
+// Keeps the engine-owned sun while taking everything the timeline scripts; the sun's
+// melt strength (eq. 3.5) follows from that sun and the scripted temperature.
 WeatherConditions scriptedConditions(const WeatherTimeline& timeline, double t,
-                                     const WeatherConditions& sun) {
+                                     const WeatherConditions& sun, const WeatherRates& rates) {
   WeatherConditions c = timeline.keys.empty() ? sun : timeline.at(t);
   c.sunDirection = sun.sunDirection;
   c.sunIntensity = sun.sunIntensity;
+  c.sunMelt = sunMeltStrength(c, rates);
   return c;
 }
 
@@ -114,7 +116,7 @@ std::vector<WeatherState> simulateTimeline(const WeatherTimeline& timeline,
   std::vector<WeatherState> history;
   WeatherState state = start;
   advanceWeather(state, 0.0, rates);  // only sanitizes garbage levels and time
-  state.conditions = scriptedConditions(timeline, state.time, start.conditions);
+  state.conditions = scriptedConditions(timeline, state.time, start.conditions, rates);
   history.push_back(state);
   if (!(std::isfinite(dt) && dt > 0.0 && std::isfinite(duration) && duration > 0.0)) return history;
 
@@ -129,11 +131,11 @@ std::vector<WeatherState> simulateTimeline(const WeatherTimeline& timeline,
     // Times from t0 + i * dt rather than accumulated, so rounding does not drift.
     const double begin = t0 + static_cast<double>(i) * dt;
     const double end = i + 1 == steps ? t0 + duration : begin + dt;
-    state.conditions = scriptedConditions(timeline, 0.5 * (begin + end), start.conditions);
+    state.conditions = scriptedConditions(timeline, 0.5 * (begin + end), start.conditions, rates);
     state.time = begin;
     advanceWeather(state, end - begin, rates);
     state.time = end;
-    state.conditions = scriptedConditions(timeline, end, start.conditions);
+    state.conditions = scriptedConditions(timeline, end, start.conditions, rates);
     history.push_back(state);
   }
   return history;

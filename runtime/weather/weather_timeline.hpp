@@ -44,7 +44,8 @@ inline constexpr std::size_t kMaxTimelineSteps = 1'000'000;
 // Runs the simulation from `start` (whose time places it on the timeline) for `duration`
 // simulated seconds in steps of `dt` (the last one shorter if dt does not divide
 // duration). Each step holds the conditions sampled at its midpoint; the start state's
-// sun is kept. Returns the states after every step, preceded by the start state; each
+// sun is kept, and its melt strength is derived (sunMeltStrength) from that sun and the
+// timeline's temperature. Returns the states after every step, preceded by the start state; each
 // state's conditions are the timeline's at its own time. Non-positive or non-finite dt
 // or duration: just the start state. dt is enlarged if needed to stay within
 // kMaxTimelineSteps (the integration is exact, so only condition sampling coarsens).

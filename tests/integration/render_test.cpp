@@ -256,6 +256,53 @@ TEST(WeatherBehaviour, SnowAppearsFirstOnUpFacingAndShadedFaces) {
   EXPECT_GT(mean(shadeSide), mean(sunSide));
 }
 
+// Eq. 3.5's melt strength is not the light: under a bright overhead sun at full melt
+// strength, rock tops that face straight up stay covered at snowLevel 1.
+TEST(WeatherBehaviour, UpFacingRockKeepsItsSnowUnderABrightHighSun) {
+  REQUIRE_VULKAN();
+  SceneRenderer& renderer = sceneRenderer("rocks");
+  WeatherState w = weatherFor(renderer.scene());
+  w.conditions.temperature = -4.f;
+  w.levels.snow = 1.f;
+  w.conditions.sunDirection = {0.f, 1.f, 0.f};
+  w.conditions.sunIntensity = 1.f;
+  w.conditions.sunMelt = 1.f;
+  std::vector<float> tops;
+  for (const auto& rock : objectsUsing(renderer.scene(), "rock"))
+    for (const auto& s : samplesOf(renderer, requestFor("rocks", w), rock, "snow"))
+      if (s.normal.y > 0.95f) tops.push_back(s.value.x);
+  ASSERT_GE(tops.size(), 20u);
+  EXPECT_GE(mean(tops), 0.95);
+}
+
+// Seed 3.2.2 and 5.1.2: moss grows on the side that sees the least sun. With the sun 25
+// degrees up, flanks facing away from it hold more moss than tops, and tops more than
+// flanks facing it.
+TEST(WeatherBehaviour, MossGrowsMostOnTheShadedFlanks) {
+  REQUIRE_VULKAN();
+  SceneRenderer& renderer = sceneRenderer("rocks");
+  WeatherState w = weatherFor(renderer.scene());
+  w.conditions.temperature = 13.f;
+  w.levels.moss = 0.6f;
+  glm::vec2 sun = glm::normalize(glm::vec2(renderer.scene().towardsSun.x, renderer.scene().towardsSun.z));
+  const float elevation = glm::radians(25.f);
+  w.conditions.sunDirection = {std::cos(elevation) * sun.x, std::sin(elevation), std::cos(elevation) * sun.y};
+  w.conditions.sunIntensity = w.conditions.sunMelt = 1.f;
+  std::vector<float> top, sunFlank, shadeFlank;
+  for (const auto& rock : objectsUsing(renderer.scene(), "rock"))
+    for (const auto& s : samplesOf(renderer, requestFor("rocks", w), rock, "moss")) {
+      if (s.normal.y > 0.9f) top.push_back(s.value.x);
+      if (std::abs(s.normal.y) < 0.3f) {
+        float facing = glm::dot(glm::normalize(glm::vec2(s.normal.x, s.normal.z)), sun);
+        if (facing > 0.7f) sunFlank.push_back(s.value.x);
+        if (facing < -0.7f) shadeFlank.push_back(s.value.x);
+      }
+    }
+  ASSERT_FALSE(top.empty() || sunFlank.empty() || shadeFlank.empty());
+  EXPECT_GT(mean(shadeFlank), mean(top));
+  EXPECT_GT(mean(top), mean(sunFlank));
+}
+
 // Nothing accumulates under the shelter, while open ground beside it is covered.
 TEST(WeatherBehaviour, NothingAccumulatesUnderTheShelter) {
   REQUIRE_VULKAN();

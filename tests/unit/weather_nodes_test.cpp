@@ -101,29 +101,33 @@ TEST(WeatherNodes, Inclination) {
   expectValue(eval("weather_inclination", {v3(0.8f, 0.6f, 0), kUp, s(0)}), s(0.216f));
 }
 
-// Eq. 3.5 as read: Clamp(N . (-towardsSun) * Clamp(sunIntensity) + 1).
+// Eq. 3.5 for snow, relative to level ground:
+// Clamp(1 - 1.5 Clamp(sunMelt) (max(N . L, 0) - max(up . L, 0))). The light's brightness
+// (sunIntensity) plays no part.
 TEST(WeatherNodes, SunFacing) {
   Env env;
   env.frame.sunDirection = {0, 1, 0};  // towards the sun: overhead
-  env.frame.sunIntensity = 0.8f;
-  // Facing the sun: -1 * 0.8 + 1 = 0.2.
-  expectValue(eval("weather_sun", {kUp}, env), s(0.2f));
-  // Facing away: 1 * 0.8 + 1 = 1.8 -> 1.
-  expectValue(eval("weather_sun", {kDown}, env), s(1));
-  // Sideways: 0 + 1 = 1.
-  expectValue(eval("weather_sun", {v3(1, 0, 0)}, env), s(1));
-  // Intensity clamps to 1: -1 * 1 + 1 = 0.
-  env.frame.sunIntensity = 2.f;
-  expectValue(eval("weather_sun", {kUp}, env), s(0));
-  // No sun: 1 everywhere.
-  env.frame.sunIntensity = 0.f;
+  env.frame.sunMelt = 0.8f;
+  env.frame.sunIntensity = 0.f;  // the light is off; the melt strength still acts
+  // Level ground: the reference, 1 under any sun.
   expectValue(eval("weather_sun", {kUp}, env), s(1));
-  // A 30 degree sun, towards (cos 30, sin 30, 0) = (0.8660254, 0.5, 0), full strength:
-  // up-facing: -0.5 + 1 = 0.5; the sun-facing side (1, 0, 0): -0.8660254 + 1 = 0.1339746.
+  // Facing away or sideways: less sun than level ground -> 1 + ... -> 1.
+  expectValue(eval("weather_sun", {kDown}, env), s(1));
+  expectValue(eval("weather_sun", {v3(1, 0, 0)}, env), s(1));
+  // A 30 degree sun, towards (cos 30, sin 30, 0), full strength. Level ground 1; the
+  // sun-facing side (1, 0, 0): excess 0.8660254 - 0.5 = 0.3660254, 1 - 1.5 * 0.3660254 =
+  // 0.4509619; a face turned straight at the sun: excess 0.5 -> 0.25.
   env.frame.sunDirection = {0.8660254f, 0.5f, 0};
+  env.frame.sunMelt = 1.f;
   env.frame.sunIntensity = 1.f;
-  expectValue(eval("weather_sun", {kUp}, env), s(0.5f));
-  expectValue(eval("weather_sun", {v3(1, 0, 0)}, env), s(0.1339746f));
+  expectValue(eval("weather_sun", {kUp}, env), s(1));
+  expectValue(eval("weather_sun", {v3(1, 0, 0)}, env), s(0.4509619f));
+  expectValue(eval("weather_sun", {v3(0.8660254f, 0.5f, 0)}, env), s(0.25f));
+  // Melt strength clamps to 1, and 0 means no melt anywhere.
+  env.frame.sunMelt = 2.f;
+  expectValue(eval("weather_sun", {v3(0.8660254f, 0.5f, 0)}, env), s(0.25f));
+  env.frame.sunMelt = 0.f;
+  expectValue(eval("weather_sun", {v3(0.8660254f, 0.5f, 0)}, env), s(1));
 }
 
 // Eq. 3.6-3.7: f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x), f_pan(h, v) =
@@ -441,14 +445,14 @@ TEST(WeatherNodes, SnowCoverage) {
   env.frame.windIntensity = 0;
   // ...unless inclination is switched off (terms.x = 0): f_p = Clamp(2 * 1 * 2 * 0.5) = 1 -> 1.
   expectValue(coverage(kDown, kDown, 1, v4(0, 1, 1, 1)), s(1));
-  // Sun from the +x horizon at full strength, snow level 0.3. Sun-facing (0.6, 0.8, 0): inc
-  // Clamp(0.8 + 0.4) = 1, sun Clamp(-0.6 + 1) = 0.4, f_p = 2 * 0.4 * 2 * 0.5 = 0.8;
-  // transition(0.296, 0.24) = 0.296 - 1 + 0.72 = 0.016. The shaded side (-0.6, 0.8, 0):
-  // sun 1, f_p 1 -> 0.196.
+  // Sun from the +x horizon at full melt strength, snow level 0.3. Sun-facing (0.6, 0.8,
+  // 0): inc Clamp(0.8 + 0.4) = 1, sun Clamp(1 - 1.5 * 0.6) = 0.1, f_p = 2 * 0.1 * 2 * 0.5 =
+  // 0.2; transition(0.296, 0.06) = 0.296 - 1 + 0.18 < 0 -> 0. The shaded side (-0.6, 0.8,
+  // 0): sun 1, f_p 1 -> 0.196.
   env.frame.sunDirection = {1, 0, 0};
-  env.frame.sunIntensity = 1;
+  env.frame.sunMelt = 1;
   env.frame.snowLevel = 0.3f;
-  expectValue(coverage(v3(0.6f, 0.8f, 0), v3(0.6f, 0.8f, 0), 1), s(0.016f));
+  expectValue(coverage(v3(0.6f, 0.8f, 0), v3(0.6f, 0.8f, 0), 1), s(0));
   expectValue(coverage(v3(-0.6f, 0.8f, 0), v3(-0.6f, 0.8f, 0), 1), s(0.196f));
   // Switching the sun off (terms.y = 0) makes both sides alike.
   expectValue(coverage(v3(0.6f, 0.8f, 0), v3(0.6f, 0.8f, 0), 1, v4(1, 0, 1, 1)), s(0.196f));
@@ -472,8 +476,8 @@ TEST(WeatherNodes, SnowOffset) {
   expectValue(offset(kDown, 1, 0.25f), v3(0, 0, 0));  // f_p = 0 on downward faces
 }
 
-// Moss: transition(0.5 noise + 0.5 (1 - detailMask), Clamp(w1 sun w3 (1 - height)) *
-// (0.5 + 0.5 N.up) * mossLevel). The moss noise reads position + (17.3, 0, 9.1), so at
+// Moss: transition(0.5 noise + 0.5 (1 - detailMask), Clamp(w1 shade w3 (1 - height)) *
+// Clamp(1 + 2 N.up) * mossLevel), shade = Clamp(0.5 - 0.5 sunMelt N.L) (eq. 3.5 for moss). The moss noise reads position + (17.3, 0, 9.1), so at
 // xz = (-17.3, -9.1) it is noise(0, 0) = 0 and the transition noise is again 0.296.
 TEST(WeatherNodes, MossCoverage) {
   Env env;
@@ -483,22 +487,31 @@ TEST(WeatherNodes, MossCoverage) {
   };
   env.frame.mossLevel = 0;
   expectValue(coverage(kUp, at), s(0));
-  // Full level, up-facing, y = 0: sun 1, low 0.5, facing 1: Clamp(2 * 1 * 2 * 0.5) * 1 = 1 -> 1.
+  // Full level, up-facing, y = 0, no melt: shade 0.5, low 0.5, facing 1:
+  // Clamp(2 * 0.5 * 2 * 0.5) * 1 = 1 -> 1.
   env.frame.mossLevel = 1;
   expectValue(coverage(kUp, at), s(1));
-  // Level 0.3: 0.296 - 1 + 0.9 = 0.196.
+  // Level 0.3: 0.296 - 1 + 0.9 = 0.196; sides alike (facing Clamp(1 + 0) = 1).
   env.frame.mossLevel = 0.3f;
   expectValue(coverage(kUp, at), s(0.196f));
+  expectValue(coverage(v3(1, 0, 0), at), s(0.196f));
   env.frame.mossLevel = 1;
-  // Overhangs: facing 0.5 - 0.5 = 0 -> transition(0.296, 0) = 0.
+  // Overhangs: facing Clamp(1 - 2) = 0 -> transition(0.296, 0) = 0.
   expectValue(coverage(kDown, at), s(0));
   // High ground (y = 50 = maxHeight): low = 0 -> 0.
   expectValue(coverage(kUp, v3(-17.3f, 50, -9.1f)), s(0));
-  // Full sun from +x: the sun side (1, 0, 0) gets sun 0 -> 0; the shade side (-1, 0, 0)
-  // sun Clamp(1 + 1) = 1, facing 0.5: 1 * 0.5 = 0.5 -> 0.296 - 1 + 1.5 = 0.796.
+  // Full melt strength from +x, level 0.5: the sun side (1, 0, 0) gets shade 0 -> 0; the
+  // shade side (-1, 0, 0) shade 1, Clamp(2) = 1 -> 0.296 - 1 + 1.5 = 0.796; the top (sun on
+  // the horizon, N.L = 0) shade 0.5 -> 1 -> 0.796 too.
   env.frame.sunDirection = {1, 0, 0};
-  env.frame.sunIntensity = 1;
+  env.frame.sunMelt = 1;
+  env.frame.mossLevel = 0.5f;
   expectValue(coverage(v3(1, 0, 0), at), s(0));
+  expectValue(coverage(v3(-1, 0, 0), at), s(0.796f));
+  // A sun 30 degrees up: the top's shade 0.5 - 0.25 = 0.25, Clamp(2 * 0.25 * 2 * 0.5) = 0.5
+  // -> transition(0.296, 0.25) = 0.046; the shaded flank stays at 0.796.
+  env.frame.sunDirection = {0.8660254f, 0.5f, 0};
+  expectValue(coverage(kUp, at), s(0.046f));
   expectValue(coverage(v3(-1, 0, 0), at), s(0.796f));
 }
 

@@ -203,7 +203,7 @@ TurningUp snowWhileTurningUp(const CpuEvaluator& rock, const ParameterValues& pa
         for (float side : {1.f, -1.f}) {
           FrameState frame = snowyFrame(level);
           frame.sunDirection = {1.f, 0.f, 0.f};
-          frame.sunIntensity = 0.8f;
+          frame.sunMelt = 0.8f;
           frame.windDirection = {1.f, 0.f};
           frame.windIntensity = 0.3f;
           const float radius = std::sqrt(1.f - nx * nx);
@@ -305,7 +305,7 @@ TEST(WeatherProperties, SunFacingSidesHoldLessSnowAndLessMoss) {
           frame.snowLevel = 0.f;
           frame.mossLevel = 1.f;
           frame.sunDirection = {std::cos(elevation) * horizontal[0], std::sin(elevation), std::cos(elevation) * horizontal[2]};
-          frame.sunIntensity = intensity;
+          frame.sunMelt = intensity;
           frame.windDirection = {-horizontal[2], horizontal[0]};
           frame.windIntensity = 0.3f;
           FrameState snowy = frame;
@@ -321,7 +321,7 @@ TEST(WeatherProperties, SunFacingSidesHoldLessSnowAndLessMoss) {
             const float mossShaded = rock.evaluate(inputs(shaded, frame)).coverageOf(CoverageTerm::Moss);
             const float snowSunny = rock.evaluate(inputs(sunny, snowy, kFlatDetail)).coverageOf(CoverageTerm::Snow);
             const float snowShaded = rock.evaluate(inputs(shaded, snowy, kFlatDetail)).coverageOf(CoverageTerm::Snow);
-            const std::string where = at(sunny) + " sun " + text(frame.sunDirection) + " intensity " + std::to_string(intensity);
+            const std::string where = at(sunny) + " sun " + text(frame.sunDirection) + " melt " + std::to_string(intensity);
             if (mossSunny > mossShaded + kTolerance)
               moreMoss.add(where + ": moss " + std::to_string(mossSunny) + " facing the sun > " + std::to_string(mossShaded));
             if (snowSunny > snowShaded + kTolerance)
@@ -338,6 +338,119 @@ TEST(WeatherProperties, SunFacingSidesHoldLessSnowAndLessMoss) {
   EXPECT_LT(mossToward, mossAway) << "moss on average: facing the sun " << mossToward << ", away " << mossAway;
 }
 
+// The sun's direction at an elevation and azimuth (degrees).
+Vec3 sunAt(float elevationDegrees, float azimuthDegrees) {
+  const float e = elevationDegrees * std::numbers::pi_v<float> / 180.f;
+  const float a = azimuthDegrees * std::numbers::pi_v<float> / 180.f;
+  return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
+}
+// A normal tilted from up by tiltDegrees towards the azimuth (negative: away from it).
+Vec3 tiltedTowards(float tiltDegrees, float azimuthDegrees) {
+  const float t = tiltDegrees * std::numbers::pi_v<float> / 180.f;
+  const float a = azimuthDegrees * std::numbers::pi_v<float> / 180.f;
+  return {std::sin(t) * std::cos(a), std::cos(t), std::sin(t) * std::sin(a)};
+}
+
+// Mean coverage of a term over the ground grid at height y, facing `normal`.
+double meanCoverage(const CpuEvaluator& e, const FrameState& frame, CoverageTerm term, float y, Vec3 normal,
+                    const ParameterValues& parameters = {}) {
+  double total = 0;
+  const std::vector<SurfacePoint> points = grid(y, normal);
+  for (const SurfacePoint& p : points) total += e.evaluate(inputs(p, frame, parameters)).coverageOf(term);
+  return total / static_cast<double>(points.size());
+}
+
+// Eq. 3.5's SunIntensity is the melt strength (sunMelt), not the light: at snowLevel 1,
+// level ground stays covered (>= 0.95) whatever the sun's brightness, direction and melt
+// strength, since snowLevel is the simulation's cover of open level ground.
+TEST(WeatherProperties, BrightSunNeverClearsLevelGround) {
+  const CpuEvaluator& rock = bundled("rock");
+  Violations bare;
+  for (float elevation : {3.f, 15.f, 30.f, 45.f, 60.f, 75.f, 90.f})
+    for (float azimuth : {0.f, 130.f, 250.f})
+      for (float light : {0.f, 1.f})
+        for (float melt : {0.f, 0.5f, 1.f})
+          for (float y : {0.f, 20.f}) {
+            FrameState frame = snowyFrame(1.f);
+            frame.sunDirection = sunAt(elevation, azimuth);
+            frame.sunIntensity = light;
+            frame.sunMelt = melt;
+            for (const SurfacePoint& p : grid(y)) {
+              const float snow = rock.evaluate(inputs(p, frame)).coverageOf(CoverageTerm::Snow);
+              if (snow < 0.95f)
+                bare.add(at(p) + " sun " + text(frame.sunDirection) + " light " + std::to_string(light) + " melt " +
+                         std::to_string(melt) + ": snow " + std::to_string(snow));
+            }
+          }
+  EXPECT_EQ(bare.count(), 0u) << bare.report();
+}
+
+// The light's brightness alone never changes the cover: only the melt strength does.
+TEST(WeatherProperties, TheLightsBrightnessDoesNotMeltSnow) {
+  const CpuEvaluator& rock = bundled("rock");
+  Violations changed;
+  for (float elevation : {15.f, 45.f, 90.f})
+    for (float tilt : {0.f, 30.f, 45.f, 70.f}) {
+      FrameState dim = snowyFrame(0.7f), bright = dim;
+      dim.sunDirection = bright.sunDirection = sunAt(elevation, 0.f);
+      dim.sunMelt = bright.sunMelt = 0.6f;
+      dim.sunIntensity = 0.f;
+      bright.sunIntensity = 1.f;
+      for (const SurfacePoint& p : grid(0.f, tiltedTowards(tilt, 0.f))) {
+        const float a = rock.evaluate(inputs(p, dim)).coverageOf(CoverageTerm::Snow);
+        const float b = rock.evaluate(inputs(p, bright)).coverageOf(CoverageTerm::Snow);
+        if (a != b) changed.add(at(p) + ": snow " + std::to_string(a) + " in a dim sun, " + std::to_string(b) + " in a bright one");
+      }
+    }
+  EXPECT_EQ(changed.count(), 0u) << changed.report();
+}
+
+// At snowLevel 1 and full melt strength, slopes facing the sun hold less snow than the
+// same slopes facing away (visibly so for steep slopes under a low sun), yet 30-degree
+// slopes facing the sun are never bare. The detail normal is flat: the two slopes'
+// tangent frames mirror each other, so the rock's normal map would tilt them apart.
+TEST(WeatherProperties, SunFacingSlopesHoldLessSnowButThirtyDegreesIsNotBare) {
+  const CpuEvaluator& rock = bundled("rock");
+  for (float azimuth : {0.f, 130.f, 250.f}) {
+    for (float elevation : {3.f, 15.f, 25.f, 45.f, 60.f, 80.f}) {
+      FrameState frame = snowyFrame(1.f);
+      frame.sunDirection = sunAt(elevation, azimuth);
+      frame.sunIntensity = frame.sunMelt = 1.f;
+      for (float tilt : {30.f, 45.f}) {
+        const double toward = meanCoverage(rock, frame, CoverageTerm::Snow, 0.f, tiltedTowards(tilt, azimuth), kFlatDetail);
+        const double away = meanCoverage(rock, frame, CoverageTerm::Snow, 0.f, tiltedTowards(-tilt, azimuth), kFlatDetail);
+        EXPECT_LE(toward, away + kTolerance) << tilt << " degree slope, sun at " << elevation << " degrees";
+        if (tilt == 30.f)
+          EXPECT_GT(toward, 0.5) << "30 degree slope facing a sun at " << elevation << " degrees is nearly bare";
+        if (tilt == 45.f && elevation <= 15.f)
+          EXPECT_LT(toward, away - 0.1) << "45 degree slope, sun at " << elevation << " degrees: facing it " << toward
+                                        << ", facing away " << away;
+      }
+    }
+  }
+}
+
+// Seed 3.2.2 and 5.1.2: moss grows on the side that sees the least sun. With the sun 25
+// degrees up, the flank facing away holds the most moss, the top less, the flank facing
+// the sun the least, at moss levels 0.3 and 0.6.
+TEST(WeatherProperties, MossGrowsMostOnTheShadedFlank) {
+  const CpuEvaluator& rock = bundled("rock");
+  for (float level : {0.3f, 0.6f})
+    for (float azimuth : {0.f, 130.f, 250.f})
+      for (float y : {-10.f, 0.f}) {
+        FrameState frame;
+        frame.temperature = 13.f;
+        frame.mossLevel = level;
+        frame.sunDirection = sunAt(25.f, azimuth);
+        frame.sunIntensity = frame.sunMelt = 1.f;
+        const double shaded = meanCoverage(rock, frame, CoverageTerm::Moss, y, tiltedTowards(-90.f, azimuth));
+        const double top = meanCoverage(rock, frame, CoverageTerm::Moss, y, kUp);
+        const double sunlit = meanCoverage(rock, frame, CoverageTerm::Moss, y, tiltedTowards(90.f, azimuth));
+        EXPECT_GT(shaded, top) << "moss level " << level << " azimuth " << azimuth << " y " << y;
+        EXPECT_GT(top, sunlit) << "moss level " << level << " azimuth " << azimuth << " y " << y;
+      }
+}
+
 // ---- Height ------------------------------------------------------------------------------
 
 TEST(WeatherProperties, HigherPointsHoldMoreSnowAndLessMoss) {
@@ -351,7 +464,7 @@ TEST(WeatherProperties, HigherPointsHoldMoreSnowAndLessMoss) {
       FrameState frame;
       frame.temperature = kFreezingC;
       frame.sunDirection = normalized({0.5f, 0.8f, 0.3f});
-      frame.sunIntensity = 0.7f;
+      frame.sunMelt = 0.7f;
       frame.windDirection = {0.6f, 0.8f};
       frame.windIntensity = 0.2f;
       FrameState snowy = frame, mossy = frame;
@@ -392,6 +505,7 @@ FrameState frameOf(const WeatherState& s) {
   f.windIntensity = s.conditions.windIntensity;
   f.sunDirection = s.conditions.sunDirection;
   f.sunIntensity = s.conditions.sunIntensity;
+  f.sunMelt = s.conditions.sunMelt;
   f.time = static_cast<float>(s.time);
   f.snowLevel = s.levels.snow;
   f.wetnessLevel = s.levels.wetness;
@@ -489,7 +603,7 @@ TEST(WeatherProperties, FullMossOnShadedLowGroundIsInTheGrassBand) {
   FrameState frame;
   frame.mossLevel = 1.f;
   frame.sunDirection = normalized({1.f, 0.5f, 0.f});
-  frame.sunIntensity = 1.f;
+  frame.sunMelt = 1.f;
   const Vec3 shaded = normalized(plus(kUp, {1.f, 0.f, 0.f}, -kSideTilt));
   Violations outside;
   const std::size_t full = checkBand(bundled("rock"), grid(kLowGround, shaded), frame, CoverageTerm::Moss,
@@ -551,7 +665,7 @@ TEST(WeatherProperties, DegenerateInputsGiveFiniteInRangeOutputs) {
                   f.windDirection = calm ? std::array<float, 2>{0.f, 0.f} : std::array<float, 2>{0.f, 1.f};
                   f.windIntensity = calm ? 0.f : 1.f;
                   f.sunDirection = calm ? Vec3{0.f, 0.f, 0.f} : kUp;  // a zero sun, like the zero wind
-                  f.sunIntensity = level;
+                  f.sunIntensity = f.sunMelt = level;
                   f.time = calm ? 0.f : 1e4f;
                   SurfacePoint p;
                   p.worldNormal = normal;

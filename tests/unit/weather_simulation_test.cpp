@@ -139,7 +139,7 @@ TEST(WeatherValidateTest, StateChecksLevelsAndTime) {
 // The rules, one at a time
 
 TEST(WeatherRulesTest, SnowAccumulatesOnlyAtOrBelowZeroWithPrecipitation) {
-  for (float t : {0.5f, 1.0f, 5.0f, 20.0f}) {
+  for (float t : {1.0f, 5.0f, 20.0f}) {
     WeatherState s = weather(t, 1.0f);
     run(s, 6 * kHour);
     EXPECT_EQ(s.levels.snow, 0.0f) << "snow at " << t << " °C";
@@ -153,11 +153,15 @@ TEST(WeatherRulesTest, SnowAccumulatesOnlyAtOrBelowZeroWithPrecipitation) {
     run(s, 6 * kHour);
     EXPECT_GT(s.levels.snow, 0.3f) << "no snow at " << t << " °C";
   }
-  // Exactly 0 °C is the continuous edge of the sleet band: the snowfall rate has just
-  // reached zero, so nothing accumulates there either.
+  // Seed 3.1: at exactly 0 °C precipitation is snow. In the sleet band above it, wet
+  // snow still settles, more slowly and melting ("it is possible to see snow in
+  // temperatures above zero degrees but melting takes place", 5.1.1).
   WeatherState freezing = weather(0.0f, 1.0f);
   run(freezing, 6 * kHour);
-  EXPECT_EQ(freezing.levels.snow, 0.0f);
+  EXPECT_GT(freezing.levels.snow, 0.3f);
+  WeatherState sleet = weather(0.5f, 1.0f);
+  run(sleet, 6 * kHour);
+  EXPECT_LT(sleet.levels.snow, freezing.levels.snow);
 }
 
 TEST(WeatherRulesTest, ColderSnowfallAccumulatesFaster) {
@@ -471,7 +475,9 @@ TEST(WeatherContinuityTest, NoJumpAcrossTheFreezingPoint) {
   const float atHundredth = difference(0.01f);
   const float atThousandth = difference(0.001f);
   EXPECT_GT(atOneDegree, 0.02f) << "the test would not see a jump";
-  EXPECT_LT(atHundredth, 1e-3f);
+  // Right above 0 °C meltwater starts to wet the snow-covered fraction: over this hour
+  // wetness changes by about 0.3 per °C (0.0032 at +-0.01 °C), a slope, not a jump.
+  EXPECT_LT(atHundredth, 5e-3f);
   // Continuity, not just smallness: the gap shrinks with the temperature difference
   // instead of levelling off at the size of a step.
   EXPECT_LT(atThousandth, 0.2f * atHundredth);
@@ -511,14 +517,65 @@ TEST(WeatherContinuityTest, RatesAreContinuousInTemperature) {
   }
 }
 
-TEST(WeatherContinuityTest, SnowFractionRampsOverOneDegreeBelowZero) {
-  EXPECT_EQ(snowFraction(0.0), 0.0);
-  EXPECT_EQ(snowFraction(0.5), 0.0);
-  EXPECT_EQ(snowFraction(-1.0), 1.0);
+// The seed (3.1): "if temperature is less than or equal to zero rain becomes snowfall".
+// The continuity band lies above 0 °C.
+TEST(WeatherContinuityTest, SnowAtAndBelowZeroAndTheBandAboveIt) {
+  EXPECT_EQ(snowFraction(0.0), 1.0);
+  EXPECT_EQ(snowFraction(-0.5), 1.0);
   EXPECT_EQ(snowFraction(-20.0), 1.0);
-  EXPECT_NEAR(snowFraction(-0.5), 0.5, 1e-12);
-  EXPECT_LT(snowFraction(-0.01), 1e-3);
-  EXPECT_GT(snowFraction(-0.99), 1.0 - 1e-3);
+  EXPECT_EQ(snowFraction(1.0), 0.0);
+  EXPECT_EQ(snowFraction(5.0), 0.0);
+  EXPECT_NEAR(snowFraction(0.5), 0.5, 1e-12);
+  EXPECT_GT(snowFraction(0.01), 1.0 - 1e-3);
+  EXPECT_LT(snowFraction(0.99), 1e-3);
+  // At and below 0 °C nothing falls as rain: no wetting, no puddles, no rain memory.
+  for (float t : {0.0f, -0.25f, -1.0f, -5.0f}) {
+    const WeatherDynamics d = weatherDynamics(weather(t, 1.0f, 0.0f).conditions);
+    EXPECT_EQ(d.wetness.gain, 0.0) << t;
+    EXPECT_EQ(d.puddles.gain, 0.0) << t;
+    EXPECT_EQ(d.rainMemory.gain, 0.0) << t;
+    EXPECT_GT(d.snow.gain, 0.0) << t;
+  }
+}
+
+// ---------------------------------------------------------------------------------
+// Sun melt (eq. 3.5's SunIntensity, separate from the light's brightness)
+
+TEST(WeatherSunMeltTest, DefaultConditionsDeriveTheDefaultMeltStrength) {
+  EXPECT_FLOAT_EQ(sunMeltStrength(WeatherConditions{}), WeatherConditions{}.sunMelt);
+}
+
+TEST(WeatherSunMeltTest, FollowsTheLightTheSunsHeightAndTheTemperature) {
+  WeatherConditions c;
+  c.temperature = 5.0f;
+  c.sunIntensity = 0.6f;
+  EXPECT_FLOAT_EQ(sunMeltStrength(c), 0.6f);  // warm, sun overhead: the light's brightness
+  c.sunIntensity = 0.0f;
+  EXPECT_EQ(sunMeltStrength(c), 0.0f);  // no light, no melt
+  c.sunIntensity = 1.0f;
+  c.sunDirection = {1.0f, -0.2f, 0.0f};
+  EXPECT_EQ(sunMeltStrength(c), 0.0f);  // below the horizon
+  c.sunDirection = {1.0f, 0.0f, 0.0f};
+  EXPECT_EQ(sunMeltStrength(c), 0.0f);  // on the horizon
+  c.sunDirection = {0.0f, 0.0f, 0.0f};
+  EXPECT_EQ(sunMeltStrength(c), 0.0f);  // no sun at all
+  c.sunDirection = {0.0f, 3.0f, 0.0f};  // any length
+  EXPECT_FLOAT_EQ(sunMeltStrength(c), 1.0f);
+  // Colder air: weaker, never stronger, and nothing at or below sunMeltColdC.
+  float previous = 2.0f;
+  for (float t = 10.0f; t >= -30.0f; t -= 0.5f) {
+    c.temperature = t;
+    const float melt = sunMeltStrength(c);
+    EXPECT_LE(melt, previous) << t;
+    EXPECT_GE(melt, 0.0f);
+    previous = melt;
+  }
+  c.temperature = static_cast<float>(WeatherRates{}.sunMeltColdC);
+  EXPECT_EQ(sunMeltStrength(c), 0.0f);
+  c.temperature = -4.0f;
+  EXPECT_GT(sunMeltStrength(c), 0.5f);  // a sunny snowy day still melts sun-facing slopes
+  c.temperature = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE(std::isfinite(sunMeltStrength(c)));
 }
 
 // ---------------------------------------------------------------------------------
@@ -735,6 +792,18 @@ TEST(WeatherTimelineTest, ParseReportsPointerAndReason) {
     EXPECT_FALSE(parseWeatherTimeline(nlohmann::json::parse(c.json), error)) << c.json;
     EXPECT_EQ(error.rfind(c.expected, 0), 0u) << "got \"" << error << "\" for " << c.json;
   }
+}
+
+TEST(WeatherSunMeltTest, TimelinesDeriveTheMeltStrengthFromTheEnginesSun) {
+  const WeatherTimeline timeline{{key(0, 10, 0), key(1000, -20, 0)}};
+  WeatherState start;
+  start.conditions.sunIntensity = 0.5f;
+  start.conditions.sunMelt = 0.9f;  // replaced by the derived value
+  const std::vector<WeatherState> history = simulateTimeline(timeline, start, 250.0, 1000.0);
+  ASSERT_FALSE(history.empty());
+  for (const WeatherState& s : history) EXPECT_FLOAT_EQ(s.conditions.sunMelt, sunMeltStrength(s.conditions));
+  EXPECT_FLOAT_EQ(history.front().conditions.sunMelt, 0.5f);
+  EXPECT_EQ(history.back().conditions.sunMelt, 0.0f);
 }
 
 TEST(WeatherTimelineTest, SimulateTimelineRecordsEveryStep) {
