@@ -29,10 +29,4 @@ std::optional<std::string> CommandLine::valueFor(const std::string& name, std::s
   return std::nullopt;
 }
 
-bool CommandLine::flag(const std::string& name) {
-  if (done() || args_[index_] != name) return false;
-  ++index_;
-  return true;
-}
-
 }  // namespace wg

@@ -18,7 +18,6 @@ class CommandLine {
   // Matches "--name value", "--name=value" and, for short names, "-nVALUE".
   // Sets error when the value is missing.
   std::optional<std::string> valueFor(const std::string& name, std::string& error);
-  bool flag(const std::string& name);
   bool endOfOptions() const { return endOfOptions_; }
   void markEndOfOptions() { endOfOptions_ = true; }
 
