@@ -389,8 +389,9 @@ std::vector<float> SceneRenderer::drawSkyOccluders(const glm::mat4& topDown) {
 }
 
 std::vector<float> SceneRenderer::depthFromAbove(const std::vector<ObjectDraw>& draws) {
+  // Sampled too: the depth-only pass leaves its target shader-readable.
   vk::Image2D depth(ctx_, kExposureResolution, kExposureResolution, vk::kDepthFormat,
-                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
   vk::UniqueFramebuffer target = createFramebuffer(ctx_.device(), depthPass_.get(), {depth.view()}, kExposureResolution, kExposureResolution);
   VkClearValue clear;
   clear.depthStencil = {1.f, 0};
