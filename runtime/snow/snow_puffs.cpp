@@ -9,6 +9,7 @@
 #include "runtime/snow/snow_puff_shaders.hpp"
 #include "runtime/vulkan/material_pipeline.hpp"
 #include "runtime/vulkan/compute_barriers.hpp"
+#include "runtime/vulkan/graphics_pipeline.hpp"
 #include "runtime/vulkan/runtime_shader.hpp"
 
 namespace wg::snow {
@@ -43,32 +44,10 @@ struct Draws {
   float unit() { return float(latticeHash(particle, next++) >> 8) / float(1u << 24); }
   float around(float spread) { return 1.f + spread * (2.f * unit() - 1.f); }
 };
-}  // namespace
 
-SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
-    : ctx_(ctx), settings_(settings),
-      particles_(ctx, settings.capacity * sizeof(Particle), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
-  std::memset(particles_.mapped(), 0, particles_.size());
-  VkDevice d = ctx_.device();
-  auto simulate = vk::compileRuntimeShader(puffSimulateSource(), vk::RuntimeStage::Compute, "snow puff step");
-  auto vertex = vk::compileRuntimeShader(puffVertexSource(), vk::RuntimeStage::Vertex, "snow puff vertex");
-  auto fragment = vk::compileRuntimeShader(puffFragmentSource(), vk::RuntimeStage::Fragment, "snow puff fragment");
-  simulateSet_ = std::make_unique<vk::ReflectedDescriptorSet>(ctx_, std::vector{simulate.interface}, VK_SHADER_STAGE_COMPUTE_BIT);
-  drawSet_ = std::make_unique<vk::ReflectedDescriptorSet>(ctx_, std::vector{vertex.interface, fragment.interface},
-                                                          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
-  if (simulateSet_->pushConstantBytes() != sizeof(StepConstants) || drawSet_->pushConstantBytes() != sizeof(ViewConstants))
-    throw std::runtime_error("snow puff shaders: push constants disagree with StepConstants / ViewConstants");
-  simulateSet_->bindBuffer("Particles", particles_);
-  drawSet_->bindBuffer("Particles", particles_);
-  depthSampler_ = createSampler(ctx_, "clamp", "nearest");
-  drawSet_->bindSampler("DepthSampler", depthSampler_.get());
-  simulateLocalSize_ = simulate.interface.localSize[0];
-
-  simulateModule_ = vk::createShaderModule(ctx_, simulate.words);
-  simulatePipeline_ = vk::createComputePipeline(ctx_, simulateModule_.get(), simulateSet_->pipelineLayout());
-
-  // Draws over the finished colour: load it, keep it; no depth attachment, the
-  // fragment stage compares against the sampled scene depth itself.
+// Draws over the finished colour: load it, keep it; no depth attachment, the
+// fragment stage compares against the sampled scene depth itself.
+vk::UniqueRenderPass createPuffPass(VkDevice d) {
   VkAttachmentDescription colour{};
   colour.format = vk::kColourFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -99,31 +78,14 @@ SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
   passInfo.pDependencies = &before;
   VkRenderPass pass;
   vk::check(vkCreateRenderPass(d, &passInfo, nullptr, &pass), "vkCreateRenderPass");
-  pass_ = vk::UniqueRenderPass(d, pass);
+  return vk::UniqueRenderPass(d, pass);
+}
 
-  vertexModule_ = vk::createShaderModule(ctx_, vertex.words);
-  fragmentModule_ = vk::createShaderModule(ctx_, fragment.words);
-  VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vertexModule_.get();
-  stages[0].pName = "main";
-  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = fragmentModule_.get();
-  stages[1].pName = "main";
-  VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
-  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = VK_CULL_MODE_NONE;
-  raster.lineWidth = 1.f;
-  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  VkPipelineColorBlendAttachmentState blend{};
+// Camera-facing billboards, six vertices a particle from the particle buffer (no
+// vertex input), blended premultiplied over the colour.
+vk::UniquePipeline createPuffPipeline(VkDevice d, VkShaderModule vertexModule, VkShaderModule fragmentModule,
+                                      VkPipelineLayout layout, VkRenderPass pass) {
+  VkPipelineColorBlendAttachmentState blend = vk::opaqueColour();
   blend.blendEnable = VK_TRUE;  // premultiplied alpha
   blend.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
   blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
@@ -131,29 +93,43 @@ SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
   blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
   blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
   blend.alphaBlendOp = VK_BLEND_OP_ADD;
-  blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blendState{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blendState.attachmentCount = 1;
-  blendState.pAttachments = &blend;
-  VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = 2;
-  dynamic.pDynamicStates = dynamicStates;
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = 2;
-  info.pStages = stages;
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pColorBlendState = &blendState;
-  info.pDynamicState = &dynamic;
-  info.layout = drawSet_->pipelineLayout();
-  info.renderPass = pass;
-  VkPipeline drawPipeline;
-  vk::check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &drawPipeline), "vkCreateGraphicsPipelines");
-  drawPipeline_ = vk::UniquePipeline(d, drawPipeline);
+  vk::GraphicsPipelineSettings settings;
+  settings.vertex = vertexModule;
+  settings.fragment = fragmentModule;
+  settings.colour = blend;
+  settings.layout = layout;
+  settings.pass = pass;
+  return vk::createGraphicsPipeline(d, settings);
+}
+
+}  // namespace
+
+SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
+    : ctx_(ctx), settings_(settings),
+      particles_(ctx, settings.capacity * sizeof(Particle), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+  std::memset(particles_.mapped(), 0, particles_.size());
+  VkDevice d = ctx_.device();
+  auto simulate = vk::compileRuntimeShader(puffSimulateSource(), vk::RuntimeStage::Compute, "snow puff step");
+  auto vertex = vk::compileRuntimeShader(puffVertexSource(), vk::RuntimeStage::Vertex, "snow puff vertex");
+  auto fragment = vk::compileRuntimeShader(puffFragmentSource(), vk::RuntimeStage::Fragment, "snow puff fragment");
+  simulateSet_ = std::make_unique<vk::ReflectedDescriptorSet>(ctx_, std::vector{simulate.interface}, VK_SHADER_STAGE_COMPUTE_BIT);
+  drawSet_ = std::make_unique<vk::ReflectedDescriptorSet>(ctx_, std::vector{vertex.interface, fragment.interface},
+                                                          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  if (simulateSet_->pushConstantBytes() != sizeof(StepConstants) || drawSet_->pushConstantBytes() != sizeof(ViewConstants))
+    throw std::runtime_error("snow puff shaders: push constants disagree with StepConstants / ViewConstants");
+  simulateSet_->bindBuffer("Particles", particles_);
+  drawSet_->bindBuffer("Particles", particles_);
+  depthSampler_ = createSampler(ctx_, "clamp", "nearest");
+  drawSet_->bindSampler("DepthSampler", depthSampler_.get());
+  simulateLocalSize_ = simulate.interface.localSize[0];
+
+  simulateModule_ = vk::createShaderModule(ctx_, simulate.words);
+  simulatePipeline_ = vk::createComputePipeline(ctx_, simulateModule_.get(), simulateSet_->pipelineLayout());
+
+  pass_ = createPuffPass(d);
+  vertexModule_ = vk::createShaderModule(ctx_, vertex.words);
+  fragmentModule_ = vk::createShaderModule(ctx_, fragment.words);
+  drawPipeline_ = createPuffPipeline(d, vertexModule_.get(), fragmentModule_.get(), drawSet_->pipelineLayout(), pass_.get());
 }
 
 SnowPuffs::~SnowPuffs() { vkDeviceWaitIdle(ctx_.device()); }

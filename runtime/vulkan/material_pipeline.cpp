@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "runtime/vulkan/graphics_pipeline.hpp"
 #include "runtime/vulkan/reflected_descriptor_set.hpp"
 
 namespace wg::vk {
@@ -19,7 +20,7 @@ VkFormat vertexFormat(std::string_view type) {
 // Straight (not premultiplied) alpha, "over": colour = src * a + dst * (1 - a), and
 // the stored alpha accumulates coverage the same way.
 VkPipelineColorBlendAttachmentState straightAlphaBlend() {
-  VkPipelineColorBlendAttachmentState b{};
+  VkPipelineColorBlendAttachmentState b = opaqueColour();
   b.blendEnable = VK_TRUE;
   b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
   b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
@@ -90,69 +91,25 @@ MaterialPipeline::MaterialPipeline(Context& ctx, const MaterialReflection& refle
 UniquePipeline MaterialPipeline::build(VkRenderPass pass, Kind kind) {
   const bool depthOnly = kind == Kind::Depth;
   const bool blended = kind == Kind::Colour && reflection_.blended();
-  VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vertexModule_.get();
-  stages[0].pName = "main";
-  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = fragmentModule_.get();
-  stages[1].pName = "main";
-
   VkVertexInputBindingDescription binding{0, vertex_.stride, VK_VERTEX_INPUT_RATE_VERTEX};
-  VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertexInput.vertexBindingDescriptionCount = 1;
-  vertexInput.pVertexBindingDescriptions = &binding;
-  vertexInput.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(vertex_.attributes.size());
-  vertexInput.pVertexAttributeDescriptions = vertex_.attributes.data();
-  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
-  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  GraphicsPipelineSettings settings;
+  settings.vertex = vertexModule_.get();
+  // Depth maps run the material's own vertex stage (snow displacement casts shadows)
+  // and no fragment stage.
+  if (!depthOnly) settings.fragment = fragmentModule_.get();
+  settings.vertexInput.vertexBindingDescriptionCount = 1;
+  settings.vertexInput.pVertexBindingDescriptions = &binding;
+  settings.vertexInput.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(vertex_.attributes.size());
+  settings.vertexInput.pVertexAttributeDescriptions = vertex_.attributes.data();
   // Alpha-tested cards and double-sided materials show both faces; depth maps see every
   // face (thin roofs included).
   const bool twoSided = depthOnly || reflection_.alphaTested || reflection_.doubleSided;
-  raster.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  raster.lineWidth = 1.f;
-  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;  // blended surfaces hide nothing
-  depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-  VkPipelineColorBlendAttachmentState blendAttachment = blended ? straightAlphaBlend() : VkPipelineColorBlendAttachmentState{};
-  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                                   VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blend.attachmentCount = depthOnly ? 0 : 1;
-  blend.pAttachments = &blendAttachment;
-  VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = 2;
-  dynamic.pDynamicStates = dynamicStates;
-
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  // Depth maps run the material's own vertex stage (snow displacement casts shadows)
-  // and no fragment stage.
-  info.stageCount = depthOnly ? 1 : 2;
-  info.pStages = stages;
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.pDynamicState = &dynamic;
-  info.layout = layout_.get();
-  info.renderPass = pass;
-  VkPipeline pipeline;
-  check(vkCreateGraphicsPipelines(ctx_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateGraphicsPipelines");
-  return UniquePipeline(ctx_.device(), pipeline);
+  settings.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+  settings.depthWrite = !blended;  // blended surfaces hide nothing
+  if (!depthOnly) settings.colour = blended ? straightAlphaBlend() : opaqueColour();
+  settings.layout = layout_.get();
+  settings.pass = pass;
+  return createGraphicsPipeline(ctx_.device(), settings);
 }
 
 }  // namespace wg::vk
