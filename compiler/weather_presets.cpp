@@ -23,11 +23,12 @@ WeatherConfig makePreset(std::string name) {
     c.terms = {0.f, 0.f, 1.f, 1.f};
   } else if (c.preset == "foliage") {
     // Detail mask only; alpha cards are not displaced; density falls as snow rises.
-    e.snow = e.foliageDensity = true;
+    // Rain wets every object "regardless of their material" (5.1.2).
+    e.snow = e.foliageDensity = e.wetness = true;
     c.terms = {0.f, 0.f, 0.f, 0.f};
   } else if (c.preset == "river") {
-    // Eq. 3.20: freezes from the banks, then ice.
-    e.ice = true;
+    // Eq. 3.20: freezes from the banks, then ice; rain wets the banks (5.1.2).
+    e.ice = e.wetness = true;
   } else if (c.preset == "road") {
     // Figures 5.7 and 5.12: wetness, puddles and frost, no displacement.
     e.wetness = e.puddles = e.hoarfrost = true;

@@ -184,17 +184,21 @@ namespace {
 glm::vec3 toVec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
 glm::vec2 toVec2(const std::array<float, 2>& a) { return {a[0], a[1]}; }
 
-// Eq. 3.1 with the shape's switches: a switched-off factor counts as 1, a switched-off
-// sum term as 0.
+// Eq. 3.1 with the shape's switches: a switched-off factor counts as 1, and so does its
+// weight (w1 = 2 balances a typical f_sun of 0.5, w3 = 2 a mid height; without the term
+// the balance goes too); a switched-off sum term counts as 0.
 float shapedPrediction(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
                        float terrain, const SnowShape& shape) {
+  glm::vec4 weights = shape.weights;
+  weights.x = lerp(1.f, weights.x, shape.terms.y);
+  weights.z = lerp(1.f, weights.z, shape.terms.z);
   float inc = lerp(1.f, inclination(normal, detailNormal, shape.inclinationIntensity), shape.terms.x);
   float sun = lerp(1.f, sunFacing(normal, toVec3(frame.sunDirection), frame.sunMelt), shape.terms.y);
   float h = lerp(1.f, height(position.y, shape.minHeight, shape.maxHeight), shape.terms.z);
   float wind = windInfluence(normal, {position.x, position.z}, toVec2(frame.windDirection), frame.windIntensity,
                              frame.time) *
                shape.terms.w;
-  return prediction(inc, sun, h, terrain, wind, shape.weights);
+  return prediction(inc, sun, h, terrain, wind, weights);
 }
 }  // namespace
 
@@ -236,9 +240,13 @@ float puddleCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 positi
   return puddleMask(normal, valueNoise(position.x * kPuddleNoiseScale, position.z * kPuddleNoiseScale), level);
 }
 
-float frostCoverage(const FrameState& frame, float frostMap) {
+float puddleIce(const FrameState& frame) {
+  return std::max(clamp01(frame.frostLevel), 1.f - smoothStep(0.f, kWetTemperatureRamp, frame.temperature));
+}
+
+float frostCoverage(const FrameState& frame, float frostMap, glm::vec3 position) {
   if (frame.frostLevel <= 0.f) return 0.f;
-  return frostMask(frostMap, frame.frostLevel);
+  return transition(coverageNoise(position), frostMask(frostMap, frame.frostLevel));
 }
 
 float hoarfrostCoverage(const FrameState& frame, glm::vec3 position, float exposure) {

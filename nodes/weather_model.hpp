@@ -85,7 +85,9 @@ struct SnowShape {
   glm::vec4 weights{2.f, 0.5f, 2.f, 0.5f};  // w1 sun, w2 wind, w3 height, w4 terrain
   float minHeight = -50.f, maxHeight = 50.f;
   float inclinationIntensity = 0.5f;
-  glm::vec4 terms{1.f, 1.f, 1.f, 1.f};  // use inclination, sun, height, wind (0 or 1)
+  // Use inclination, sun, height, wind (0 or 1). A switched-off factor counts as 1 and so
+  // does its weight (w1 for the sun, w3 for the height): the weights are renormalised.
+  glm::vec4 terms{1.f, 1.f, 1.f, 1.f};
 };
 float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
                    glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape);
@@ -94,7 +96,11 @@ glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 positi
 float mossCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, glm::vec3 diffuse,
                    const SnowShape& shape);
 float puddleCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure);
-float frostCoverage(const FrameState& frame, float frostMap);
+// How frozen standing water is: liquid only above 0 C (the 1 C ramp of eq. 3.15), and
+// the frost level keeps it frozen while it thaws: max(frost, 1 - smoothstep(0, 1 C, T)).
+float puddleIce(const FrameState& frame);
+// Eq. 3.20's frost mask with eq. 3.14's noisy edges: transition(coverageNoise(p), mask).
+float frostCoverage(const FrameState& frame, float frostMap, glm::vec3 position);
 float hoarfrostCoverage(const FrameState& frame, glm::vec3 position, float exposure);
 
 // Sky exposure from the shared map's occluder height above a point (1 open, 0 sheltered).

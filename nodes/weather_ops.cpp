@@ -252,10 +252,15 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                             return Value::scalar(puddleCoverage(*c.frame, v3(in[0]), v3(in[1]), in[2].x()));
                           },
                           V));
-  ops.push_back(weatherOp("weather_frost_coverage", "water freezing from the banks (eq. 3.20)", {floatRequired("frostMap")}, F,
-                          "wg_frost_coverage({frostMap})",
-                          [](const Value* in, const EvalContext& c) { return Value::scalar(frostCoverage(*c.frame, in[0].x())); },
+  ops.push_back(weatherOp("weather_frost_coverage", "water freezing from the banks (eq. 3.20), noisy edges (eq. 3.14)",
+                          {floatRequired("frostMap"), vec3Required("position")}, F, "wg_frost_coverage({frostMap}, {position})",
+                          [](const Value* in, const EvalContext& c) {
+                            return Value::scalar(frostCoverage(*c.frame, in[0].x(), v3(in[1])));
+                          },
                           V));
+  ops.push_back(weatherOp("weather_puddle_ice", "how frozen standing water is: liquid only above 0 C, kept by the frost level",
+                          {}, F, "wg_puddle_ice()",
+                          [](const Value*, const EvalContext& c) { return Value::scalar(puddleIce(*c.frame)); }, V));
   ops.push_back(weatherOp("weather_hoarfrost_coverage", "frost crystals on exposed ground (eq. 3.14 edges)",
                           {vec3Required("position"), floatPort("exposure", 1.f, 0.f, 1.f)}, F,
                           "wg_hoarfrost_coverage({position}, {exposure})", [](const Value* in, const EvalContext& c) {

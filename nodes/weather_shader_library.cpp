@@ -99,7 +99,10 @@ float wg_puddle_mask(vec3 n, float noise, float level) {
 float wg_coverage_noise(vec3 p) { return wg_value_noise(vec2(p.x * 1.5, p.z * 1.5)); }
 // Eq. 3.1 with switches: shape = (minHeight, maxHeight, inclination intensity, unused),
 // terms = (inclination, sun, height, wind) as 0 or 1.
+// A switched-off factor counts as 1, and so does its weight (w1 sun, w3 height).
 float wg_shaped_prediction(vec3 n, vec3 nd, vec3 p, float terrain, vec4 w, vec4 shape, vec4 terms) {
+  w.x = wg_lerp(1.0, w.x, terms.y);
+  w.z = wg_lerp(1.0, w.z, terms.z);
   float inc = wg_lerp(1.0, wg_inclination(n, nd, shape.z), terms.x);
   float sun = wg_lerp(1.0, wg_sun_facing(n, frame_sunDirection, frame_sunMelt), terms.y);
   float h = wg_lerp(1.0, wg_height(p.y, shape.x, shape.y), terms.z);
@@ -139,9 +142,14 @@ float wg_puddle_coverage(vec3 n, vec3 p, float exposure) {
   if (level <= 0.0) return 0.0;
   return wg_puddle_mask(n, wg_value_noise(vec2(p.x * 0.35, p.z * 0.35)), level);
 }
-float wg_frost_coverage(float frostMap) {
+// Standing water is liquid only above 0 C; the frost level keeps it frozen while it thaws.
+float wg_puddle_ice() {
+  return max(wg_clamp01(frame_frostLevel), 1.0 - smoothstep(0.0, 1.0, frame_temperature));
+}
+// Eq. 3.20 with eq. 3.14's noisy edges.
+float wg_frost_coverage(float frostMap, vec3 p) {
   if (frame_frostLevel <= 0.0) return 0.0;
-  return wg_frost_mask(frostMap, frame_frostLevel);
+  return wg_transition(wg_coverage_noise(p), wg_frost_mask(frostMap, frame_frostLevel));
 }
 float wg_hoarfrost_coverage(vec3 p, float exposure) {
   if (frame_frostLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped

@@ -106,9 +106,13 @@ class WeatherInjector {
   // Covers the surface with a layer: albedo, roughness and specular move to the
   // layer's, metals become dielectric, and the normal map flattens under it.
   void cover(const Operand& coverage, const Operand& albedo, float roughness, float specular, float normalFlattening) {
+    cover(coverage, albedo, k(roughness), k(specular), normalFlattening);
+  }
+  void cover(const Operand& coverage, const Operand& albedo, const Operand& roughness, const Operand& specular,
+             float normalFlattening) {
     color_ = lerp(color_, albedo, coverage);
-    roughness_ = lerp(roughness_, k(roughness), coverage);
-    specular_ = lerp(specular_, k(specular), coverage);
+    roughness_ = lerp(roughness_, roughness, coverage);
+    specular_ = lerp(specular_, specular, coverage);
     metallic_ = lerp(metallic_, k(0.f), coverage);
     if (normalFlattening > 0.f)
       tangentNormal_ = lerp(tangentNormal_, flatNormal(), b_.add("multiply", {{"a", coverage}, {"b", k(normalFlattening)}}));
@@ -152,8 +156,19 @@ class WeatherInjector {
     g_.coverage(CoverageTerm::Moss) = coverage;
   }
 
+  // Eq. 3.20's frost map: 0 on the banks, 1 mid-stream, from the river's v coordinate.
+  Operand frostMap() {
+    Operand v = b_.output(b_.add("split", {{"in", b_.add("texcoord", {})}}), "y");
+    Operand across = b_.add("abs", {{"in", b_.add("subtract", {{"a", b_.add("multiply", {{"a", v}, {"b", k(2.f)}})}, {"b", k(1.f)}})}});
+    return b_.add("one_minus", {{"in", across}});
+  }
+
   void addWetness() {
     Operand p = b_.add("weather_wetness", {{"exposure", exposure_}});
+    // Section 5.1.2: wetness applies to every object; on a water surface (the river) only
+    // its banks get wet, the water itself stays water.
+    if (cfg_.effects.ice)
+      p = b_.add("multiply", {{"a", p}, {"b", b_.add("one_minus", {{"in", b_.add("smoothstep", {{"edge0", k(0.f)}, {"edge1", k(kWetBank)}, {"x", frostMap()}})}})}});
     color_ = b_.add("weather_wet_diffuse", {{"diffuse", color_}, {"p", p}});
     roughness_ = b_.add("weather_wet_roughness", {{"roughness", roughness_}, {"p", p}});
     tangentNormal_ = b_.add("weather_wet_normal", {{"normal", tangentNormal_}, {"position", position_}, {"p", p}});
@@ -164,16 +179,17 @@ class WeatherInjector {
     // Flooded: water's F0 0.02 and a near-mirror surface over a darkened base.
     Operand coverage = b_.add("weather_puddle_coverage", {{"normal", normal_}, {"position", position_}, {"exposure", exposure_}});
     Operand darkened = b_.add("multiply", {{"a", color_}, {"b", k(kPuddleDarkening)}});
-    cover(coverage, darkened, weather::kPuddleRoughness, weather::kWaterSpecular, 1.f);
+    // Below 0 C the puddle is ice: ice's albedo (Table 4.1), roughness and F0.
+    Operand frozen = b_.add("weather_puddle_ice", {});
+    Operand albedo = lerp(darkened, b_.add("weather_ice_albedo", {{"diffuse", diffuse_}}), frozen);
+    cover(coverage, albedo, lerp(k(weather::kPuddleRoughness), k(weather::kIceRoughness), frozen),
+          lerp(k(weather::kWaterSpecular), k(weather::kIceSpecular), frozen), 1.f);
     g_.coverage(CoverageTerm::Puddle) = coverage;
+    if (!cfg_.effects.ice) g_.coverage(CoverageTerm::Ice) = b_.add("multiply", {{"a", coverage}, {"b", frozen}});
   }
 
   void addIce() {
-    // Eq. 3.20's frost map: 0 on the banks, 1 mid-stream, from the river's v coordinate.
-    Operand v = b_.output(b_.add("split", {{"in", b_.add("texcoord", {})}}), "y");
-    Operand across = b_.add("abs", {{"in", b_.add("subtract", {{"a", b_.add("multiply", {{"a", v}, {"b", k(2.f)}})}, {"b", k(1.f)}})}});
-    Operand frostMap = b_.add("one_minus", {{"in", across}});
-    Operand coverage = b_.add("weather_frost_coverage", {{"frostMap", frostMap}});
+    Operand coverage = b_.add("weather_frost_coverage", {{"frostMap", frostMap()}, {"position", position_}});
     cover(coverage, b_.add("weather_ice_albedo", {{"diffuse", diffuse_}}), weather::kIceRoughness, weather::kIceSpecular, 1.f);
     g_.coverage(CoverageTerm::Frost) = coverage;
     g_.coverage(CoverageTerm::Ice) = coverage;
@@ -200,6 +216,9 @@ class WeatherInjector {
   static constexpr float kPuddleDarkening = 0.55f;
   // Hoarfrost is a thin, partial crystal layer, never full snow cover.
   static constexpr float kHoarfrostOpacity = 0.6f;
+  // On a water surface, the outer tenth of the frost map on each side (F < 0.2, 1 m of a
+  // 10 m river) is bank that gets wet; the rest is water.
+  static constexpr float kWetBank = 0.2f;
 
   IrGraph& g_;
   IrNodeBuilder b_;

@@ -536,15 +536,41 @@ TEST(WeatherNodes, PuddleCoverage) {
 }
 
 // Ice: the frost mask of eq. 3.20 with frame_frostLevel.
+// Ice: transition(noise(1.5 xz), frostMask(F, frostLevel)) (eq. 3.20 with eq. 3.14's
+// noisy edges); noise(0, 0) = 0.
 TEST(WeatherNodes, FrostCoverage) {
   Env env;
   env.frame.frostLevel = 0;
-  expectValue(eval("weather_frost_coverage", {s(0)}, env), s(0));  // liquid, even at the banks
+  expectValue(eval("weather_frost_coverage", {s(0), kOrigin}, env), s(0));  // liquid, even at the banks
   env.frame.frostLevel = 1;
-  expectValue(eval("weather_frost_coverage", {s(0.5f)}, env), s(1));  // whole river
-  expectValue(eval("weather_frost_coverage", {s(1)}, env), s(1));
-  env.frame.frostLevel = 0.5f;
-  expectValue(eval("weather_frost_coverage", {s(0.5f)}, env), s(0.1767767f));  // 0.5^2.5
+  expectValue(eval("weather_frost_coverage", {s(0.5f), kOrigin}, env), s(1));  // whole river: 3 - 1 -> 1
+  expectValue(eval("weather_frost_coverage", {s(1), kOrigin}, env), s(1));
+  // Frost 0.7 on a bank (F = 0): mask 1 -> 1; mid-stream (F = 0.5): mask 0.5^1.5 =
+  // 0.3535534 -> 3 * 0.3535534 - 1 = 0.0606602 at the origin.
+  env.frame.frostLevel = 0.7f;
+  expectValue(eval("weather_frost_coverage", {s(0), kOrigin}, env), s(1));
+  expectValue(eval("weather_frost_coverage", {s(0.5f), kOrigin}, env), s(0.0606602f));
+  // Elsewhere the edge follows the noise: at xz = (1, 2) it reads noise(1.5, 3).
+  const float n = valueNoise(1.5f, 3.f);
+  expectValue(eval("weather_frost_coverage", {s(0.5f), v3(1, 0, 2)}, env),
+              s(std::clamp(n - 1.f + 3.f * 0.3535534f, 0.f, 1.f)));
+}
+
+// Puddle ice: max(frostLevel, 1 - smoothstep(0, 1, T)): liquid only above 0 C.
+TEST(WeatherNodes, PuddleIce) {
+  Env env;
+  env.frame.frostLevel = 0;
+  env.frame.temperature = 8;
+  expectValue(eval("weather_puddle_ice", {}, env), s(0));
+  env.frame.temperature = 0;
+  expectValue(eval("weather_puddle_ice", {}, env), s(1));
+  env.frame.temperature = -10;
+  expectValue(eval("weather_puddle_ice", {}, env), s(1));
+  env.frame.temperature = 0.5f;
+  expectValue(eval("weather_puddle_ice", {}, env), s(0.5f));
+  env.frame.temperature = 4;  // thawing: the frost level keeps it frozen
+  env.frame.frostLevel = 0.6f;
+  expectValue(eval("weather_puddle_ice", {}, env), s(0.6f));
 }
 
 // Hoarfrost: transition(noise(1.5 xz), frostLevel * exposure).

@@ -708,5 +708,144 @@ TEST(WeatherProperties, PuddlesFormOnlyOnNearlyFlatGround) {
   EXPECT_GT(largest, 0.f) << "no puddle anywhere on flat ground at puddleLevel 1";
 }
 
+// ---- Wetness on every preset -------------------------------------------------------------
+
+// Section 5.1.2: in rain above 0 C "the wetness function is applied to any scene object
+// regardless of their material" (eq. 3.15-3.17): every preset darkens and smooths,
+// foliage and the river's banks included; the river's open water stays as it was.
+TEST(WeatherProperties, EveryPresetGetsWetInRainAboveFreezing) {
+  constexpr float kBankV = 0.03f, kMidStreamV = 0.5f;
+  for (const char* name : {"rock", "terrain", "grass", "foliage", "road", "river"}) {
+    const CpuEvaluator& e = bundled(name);
+    FrameState dry;
+    dry.temperature = 8.f;
+    FrameState wet = dry;
+    wet.wetnessLevel = 1.f;
+    wet.precipitation = 0.5f;
+    Violations wrong;
+    for (SurfacePoint p : grid(0.f)) {
+      if (std::string(name) == "river") p.texcoord[1] = kBankV;
+      const EvalResult a = e.evaluate(inputs(p, dry)), b = e.evaluate(inputs(p, wet));
+      const float pWet = b.coverageOf(CoverageTerm::Wet);
+      const float darker = reflectance(b.output(PbrField::BaseColor)) / std::max(reflectance(a.output(PbrField::BaseColor)), 1e-6f);
+      if (pWet < 0.5f) wrong.add(std::string(name) + " " + at(p) + ": wet " + std::to_string(pWet));
+      if (darker > 1.f - 0.3f * pWet + kTolerance)
+        wrong.add(std::string(name) + " " + at(p) + ": colour only " + std::to_string(darker) + " of the dry one");
+      if (b.output(PbrField::Roughness).x() > a.output(PbrField::Roughness).x() + kTolerance ||
+          (a.output(PbrField::Roughness).x() > 0.05f && b.output(PbrField::Roughness).x() >= a.output(PbrField::Roughness).x()))
+        wrong.add(std::string(name) + " " + at(p) + ": roughness " + std::to_string(b.output(PbrField::Roughness).x()) +
+                  " wet, " + std::to_string(a.output(PbrField::Roughness).x()) + " dry");
+    }
+    EXPECT_EQ(wrong.count(), 0u) << wrong.report();
+  }
+  // The river's water itself stays water.
+  const CpuEvaluator& river = bundled("river");
+  FrameState wet;
+  wet.temperature = 8.f;
+  wet.wetnessLevel = 1.f;
+  wet.precipitation = 0.5f;
+  FrameState dry = wet;
+  dry.wetnessLevel = 0.f;
+  for (SurfacePoint p : grid(0.f)) {
+    p.texcoord[1] = kMidStreamV;
+    const EvalResult a = river.evaluate(inputs(p, dry)), b = river.evaluate(inputs(p, wet));
+    EXPECT_EQ(b.coverageOf(CoverageTerm::Wet), 0.f) << at(p);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(b.output(PbrField::BaseColor).v[c], a.output(PbrField::BaseColor).v[c]) << at(p);
+    EXPECT_EQ(b.output(PbrField::Roughness).x(), a.output(PbrField::Roughness).x()) << at(p);
+  }
+}
+
+// ---- Puddles freeze ----------------------------------------------------------------------
+
+// Below 0 C a puddle is ice: ice's roughness and F0 (specular 0.225) and the Table 4.1
+// ice band, and the ice AOV shows it. Above, it is water again (specular 0.25, near
+// mirror).
+TEST(WeatherProperties, PuddlesFreezeBelowZero) {
+  const CpuEvaluator& road = bundled("road");
+  std::size_t frozen = 0, liquid = 0;
+  Violations wrong;
+  for (float temperature : {-10.f, -0.5f, 0.f, 8.f})
+    for (const SurfacePoint& p : grid(0.f)) {
+      FrameState frame;
+      frame.temperature = temperature;
+      frame.puddleLevel = 1.f;
+      const EvalResult r = road.evaluate(inputs(p, frame));
+      const float puddle = r.coverageOf(CoverageTerm::Puddle);
+      if (puddle != 1.f) continue;
+      const bool cold = temperature <= 0.f;
+      (cold ? frozen : liquid) += 1;
+      const float roughness = r.output(PbrField::Roughness).x(), specular = r.output(PbrField::Specular).x();
+      const float expectRoughness = cold ? 0.12f : 0.02f, expectSpecular = cold ? 0.225f : 0.25f;
+      if (std::abs(roughness - expectRoughness) > kTolerance || std::abs(specular - expectSpecular) > kTolerance)
+        wrong.add(at(p) + " T " + std::to_string(temperature) + ": roughness " + std::to_string(roughness) +
+                  " specular " + std::to_string(specular));
+      if (cold) {
+        const float value = reflectance(r.output(PbrField::BaseColor));
+        if (value < kOceanIceBandLow - kTolerance || value > kOceanIceBandHigh + kTolerance)
+          wrong.add(at(p) + " T " + std::to_string(temperature) + ": reflectance " + std::to_string(value));
+        if (r.coverageOf(CoverageTerm::Ice) != 1.f) wrong.add(at(p) + ": ice AOV " + std::to_string(r.coverageOf(CoverageTerm::Ice)));
+      } else if (r.coverageOf(CoverageTerm::Ice) != 0.f) {
+        wrong.add(at(p) + ": ice AOV on a liquid puddle");
+      }
+    }
+  EXPECT_EQ(wrong.count(), 0u) << wrong.report();
+  EXPECT_GT(frozen, 0u);
+  EXPECT_GT(liquid, 0u);
+}
+
+// Puddles fill only from the liquid part of precipitation: none at or below 0 C (all
+// snow), less in sleet than in rain.
+TEST(WeatherProperties, PuddlesFillOnlyFromLiquidPrecipitation) {
+  auto puddlesAfterThreeHours = [](float temperature) {
+    WeatherState s;
+    s.conditions.temperature = temperature;
+    s.conditions.precipitation = 1.f;
+    advanceWeather(s, 3 * weather_physics::kSecondsPerHour);
+    return s.levels.puddles;
+  };
+  for (float t : {-10.f, -1.f, -0.5f, 0.f}) EXPECT_EQ(puddlesAfterThreeHours(t), 0.f) << t << " C";
+  EXPECT_GT(puddlesAfterThreeHours(0.5f), 0.f);
+  EXPECT_LT(puddlesAfterThreeHours(0.5f), puddlesAfterThreeHours(5.f));
+}
+
+// ---- Terrain renormalises its weights ---------------------------------------------------
+
+// The terrain preset has the sun term off. Its weight w1 (2, which balances a typical
+// f_sun of 0.5) is then 1 too, so eq. 3.8's height shapes the cover over the lower half
+// of the range instead of saturating from a quarter of it (y = -25 m).
+TEST(WeatherProperties, TerrainHeightShapesTheCoverWhenTheSunTermIsOff) {
+  const CpuEvaluator& terrain = bundled("terrain");
+  const FrameState frame = snowyFrame(0.5f);
+  const double low = meanCoverage(terrain, frame, CoverageTerm::Snow, -40.f, kUp);
+  const double quarter = meanCoverage(terrain, frame, CoverageTerm::Snow, -25.f, kUp);
+  const double middle = meanCoverage(terrain, frame, CoverageTerm::Snow, 0.f, kUp);
+  EXPECT_LT(low, quarter);
+  EXPECT_LT(quarter, middle - 0.2) << "cover at y = -25 m " << quarter << ", at 0 m " << middle;
+  EXPECT_GT(middle, 0.9);
+}
+
+// ---- Ice edges ---------------------------------------------------------------------------
+
+// Eq. 3.14: ice gets noisy edges, like snow and moss. Along the river (same distance
+// from the bank, v fixed) the ice coverage of a freezing river varies with position.
+TEST(WeatherProperties, IceEdgesAreNoisy) {
+  const CpuEvaluator& river = bundled("river");
+  FrameState frame;
+  frame.temperature = -5.f;
+  frame.frostLevel = 0.6f;
+  float widest = 0.f;
+  for (float v : {0.1f, 0.2f, 0.3f}) {
+    float lo = 1.f, hi = 0.f;
+    for (SurfacePoint p : grid(0.f)) {
+      p.texcoord[1] = v;
+      const float ice = river.evaluate(inputs(p, frame)).coverageOf(CoverageTerm::Ice);
+      lo = std::min(lo, ice);
+      hi = std::max(hi, ice);
+    }
+    widest = std::max(widest, hi - lo);
+  }
+  EXPECT_GT(widest, 0.3f) << "the ice edge is a smooth gradient across the stream";
+}
+
 }  // namespace
 }  // namespace wg
