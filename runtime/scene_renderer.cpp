@@ -59,7 +59,7 @@ struct SceneRenderer::Frame {
 };
 
 SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory)
-    : ctx_(ctx), scene_(std::move(scene)), graphsDirectory_(std::move(graphsDirectory)) {
+    : ctx_(ctx), scene_(std::move(scene)), graphsDirectory_(std::move(graphsDirectory)), timer_(ctx) {
   colourPass_ = createColourPass(ctx_.device());
   depthPass_ = createDepthOnlyPass(ctx_.device());
   linearClamp_ = createSampler(ctx_, "clamp", "linear");
@@ -79,12 +79,6 @@ SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string g
   shadowMap_ = vk::Image2D(ctx_, kShadowResolution, kShadowResolution, vk::kDepthFormat,
                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
   uploadTerrain();
-  VkQueryPoolCreateInfo query{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-  query.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  query.queryCount = 2;
-  VkQueryPool timestamps;
-  vk::check(vkCreateQueryPool(ctx_.device(), &query, nullptr, &timestamps), "vkCreateQueryPool");
-  timestamps_ = vk::UniqueQueryPool(ctx_.device(), timestamps);
   buildExposureMap();
 }
 
@@ -153,7 +147,7 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   createTargets(frame);
   const std::vector<std::size_t> order = drawOrder(frame);
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, timestamps_.get(), 0, 2);
+    timer_.reset(cmd);
     for (std::size_t p = 0; p < frame.passes.size(); ++p) recordScenePass(cmd, frame, p, order);
   });
   return readBack(frame);
@@ -320,10 +314,10 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   VkClearValue colourClear;
   if (r.debugView == 0) colourClear.color = {{kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.f}};
   else colourClear.color = {{0.f, 0.f, 0.f, 0.f}};
-  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_.get(), 0);
+  timer_.start(cmd);
   recordPass(cmd, {colourPass_.get(), frame.colourTarget.get(), r.width, r.height, {colourClear, depthClear}},
              drawsOf(frame, p, order));
-  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_.get(), 1);
+  timer_.stop(cmd);
   if (r.afterColourPass)
     r.afterColourPass({cmd, &frame.colour, &frame.depth, pass.viewProjection, pass.eye, frame.clip.nearPlane, frame.clip.farPlane});
 }
@@ -332,10 +326,7 @@ RenderedFrame SceneRenderer::readBack(Frame& frame) {
   RenderedFrame out;
   out.width = frame.request.width;
   out.height = frame.request.height;
-  std::uint64_t ticks[2] = {0, 0};
-  if (vkGetQueryPoolResults(ctx_.device(), timestamps_.get(), 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),
-                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS && ticks[1] > ticks[0])
-    out.gpuMilliseconds = double(ticks[1] - ticks[0]) * ctx_.properties().limits.timestampPeriod * 1e-6;
+  out.gpuMilliseconds = timer_.milliseconds();
   auto raw = frame.colour.download(ctx_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
   out.rgba.resize(std::size_t(out.width) * out.height * 4);
   std::memcpy(out.rgba.data(), raw.data(), out.rgba.size() * sizeof(float));

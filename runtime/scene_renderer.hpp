@@ -11,6 +11,7 @@
 #include "nodes/frame_state.hpp"
 #include "runtime/frame_recording.hpp"
 #include "runtime/material_resources.hpp"
+#include "runtime/vulkan/gpu_timer.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/weather/weather_state.hpp"
 
@@ -124,7 +125,7 @@ class SceneRenderer {
   vk::UniqueSampler nearestClamp_;  // depth formats need not be filterable; PCF filters
   std::vector<float> exposureHeights_;
   glm::vec4 exposureRegion_{0.f};
-  vk::UniqueQueryPool timestamps_;
+  vk::GpuTimer timer_;  // the colour pass
 };
 
 }  // namespace wg

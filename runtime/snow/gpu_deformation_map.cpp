@@ -22,7 +22,7 @@ glm::ivec4 packRect(const TexelRect& r) { return {r.min.x, r.min.y, r.size.x, r.
 }  // namespace
 
 GpuDeformationMap::GpuDeformationMap(vk::Context& ctx, const WindowSettings& settings, glm::vec2 camera)
-    : ctx_(ctx), window_(settings), pass_(ctx) {
+    : ctx_(ctx), window_(settings), pass_(ctx), timer_(ctx) {
   window_.setOrigin(window_.originFor(camera));
   VkDeviceSize bytes = window_.texelCount() * sizeof(std::uint32_t);
   heights_ = vk::Buffer(ctx_, bytes, kStorage);
@@ -46,12 +46,6 @@ GpuDeformationMap::GpuDeformationMap(vk::Context& ctx, const WindowSettings& set
                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   });
   reserve(kInitialStamps);
-  VkQueryPoolCreateInfo query{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-  query.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  query.queryCount = 2;
-  VkQueryPool timestamps;
-  vk::check(vkCreateQueryPool(ctx_.device(), &query, nullptr, &timestamps), "vkCreateQueryPool");
-  timestamps_ = vk::UniqueQueryPool(ctx_.device(), timestamps);
 }
 
 GpuDeformationMap::~GpuDeformationMap() { vkDeviceWaitIdle(ctx_.device()); }
@@ -83,21 +77,17 @@ WindowConstants GpuDeformationMap::constants(std::uint32_t refillQuanta) const {
 
 double GpuDeformationMap::submit(const std::function<void(VkCommandBuffer)>& record) {
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, timestamps_.get(), 0, 2);
+    timer_.reset(cmd);
     vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                             VK_IMAGE_LAYOUT_GENERAL);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_.get(), 0);
+    timer_.start(cmd);
     record(cmd);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_.get(), 1);
+    timer_.stop(cmd);
     vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     vk::computeToHostBarrier(cmd);  // host reads of the map (recentring, tests)
   });
-  std::uint64_t ticks[2] = {0, 0};
-  if (vkGetQueryPoolResults(ctx_.device(), timestamps_.get(), 0, 2, sizeof ticks, ticks, sizeof(std::uint64_t),
-                            VK_QUERY_RESULT_64_BIT) != VK_SUCCESS)
-    return 0.0;
-  return double(ticks[1] - ticks[0]) * ctx_.properties().limits.timestampPeriod * 1e-6;
+  return timer_.milliseconds();
 }
 
 double GpuDeformationMap::apply(std::span<const Stamp> stamps) {

@@ -17,6 +17,7 @@
 #include "runtime/snow/print_tile_store.hpp"
 #include "runtime/snow/snow_stamp.hpp"
 #include "runtime/snow/window_recentring.hpp"
+#include "runtime/vulkan/gpu_timer.hpp"
 
 namespace wg::snow {
 
@@ -65,7 +66,7 @@ class GpuDeformationMap {
   std::size_t capacity_ = 0;
   PrintTileStore store_;
   DeformationRefill refill_;
-  vk::UniqueQueryPool timestamps_;
+  vk::GpuTimer timer_;
 };
 
 }  // namespace wg::snow

@@ -94,26 +94,35 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options, std::str
   std::unique_ptr<Context> ctx(new Context());
   ctx->instance_ = createInstance(options.validation, error);
   if (!ctx->instance_) return nullptr;
-  if (options.validation) {
-    auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(ctx->instance(), "vkCreateDebugUtilsMessengerEXT"));
-    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    info.pfnUserCallback = onMessage;
-    info.pUserData = ctx.get();
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-    if (!createMessenger || createMessenger(ctx->instance(), &info, nullptr, &messenger) != VK_SUCCESS) {
-      error = "cannot attach to the validation layers";
-      return nullptr;
-    }
-    ctx->messenger_ = UniqueDebugMessenger(ctx->instance(), messenger);
+  if (options.validation && !ctx->attachMessenger(error)) return nullptr;
+  if (!ctx->choosePhysicalDevice(options.device, error)) return nullptr;
+  if (!ctx->createDevice(error)) return nullptr;
+  return ctx;
+}
+
+bool Context::attachMessenger(std::string& error) {
+  auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(instance(), "vkCreateDebugUtilsMessengerEXT"));
+  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  info.pfnUserCallback = onMessage;
+  info.pUserData = this;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  if (!createMessenger || createMessenger(instance(), &info, nullptr, &messenger) != VK_SUCCESS) {
+    error = "cannot attach to the validation layers";
+    return false;
   }
+  messenger_ = UniqueDebugMessenger(instance(), messenger);
+  return true;
+}
+
+bool Context::choosePhysicalDevice(const std::string& selector, std::string& error) {
   std::uint32_t count = 0;
-  vkEnumeratePhysicalDevices(ctx->instance(), &count, nullptr);
+  vkEnumeratePhysicalDevices(instance(), &count, nullptr);
   std::vector<VkPhysicalDevice> devices(count);
-  vkEnumeratePhysicalDevices(ctx->instance(), &count, devices.data());
+  vkEnumeratePhysicalDevices(instance(), &count, devices.data());
   // With no selector, prefer a CPU device: results then match CI's lavapipe.
   std::stable_sort(devices.begin(), devices.end(), [](VkPhysicalDevice a, VkPhysicalDevice b) {
     VkPhysicalDeviceProperties pa, pb;
@@ -126,46 +135,48 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options, std::str
     VkPhysicalDeviceProperties p;
     vkGetPhysicalDeviceProperties(d, &p);
     available += (available.empty() ? "" : ", ") + std::string(p.deviceName);
-    if (ctx->physical_ || p.apiVersion < VK_API_VERSION_1_1 || !matches(p, options.device)) continue;
+    if (physical_ || p.apiVersion < VK_API_VERSION_1_1 || !matches(p, selector)) continue;
     std::uint32_t families = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(d, &families, nullptr);
     std::vector<VkQueueFamilyProperties> props(families);
     vkGetPhysicalDeviceQueueFamilyProperties(d, &families, props.data());
     for (std::uint32_t i = 0; i < families; ++i)
       if (props[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
-        ctx->physical_ = d;
-        ctx->queueFamily_ = i;
-        ctx->properties_ = p;
+        physical_ = d;
+        queueFamily_ = i;
+        properties_ = p;
         break;
       }
   }
-  if (!ctx->physical_) {
-    error = "no Vulkan 1.1 device matches '" + options.device + "' (available: " + (available.empty() ? "none" : available) + ")";
-    return nullptr;
-  }
-  vkGetPhysicalDeviceMemoryProperties(ctx->physical_, &ctx->memory_);
+  if (!physical_)
+    error = "no Vulkan 1.1 device matches '" + selector + "' (available: " + (available.empty() ? "none" : available) + ")";
+  return physical_ != VK_NULL_HANDLE;
+}
+
+bool Context::createDevice(std::string& error) {
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
   float priority = 1.f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-  queueInfo.queueFamilyIndex = ctx->queueFamily_;
+  queueInfo.queueFamilyIndex = queueFamily_;
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
   VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   deviceInfo.queueCreateInfoCount = 1;
   deviceInfo.pQueueCreateInfos = &queueInfo;
   VkDevice device = VK_NULL_HANDLE;
-  if (vkCreateDevice(ctx->physical_, &deviceInfo, nullptr, &device) != VK_SUCCESS) {
-    error = "cannot create a logical device on " + ctx->deviceName();
-    return nullptr;
+  if (vkCreateDevice(physical_, &deviceInfo, nullptr, &device) != VK_SUCCESS) {
+    error = "cannot create a logical device on " + deviceName();
+    return false;
   }
-  ctx->device_ = UniqueDevice(device);
-  vkGetDeviceQueue(device, ctx->queueFamily_, 0, &ctx->queue_);
+  device_ = UniqueDevice(device);
+  vkGetDeviceQueue(device, queueFamily_, 0, &queue_);
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.queueFamilyIndex = ctx->queueFamily_;
+  poolInfo.queueFamilyIndex = queueFamily_;
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   VkCommandPool pool = VK_NULL_HANDLE;
   check(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
-  ctx->commandPool_ = UniqueCommandPool(device, pool);
-  return ctx;
+  commandPool_ = UniqueCommandPool(device, pool);
+  return true;
 }
 
 Context::~Context() {

@@ -55,6 +55,10 @@ class Context {
 
  private:
   Context() = default;
+  // The steps of create(); each sets `error` and returns false on failure.
+  bool attachMessenger(std::string& error);
+  bool choosePhysicalDevice(const std::string& selector, std::string& error);
+  bool createDevice(std::string& error);
   UniqueCommandBuffer beginOneTime();
   void endOneTime(VkCommandBuffer cmd);
   static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
