@@ -265,6 +265,7 @@ std::string checkDepfileTarget(const std::string& depfile) {
 CompileOptions compileOptionsFor(const Options& o) {
   CompileOptions options;
   options.emitSpirv = o.targets.spirv;
+  options.emitDisassembly = o.targets.spirv;  // .spv and .spvasm go together
   options.emitMsl = o.targets.msl;
   options.emitGlslEs = o.targets.glslEs;
   options.emitCppHeader = o.targets.header;

@@ -9,11 +9,14 @@ namespace wg {
 std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, const CompileOptions& options, int jobs,
                                         const std::function<void(std::size_t, std::size_t)>& onDone) {
   std::vector<CompileResult> results(batch.size());
+  SpirvModuleCache modules;
   std::mutex reportLock;
   std::size_t completed = 0;
   auto compileOne = [&](std::size_t i) {
     CompileOptions variant = options;
+    if (!variant.modules) variant.modules = &modules;
     variant.switches = batch[i].switches;
+    if (batch[i].weatherPreset) variant.weatherPreset = batch[i].weatherPreset;
     results[i] = compileMaterialFile(batch[i].graph, variant);
     std::lock_guard<std::mutex> lock(reportLock);
     ++completed;

@@ -2,6 +2,7 @@
 // output is byte-identical whatever the job count.
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@ namespace wg {
 struct CompileJob {
   std::string graph;
   SwitchValues switches;
+  std::optional<std::string> weatherPreset = std::nullopt;  // replaces the batch options' preset
 };
 
 // onDone(index, completedCount) is called after each graph, from the worker that did

@@ -123,31 +123,56 @@ bool crossCompileStage(CompiledStage& stage, const SpirvWords& words, const Comp
   return true;
 }
 
-bool compileStageToSpirv(CompiledStage& stage, const MaterialInterface& mi, const CompileOptions& options,
-                         const std::string& file, DiagnosticList& diagnostics) {
+// glslang, spirv-val and the block-offset check, then spirv-opt and spirv-val again when
+// the optimised module is wanted.
+SpirvModule buildModule(const CompiledStage& stage, const MaterialInterface& mi, bool optimize) {
+  SpirvModule module;
   SpirvCompileResult compiled = compileToSpirv(stage.source, stage.language, stage.stage);
   if (!compiled.ok) {
-    diagnostics.report(DiagCode::InternalShaderError, {file, "", 0, 0}, {stageLabel(stage), compiled.log});
+    module.compileLog = compiled.log;
+    return module;
+  }
+  module.compiled = true;
+  module.words = std::move(compiled.words);
+  module.invalid = validateSpirv(module.words);
+  if (module.invalid.empty()) module.invalid = checkBlockOffsets(module.words, mi);
+  if (!module.invalid.empty() || !optimize) return module;
+  module.optimized = optimizeSpirv(module.words);
+  module.optimizedInvalid = validateSpirv(module.optimized);
+  return module;
+}
+
+// The stage's module: from the batch's cache when there is one, so a text shared by
+// several variants is compiled and checked once.
+std::shared_ptr<const SpirvModule> stageModule(const CompiledStage& stage, const MaterialInterface& mi,
+                                               const CompileOptions& options, bool optimize) {
+  auto make = [&] { return buildModule(stage, mi, optimize); };
+  if (!options.modules) return std::make_shared<const SpirvModule>(make());
+  std::string variant = stageFileSuffix(stage.language, stage.stage) + (optimize ? " -O" : "");
+  return options.modules->get(stage.source, variant, make);
+}
+
+bool compileStageToSpirv(CompiledStage& stage, const MaterialInterface& mi, const CompileOptions& options,
+                         const std::string& file, DiagnosticList& diagnostics) {
+  const bool optimize = options.emitSpirv && options.optimize;
+  std::shared_ptr<const SpirvModule> module = stageModule(stage, mi, options, optimize);
+  if (!module->compiled) {
+    diagnostics.report(DiagCode::InternalShaderError, {file, "", 0, 0}, {stageLabel(stage), module->compileLog});
     return false;
   }
-  if (std::string error = validateSpirv(compiled.words); !error.empty()) {
-    diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage), error});
+  if (!module->invalid.empty()) {
+    diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage), module->invalid});
     return false;
   }
-  if (std::string error = checkBlockOffsets(compiled.words, mi); !error.empty()) {
-    diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage), error});
-    return false;
-  }
-  if (!crossCompileStage(stage, compiled.words, options, file, diagnostics)) return false;
+  if (!crossCompileStage(stage, module->words, options, file, diagnostics)) return false;
   if (!options.emitSpirv) return true;
-  stage.spirv = options.optimize ? optimizeSpirv(compiled.words) : std::move(compiled.words);
-  if (options.optimize) {
-    if (std::string error = validateSpirv(stage.spirv); !error.empty()) {
-      diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0}, {stageLabel(stage) + " after spirv-opt", error});
-      return false;
-    }
+  if (!module->optimizedInvalid.empty()) {
+    diagnostics.report(DiagCode::InternalSpirvInvalid, {file, "", 0, 0},
+                       {stageLabel(stage) + " after spirv-opt", module->optimizedInvalid});
+    return false;
   }
-  stage.disassembly = disassembleSpirv(stage.spirv);
+  stage.spirv = optimize ? module->optimized : module->words;
+  if (options.emitDisassembly) stage.disassembly = disassembleSpirv(stage.spirv);
   return true;
 }
 

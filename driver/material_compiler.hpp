@@ -12,11 +12,13 @@
 #include "compiler/material_interface.hpp"
 #include "compiler/pass_pipeline.hpp"
 #include "compiler/static_switches.hpp"
+#include "driver/spirv_module_cache.hpp"
 
 namespace wg {
 
 struct CompileOptions {
   bool emitSpirv = true;
+  bool emitDisassembly = false;  // .spvasm text of each SPIR-V module (compile --target spirv)
   bool optimize = false;  // spirv-opt performance passes (-O)
   std::optional<std::string> weatherPreset;  // replaces the graph's preset (--weather-preset)
   bool emitReflection = true;  // off for callers that only want shader text
@@ -29,6 +31,8 @@ struct CompileOptions {
   SwitchValues switches;  // the variant: static switch values; unnamed switches keep their default
   // IR verification between passes (on in debug builds; tests turn it on) and a pass observer.
   PassPipelineOptions passes;
+  // Modules shared across a batch (compileBatch sets it); null: every stage is compiled.
+  SpirvModuleCache* modules = nullptr;
 };
 
 struct CompiledStage {
