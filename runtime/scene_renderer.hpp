@@ -50,6 +50,10 @@ struct RenderRequest {
   std::optional<scene::CameraPreset> cameraPose;
   // Recorded right after the colour pass, in the same command buffer.
   std::function<void(const ColourPassTargets&)> afterColourPass;
+  // Falling snow and rain near the viewer (runtime/precipitation_pass.hpp), from the
+  // weather's precipitation, temperature and wind, at weather.time; lit frames only
+  // (never an AOV). Off unless asked: `render` asks unless --no-precipitation.
+  bool precipitation = false;
 };
 
 struct RenderedFrame {
@@ -93,6 +97,7 @@ class SceneRenderer {
   MaterialResources& material(const std::string& graph, const std::optional<std::string>& preset);
   vk::MaterialPipeline& pipelineOf(MaterialResources& material, const RenderRequest& request);
   void uploadTerrain();
+  // The sky-exposure map, drawn once (sky_exposure_map.cpp).
   void buildExposureMap();
   std::vector<float> drawSkyOccluders(const glm::mat4& topDown);
   std::vector<float> depthFromAbove(const std::vector<ObjectDraw>& draws);
