@@ -81,9 +81,13 @@ struct SettingErrors {
   const JsonDocument& doc;
   DiagnosticList& diags;
   bool ok = true;
-  void invalid(const std::string& at, const std::string& what, const std::string& fix) {
-    diags.report(DiagCode::InvalidWeatherSetting, doc.locate(at), {what, fix});
+  void report(DiagCode code, const std::string& at, std::initializer_list<std::string_view> args) {
+    diags.report(code, doc.locate(at), args);
     ok = false;
+  }
+  // "weather {what} must be {expected}, not {actual}".
+  void wrongKind(const std::string& at, const std::string& what, std::string_view expected, std::string_view actual) {
+    report(DiagCode::WeatherSettingKind, at, {what, expected, actual});
   }
 };
 
@@ -104,10 +108,10 @@ NamedPreset namedPreset(const std::optional<nlohmann::json>& block, const std::s
     named.overrides = &*block;
     if (auto it = block->find("preset"); it != block->end()) {
       named.pointer = appendPointer(pointer, "preset");
-      if (!it->is_string()) errors.invalid(named.pointer, "'preset' must be a string", "name a preset: " + presetList());
+      if (!it->is_string()) errors.wrongKind(named.pointer, "setting 'preset'", "a preset's name", describeJsonKind(*it));
       else named.name = it->get<std::string>();
     } else {
-      errors.invalid(pointer, "the weather block has no 'preset'", "add \"preset\": one of " + presetList());
+      errors.report(DiagCode::WeatherPresetMissing, pointer, {presetList()});
     }
   }
   return named;
@@ -116,7 +120,7 @@ NamedPreset namedPreset(const std::optional<nlohmann::json>& block, const std::s
 // "effects": {"moss": false, ...}
 void applyEffects(const nlohmann::json& value, const std::string& at, WeatherConfig& config, SettingErrors& errors) {
   if (!value.is_object()) {
-    errors.invalid(at, "'effects' must be an object of booleans", "write e.g. {\"moss\": false}");
+    errors.wrongKind(at, "setting 'effects'", "an object of booleans, e.g. {\"moss\": false}", describeJsonKind(value));
     return;
   }
   for (const auto& [effect, on] : value.items()) {
@@ -126,13 +130,22 @@ void applyEffects(const nlohmann::json& value, const std::string& at, WeatherCon
     if (flag == kEffectFlags.end()) {
       std::vector<std::string_view> names;
       for (const auto& f : kEffectFlags) names.push_back(f.name);
-      errors.invalid(effectAt, "unknown weather effect '" + quoteUserText(effect) + "'", unknownNameHint(effect, names, "effects"));
+      errors.report(DiagCode::UnknownWeatherKey, effectAt, {"effect", quoteUserText(effect), unknownNameHint(effect, names, "effects")});
     } else if (!on.is_boolean()) {
-      errors.invalid(effectAt, "effect '" + std::string(flag->name) + "' must be true or false", "write true or false");
+      errors.wrongKind(effectAt, "effect '" + std::string(flag->name) + "'", "true or false", describeJsonKind(on));
     } else {
       config.effects.*(flag->flag) = on.get<bool>();
     }
   }
+}
+
+// What a value that is not four numbers is: "an array of 3", "an array holding a string"...
+std::string describeFourNumbers(const nlohmann::json& value) {
+  if (!value.is_array()) return describeJsonKind(value);
+  if (value.size() != 4) return "an array of " + std::to_string(value.size());
+  for (const auto& x : value)
+    if (!x.is_number()) return "an array holding " + describeJsonKind(x);
+  return describeJsonKind(value);
 }
 
 // "weights": [w1, w2, w3, w4] in [0, 16], or "terms": four 0 or 1; the first bad one stops.
@@ -143,16 +156,21 @@ void applyFourNumbers(const std::string& key, const nlohmann::json& value, const
   bool shaped = value.is_array() && value.size() == 4 &&
                 std::all_of(value.begin(), value.end(), [](const auto& x) { return x.is_number(); });
   if (!shaped) {
-    errors.invalid(at, "'" + key + "' must be an array of 4 numbers",
-                   weights ? "write [w1, w2, w3, w4]" : "write [inclination, sun, height, wind] as 0 or 1");
+    errors.wrongKind(at, "setting '" + key + "'",
+                     weights ? "an array of 4 numbers, [w1, w2, w3, w4]" : "an array of 4 switches, [inclination, sun, height, wind]",
+                     describeFourNumbers(value));
     return;
   }
   for (std::size_t i = 0; i < 4; ++i) {
     float v = value[i].get<float>();
     bool inRange = weights ? (v >= 0.f && v <= 16.f) : (v == 0.f || v == 1.f);
+    const std::string element = key + "[" + std::to_string(i) + "]";
+    if (!inRange && weights) {
+      errors.report(DiagCode::WeatherSettingOutOfRange, appendPointer(at, i), {element, formatFloat(v), "0", "16"});
+      return;
+    }
     if (!inRange) {
-      errors.invalid(appendPointer(at, i), key + "[" + std::to_string(i) + "] is " + formatFloat(v),
-                     weights ? "weights lie in [0, 16]" : "terms are 0 (off) or 1 (on)");
+      errors.wrongKind(appendPointer(at, i), "setting '" + element + "'", "0 (off) or 1 (on)", formatFloat(v));
       return;
     }
     target[i] = v;
@@ -167,18 +185,17 @@ void applyNumberSetting(const std::string& key, const nlohmann::json& value, con
   if (setting == kNumberSettings.end()) {
     std::vector<std::string_view> names = {"preset", "effects", "weights", "terms"};
     for (const auto& s : kNumberSettings) names.push_back(s.name);
-    errors.invalid(at, "unknown weather setting '" + quoteUserText(key) + "'", unknownNameHint(key, names, "settings"));
+    errors.report(DiagCode::UnknownWeatherKey, at, {"setting", quoteUserText(key), unknownNameHint(key, names, "settings")});
     return;
   }
   if (!value.is_number() || !std::isfinite(value.get<double>())) {
-    errors.invalid(at, "'" + key + "' must be a finite number", "write a number");
+    errors.wrongKind(at, "setting '" + key + "'", "a finite number", describeJsonKind(value));
     return;
   }
   float v = value.get<float>();
   if (v < setting->min || v > setting->max) {
-    errors.invalid(at, "'" + key + "' is " + formatFloat(v) + ", outside [" + formatFloat(setting->min) + ", " +
-                           formatFloat(setting->max) + "]",
-                   "use a value in that range");
+    errors.report(DiagCode::WeatherSettingOutOfRange, at,
+                  {key, formatFloat(v), formatFloat(setting->min), formatFloat(setting->max)});
     return;
   }
   config.*(setting->field) = v;
@@ -195,8 +212,7 @@ void applyOverrides(const nlohmann::json& overrides, const std::string& pointer,
     else applyNumberSetting(key, value, at, config, errors);
   }
   if (config.minHeight >= config.maxHeight)
-    errors.invalid(pointer, "minHeight " + formatFloat(config.minHeight) + " is not below maxHeight " + formatFloat(config.maxHeight),
-                   "make minHeight smaller than maxHeight");
+    errors.report(DiagCode::WeatherHeightRange, pointer, {formatFloat(config.minHeight), formatFloat(config.maxHeight)});
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Weather presets through the CLI (docs/weather-model.md): "none" is exactly no weather,
 // every preset on every bundled graph passes the independent validators, disabled
-// effects fold away at compile time, and the weather block's errors carry WG4001/WG4002.
+// effects fold away at compile time, and the weather block's errors carry WG4001-WG4009.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -261,25 +261,35 @@ TEST(WeatherErrors, OutOfRangeMaxSnowHeightIsWG4002) {
   EXPECT_EQ(ok.exitCode, 0) << ok.raw;
 }
 
-TEST(WeatherErrors, UnknownEffectIsWG4002) {
+TEST(WeatherErrors, UnknownEffectIsWG4006AndANonBooleanEffectWG4007) {
   TempDir dir("weather-err");
-  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "effects": {"glitter": true}})")), "WG4002",
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "effects": {"glitter": true}})")), "WG4006",
              "/weather/effects/glitter");
-  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "effects": {"moss": "no"}})")), "WG4002",
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "glitter": 1})")), "WG4006", "/weather/glitter");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "effects": {"moss": "no"}})")), "WG4007",
              "/weather/effects/moss");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "effects": true})")), "WG4007", "/weather/effects");
 }
 
-TEST(WeatherErrors, BadWeightsShapeIsWG4002) {
+TEST(WeatherErrors, APresetlessBlockIsWG4008AndInvertedHeightsWG4009) {
   TempDir dir("weather-err");
-  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "weights": [1, 2, 3]})")), "WG4002", "/weather/weights");
-  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "weights": 2})")), "WG4002", "/weather/weights");
-  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "weights": [1, 2, "3", 4]})")), "WG4002",
+  expectOnly(compileText(dir, minimalGraph(R"({"maxSnowHeight": 0.2})")), "WG4008", "/weather");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": 3})")), "WG4007", "/weather/preset");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "terrain", "minHeight": 100, "maxHeight": 50})")), "WG4009",
+             "/weather");
+}
+
+TEST(WeatherErrors, BadWeightsShapeIsWG4007AndAWeightOutOfRangeWG4002) {
+  TempDir dir("weather-err");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "weights": [1, 2, 3]})")), "WG4007", "/weather/weights");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "weights": 2})")), "WG4007", "/weather/weights");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "weights": [1, 2, "3", 4]})")), "WG4007",
              "/weather/weights");
   expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "weights": [1, 2, 3, 17]})")), "WG4002",
              "/weather/weights/3");
   // The switches have the same shape and take only 0 or 1.
-  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "terms": [1, 1, 1]})")), "WG4002", "/weather/terms");
-  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "terms": [1, 0, 1, 0.5]})")), "WG4002",
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "terms": [1, 1, 1]})")), "WG4007", "/weather/terms");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "terms": [1, 0, 1, 0.5]})")), "WG4007",
              "/weather/terms/3");
 }
 
