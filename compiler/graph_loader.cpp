@@ -246,8 +246,9 @@ class Loader {
     std::stable_sort(graph_.textures.begin(), graph_.textures.end(), byName);
     for (std::size_t i = 1; i < graph_.parameters.size(); ++i)
       if (graph_.parameters[i].name == graph_.parameters[i - 1].name)
-        report(DiagCode::InvalidParameter, graph_.parameters[i].pointer,
-               {quoteUserText(graph_.parameters[i].name), "it is also declared at " + graph_.parameters[i - 1].pointer, "rename one of them"});
+        // Reported where the graph declares it (loaded before any library), as for textures.
+        report(DiagCode::DuplicateParameter, graph_.parameters[i - 1].pointer,
+               {quoteUserText(graph_.parameters[i].name), graph_.parameters[i].pointer});
     for (std::size_t i = 1; i < graph_.textures.size(); ++i)
       if (graph_.textures[i].name == graph_.textures[i - 1].name)
         // Reported where the graph declares it (loaded before any library): the name to change.
@@ -306,13 +307,11 @@ class Loader {
     p.name = scope_.names + name;
     p.pointer = pointer;
     std::string shown = quoteUserText(name);
-    if (name.empty()) report(DiagCode::InvalidParameter, pointer, {shown, "the name is empty", "give the parameter a name"});
+    if (name.empty()) report(DiagCode::EmptyName, pointer, {"parameter name"});
     if (auto* type = required(j, pointer, "type", nlohmann::json::value_t::string, "a string")) {
       auto t = parseTypeName(type->get<std::string>());
       if (!t || *t == ValueType::Texture) {
-        report(DiagCode::InvalidParameter, appendPointer(pointer, "type"),
-               {shown, "type '" + quoteUserText(type->get<std::string>()) + "' is not a parameter type",
-                "use float, vec2, vec3, vec4 or bool"});
+        report(DiagCode::InvalidParameterType, appendPointer(pointer, "type"), {shown, quoteUserText(type->get<std::string>())});
         return;
       }
       p.type = *t;
@@ -322,8 +321,7 @@ class Loader {
     for (const char* bound : {"min", "max"}) {
       if (!j.contains(bound)) continue;
       if (p.type == ValueType::Bool) {
-        report(DiagCode::InvalidParameter, appendPointer(pointer, bound),
-               {shown, "a bool parameter has no range", "remove '" + std::string(bound) + "'"});
+        report(DiagCode::BoolParameterRange, appendPointer(pointer, bound), {shown, bound});
         continue;
       }
       const auto& b = j[bound];
@@ -337,8 +335,7 @@ class Loader {
     }
     bool boundsValid = !(p.min && p.max && *p.min > *p.max);
     if (!boundsValid)
-      report(DiagCode::InvalidParameter, appendPointer(pointer, "min"),
-             {shown, "min " + formatFloat(*p.min) + " is above max " + formatFloat(*p.max), "swap min and max"});
+      report(DiagCode::ParameterRangeInverted, appendPointer(pointer, "min"), {shown, formatFloat(*p.min), formatFloat(*p.max)});
     if (auto* label = optionalString(j, pointer, "label")) p.label = label->get<std::string>();
     auto it = j.find("default");
     if (it == j.end()) {

@@ -158,7 +158,7 @@ TEST_F(GraphLibrary, BadIncludesAreReportedByCode) {
   // A graph parameter that a library also declares under the same prefixed name.
   EXPECT_EQ(codeOf(R"({"name": "w", "include": {"stone": "lib/stone.json"},
                        "parameters": {"stone.tint": {"type": "vec3", "default": [1, 1, 1]}}, "nodes": [], "output": {}})"),
-            "WG2013");
+            "WG2026");
 }
 
 }  // namespace

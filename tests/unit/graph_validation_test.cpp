@@ -35,13 +35,13 @@ TEST(GraphValidation, OverflowingNumbersAreNotFiniteLiterals) {
 TEST(GraphValidation, BoolParametersHaveNoRange) {
   auto codes = codesFor(R"({"name": "t", "parameters": {"b": {"type": "bool", "default": true, "min": 0}},
                             "nodes": [], "output": {}})");
-  EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::InvalidParameter});
+  EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::BoolParameterRange});
 }
 
 TEST(GraphValidation, MinAboveMaxIsOneError) {
   auto codes = codesFor(R"({"name": "t", "parameters": {"a": {"type": "float", "default": 0.5, "min": 1, "max": 0}},
                             "nodes": [], "output": {}})");
-  EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::InvalidParameter});
+  EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::ParameterRangeInverted});
 }
 
 TEST(GraphValidation, IntegralFloatsAreIntegers) {
