@@ -3,6 +3,7 @@
 #include <cmath>
 #include <locale>
 #include <sstream>
+#include <stdexcept>
 
 namespace wg {
 namespace {
@@ -25,6 +26,13 @@ std::string checkRange(const char* name, float value, float lo, float hi) {
   return {};
 }
 
+// A value against its frame field's accepted range: one table holds every range.
+std::string checkField(const char* label, std::string_view field, float value) {
+  const FrameField* f = findFrameField(field);
+  if (!f) throw std::logic_error("no frame field " + std::string(field));
+  return checkRange(label, value, f->min, f->max);
+}
+
 template <std::size_t N>
 std::string checkFinite(const char* name, const std::array<float, N>& v) {
   for (std::size_t i = 0; i < N; ++i) {
@@ -40,12 +48,11 @@ std::string checkFinite(const char* name, const std::array<float, N>& v) {
 
 std::string validate(const WeatherConditions& c) {
   for (std::string error :
-       {checkRange("temperature", c.temperature, kMinTemperatureC, kMaxTemperatureC),
-        checkRange("precipitation", c.precipitation, 0.0f, 1.0f),
-        checkRange("windIntensity", c.windIntensity, 0.0f, 1.0f),
+       {checkField("temperature", "temperature", c.temperature),
+        checkField("precipitation", "precipitation", c.precipitation),
+        checkField("windIntensity", "windIntensity", c.windIntensity),
         checkFinite("windDirection", c.windDirection), checkFinite("sunDirection", c.sunDirection),
-        checkRange("sunIntensity", c.sunIntensity, 0.0f, 1.0f),
-        checkRange("sunMelt", c.sunMelt, 0.0f, 1.0f)}) {
+        checkField("sunIntensity", "sunIntensity", c.sunIntensity), checkField("sunMelt", "sunMelt", c.sunMelt)}) {
     if (!error.empty()) return error;
   }
   return {};
@@ -56,10 +63,10 @@ std::string validate(const WeatherState& s) {
   if (!std::isfinite(s.time)) return "time = " + number(s.time) + " is not a finite number";
   const WeatherLevels& l = s.levels;
   for (std::string error :
-       {checkRange("snow", l.snow, 0.0f, 1.0f), checkRange("wetness", l.wetness, 0.0f, 1.0f),
-        checkRange("moss", l.moss, 0.0f, 1.0f), checkRange("frost", l.frost, 0.0f, 1.0f),
-        checkRange("puddles", l.puddles, 0.0f, 1.0f),
-        checkRange("rainMemory", l.rainMemory, 0.0f, 1.0f)}) {
+       {checkField("snow", "snowLevel", l.snow), checkField("wetness", "wetnessLevel", l.wetness),
+        checkField("moss", "mossLevel", l.moss), checkField("frost", "frostLevel", l.frost),
+        checkField("puddles", "puddleLevel", l.puddles),
+        checkRange("rainMemory", l.rainMemory, 0.0f, 1.0f)}) {  // simulation state, not a frame field
     if (!error.empty()) return error;
   }
   return {};

@@ -116,6 +116,35 @@ TEST(WeatherValidateTest, RejectsNonFiniteValues) {
   EXPECT_NE(validate(c).find("windIntensity"), std::string::npos);
 }
 
+// The accepted ranges are the frame table's: each input passes at its field's bounds
+// and fails just outside them, so a range changed in nodes/frame_fields.cpp changes both.
+TEST(WeatherValidateTest, RangesComeFromTheFrameTable) {
+  struct Input {
+    const char* field;
+    float* value;
+  };
+  WeatherState s;
+  const Input inputs[] = {{"temperature", &s.conditions.temperature}, {"precipitation", &s.conditions.precipitation},
+                          {"windIntensity", &s.conditions.windIntensity}, {"sunIntensity", &s.conditions.sunIntensity},
+                          {"sunMelt", &s.conditions.sunMelt}, {"snowLevel", &s.levels.snow},
+                          {"wetnessLevel", &s.levels.wetness}, {"mossLevel", &s.levels.moss},
+                          {"frostLevel", &s.levels.frost}, {"puddleLevel", &s.levels.puddles}};
+  for (const auto& input : inputs) {
+    const FrameField* field = findFrameField(input.field);
+    ASSERT_NE(field, nullptr) << input.field;
+    const float saved = *input.value;
+    for (float ok : {field->min, field->max}) {
+      *input.value = ok;
+      EXPECT_EQ(validate(s), "") << input.field << " = " << ok;
+    }
+    for (float bad : {field->min - 0.5f, field->max + 0.5f}) {
+      *input.value = bad;
+      EXPECT_NE(validate(s), "") << input.field << " = " << bad;
+    }
+    *input.value = saved;
+  }
+}
+
 TEST(WeatherValidateTest, AcceptsZeroWind) {
   WeatherConditions c;
   c.windDirection = {0.0f, 0.0f};
