@@ -5,11 +5,11 @@
 #include <stdexcept>
 
 #include "nodes/lattice_noise.hpp"
+#include "runtime/colour_overlay.hpp"
 #include "runtime/material_resources.hpp"
 #include "runtime/snow/snow_puff_shaders.hpp"
 #include "runtime/vulkan/material_pipeline.hpp"
 #include "runtime/vulkan/compute_barriers.hpp"
-#include "runtime/vulkan/graphics_pipeline.hpp"
 #include "runtime/vulkan/runtime_shader.hpp"
 
 namespace wg::snow {
@@ -45,70 +45,12 @@ struct Draws {
   float around(float spread) { return 1.f + spread * (2.f * unit() - 1.f); }
 };
 
-// Draws over the finished colour: load it, keep it; no depth attachment, the
-// fragment stage compares against the sampled scene depth itself.
-vk::UniqueRenderPass createPuffPass(VkDevice d) {
-  VkAttachmentDescription colour{};
-  colour.format = vk::kColourFormat;
-  colour.samples = VK_SAMPLE_COUNT_1_BIT;
-  colour.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  colour.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  colour.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  VkSubpassDescription subpass{};
-  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  subpass.colorAttachmentCount = 1;
-  subpass.pColorAttachments = &ref;
-  VkSubpassDependency before{};
-  before.srcSubpass = VK_SUBPASS_EXTERNAL;
-  before.dstSubpass = 0;
-  before.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  before.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  before.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  before.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  VkRenderPassCreateInfo passInfo{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  passInfo.attachmentCount = 1;
-  passInfo.pAttachments = &colour;
-  passInfo.subpassCount = 1;
-  passInfo.pSubpasses = &subpass;
-  passInfo.dependencyCount = 1;
-  passInfo.pDependencies = &before;
-  VkRenderPass pass;
-  vk::check(vkCreateRenderPass(d, &passInfo, nullptr, &pass), "vkCreateRenderPass");
-  return vk::UniqueRenderPass(d, pass);
-}
-
-// Camera-facing billboards, six vertices a particle from the particle buffer (no
-// vertex input), blended premultiplied over the colour.
-vk::UniquePipeline createPuffPipeline(VkDevice d, VkShaderModule vertexModule, VkShaderModule fragmentModule,
-                                      VkPipelineLayout layout, VkRenderPass pass) {
-  VkPipelineColorBlendAttachmentState blend = vk::opaqueColour();
-  blend.blendEnable = VK_TRUE;  // premultiplied alpha
-  blend.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
-  blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-  blend.colorBlendOp = VK_BLEND_OP_ADD;
-  blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-  blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-  blend.alphaBlendOp = VK_BLEND_OP_ADD;
-  vk::GraphicsPipelineSettings settings;
-  settings.vertex = vertexModule;
-  settings.fragment = fragmentModule;
-  settings.colour = blend;
-  settings.layout = layout;
-  settings.pass = pass;
-  return vk::createGraphicsPipeline(d, settings);
-}
-
 }  // namespace
 
 SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
-    : ctx_(ctx), settings_(settings),
+    : ctx_(ctx), settings_(settings), overlay_(ctx.device()),
       particles_(ctx, settings.capacity * sizeof(Particle), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
   std::memset(particles_.mapped(), 0, particles_.size());
-  VkDevice d = ctx_.device();
   auto simulate = vk::compileRuntimeShader(puffSimulateSource(), vk::RuntimeStage::Compute, "snow puff step");
   auto vertex = vk::compileRuntimeShader(puffVertexSource(), vk::RuntimeStage::Vertex, "snow puff vertex");
   auto fragment = vk::compileRuntimeShader(puffFragmentSource(), vk::RuntimeStage::Fragment, "snow puff fragment");
@@ -126,10 +68,10 @@ SnowPuffs::SnowPuffs(vk::Context& ctx, const PuffSettings& settings)
   simulateModule_ = vk::createShaderModule(ctx_, simulate.words);
   simulatePipeline_ = vk::createComputePipeline(ctx_, simulateModule_.get(), simulateSet_->pipelineLayout());
 
-  pass_ = createPuffPass(d);
   vertexModule_ = vk::createShaderModule(ctx_, vertex.words);
   fragmentModule_ = vk::createShaderModule(ctx_, fragment.words);
-  drawPipeline_ = createPuffPipeline(d, vertexModule_.get(), fragmentModule_.get(), drawSet_->pipelineLayout(), pass_.get());
+  // Camera-facing billboards, six vertices a particle from the particle buffer.
+  drawPipeline_ = overlay_.pipeline(vertexModule_.get(), fragmentModule_.get(), drawSet_->pipelineLayout());
 }
 
 SnowPuffs::~SnowPuffs() { vkDeviceWaitIdle(ctx_.device()); }
@@ -167,23 +109,7 @@ void SnowPuffs::simulate(double seconds, glm::vec2 wind) {
 }
 
 void SnowPuffs::record(const ColourPassTargets& t) {
-  VkDevice d = ctx_.device();
-  // The previous frame has been submitted and waited for: its framebuffer can go.
-  framebuffer_.reset();
-  VkImageView view = t.colour->view();
-  VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  fb.renderPass = pass_.get();
-  fb.attachmentCount = 1;
-  fb.pAttachments = &view;
-  fb.width = t.colour->width();
-  fb.height = t.colour->height();
-  fb.layers = 1;
-  VkFramebuffer framebuffer;
-  vk::check(vkCreateFramebuffer(d, &fb, nullptr, &framebuffer), "vkCreateFramebuffer");
-  framebuffer_ = vk::UniqueFramebuffer(d, framebuffer);
   drawSet_->bindImage("SceneDepth", t.depth->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-  vk::Image2D::transition(t.cmd, t.depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   // Billboards face the camera: its right and up directions, unprojected from the
   // centre of the screen.
   glm::mat4 inverse = glm::inverse(t.viewProjection);
@@ -196,23 +122,13 @@ void SnowPuffs::record(const ColourPassTargets& t) {
   glm::vec3 up = glm::normalize(unproject({0.f, -1.f, 0.5f}) - centre);  // clip y points down
   ViewConstants c{t.viewProjection, glm::vec4(right, 0.f), glm::vec4(up, 0.f),
                   {t.nearPlane, t.farPlane, settings_.softness, kOpacity}};
-  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = pass_.get();
-  begin.framebuffer = framebuffer;
-  begin.renderArea = {{0, 0}, {t.colour->width(), t.colour->height()}};
-  vkCmdBeginRenderPass(t.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  VkViewport viewport{0.f, 0.f, float(t.colour->width()), float(t.colour->height()), 0.f, 1.f};
-  VkRect2D scissor{{0, 0}, {t.colour->width(), t.colour->height()}};
-  vkCmdSetViewport(t.cmd, 0, 1, &viewport);
-  vkCmdSetScissor(t.cmd, 0, 1, &scissor);
+  overlay_.begin(t);
   VkDescriptorSet set = drawSet_->set();
   vkCmdBindPipeline(t.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, drawPipeline_.get());
   vkCmdBindDescriptorSets(t.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, drawSet_->pipelineLayout(), 0, 1, &set, 0, nullptr);
   vkCmdPushConstants(t.cmd, drawSet_->pipelineLayout(), drawSet_->stages(), 0, sizeof c, &c);
   vkCmdDraw(t.cmd, settings_.capacity * kVerticesPerParticle, 1, 0, 0);
-  vkCmdEndRenderPass(t.cmd);
-  vk::Image2D::transition(t.cmd, t.depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+  overlay_.end(t);
 }
 
 std::span<const Particle> SnowPuffs::particles() const {

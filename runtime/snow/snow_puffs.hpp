@@ -10,6 +10,7 @@
 #include <memory>
 #include <span>
 
+#include "runtime/colour_overlay.hpp"
 #include "runtime/scene_renderer.hpp"
 #include "runtime/vulkan/reflected_descriptor_set.hpp"
 
@@ -55,13 +56,12 @@ class SnowPuffs {
  private:
   vk::Context& ctx_;
   PuffSettings settings_;
+  ColourOverlay overlay_;  // the render pass, before the pipeline made for it
   vk::Buffer particles_;
   std::uint32_t next_ = 0, emitted_ = 0;
   std::unique_ptr<vk::ReflectedDescriptorSet> simulateSet_, drawSet_;
   vk::UniqueShaderModule simulateModule_, vertexModule_, fragmentModule_;
   vk::UniquePipeline simulatePipeline_, drawPipeline_;
-  vk::UniqueRenderPass pass_;
-  vk::UniqueFramebuffer framebuffer_;  // the last frame's; kept until the next
   vk::UniqueSampler depthSampler_;
   std::uint32_t simulateLocalSize_ = 1;
 };
