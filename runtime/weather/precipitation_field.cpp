@@ -1,0 +1,28 @@
+#include "runtime/weather/precipitation_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wg {
+
+PrecipitationField precipitationField(const WeatherConditions& c, const PrecipitationSettings& s, const WeatherRates& rates) {
+  PrecipitationField field;
+  field.radius = s.radius;
+  field.snowFallSpeed = s.snowFallSpeed;
+  field.rainFallSpeed = s.rainFallSpeed;
+  const float amount = std::isfinite(c.precipitation) ? std::clamp(c.precipitation, 0.f, 1.f) : 0.f;
+  const float temperature = std::isfinite(c.temperature) ? c.temperature : 0.f;
+  field.snowShare = static_cast<float>(snowFraction(temperature, rates));
+  field.snowflakes = static_cast<std::uint32_t>(std::lround(double(s.maxSnowflakes) * amount * field.snowShare));
+  field.raindrops = static_cast<std::uint32_t>(std::lround(double(s.maxRaindrops) * amount * (1.0 - field.snowShare)));
+  const float dx = c.windDirection[0], dz = c.windDirection[1];
+  const float length = std::sqrt(dx * dx + dz * dz);
+  const float intensity = std::isfinite(c.windIntensity) ? std::clamp(c.windIntensity, 0.f, 1.f) : 0.f;
+  if (std::isfinite(length) && length > 1e-6f) {
+    const float speed = intensity * static_cast<float>(rates.windSpeedAtFullIntensity) / length;
+    field.wind = {dx * speed, dz * speed};
+  }
+  return field;
+}
+
+}  // namespace wg
