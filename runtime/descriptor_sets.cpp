@@ -44,7 +44,7 @@ std::array<VkDescriptorSet, 2> allocateMaterialSets(VkDevice device, VkDescripto
     writer.buffer(sets[1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);
   for (const auto& t : material.textures()) {
     writer.image(sets[1], t.reflected->binding, t.image.view());
-    writer.sampler(sets[1], t.reflected->samplerBinding, t.sampler.get());
+    writer.sampler(sets[1], t.reflected->samplerBinding, t.samplerFor(maps.baseLevelTextures));
   }
   return sets;
 }

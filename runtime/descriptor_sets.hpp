@@ -51,6 +51,9 @@ struct SharedMaps {
   VkImageView terrainHeight, skyExposure, sunShadow, snowDeformation;
   VkSampler linear, nearest;  // depth formats need not be filterable; PCF filters
   VkSampler repeat;           // the toroidal snow deformation map
+  // The materials' textures read at level 0 only (AOVs: as the CPU evaluator reads
+  // them), not through their mip chains.
+  bool baseLevelTextures = false;
 };
 
 // A pool for `sets` sets: `uniformBuffers` of each uniform kind (dynamic and plain),

@@ -7,6 +7,7 @@
 #include "compiler/json_document.hpp"
 #include "compiler/literal.hpp"
 #include "nodes/image_file.hpp"
+#include "runtime/image/mip_chain.hpp"
 #include "runtime/material_compile_error.hpp"
 #include "nodes/texture_generators.hpp"
 #include "runtime/vulkan/texture_sampler.hpp"
@@ -77,11 +78,18 @@ MaterialResources::MaterialResources(vk::Context& ctx, const std::string& graphP
     parameters_->write(bytes.data(), bytes.size());
   }
   for (const auto& t : reflection_.textures) {
+    // The full mip chain, averaged in linear light for sRGB textures.
     Image pixels = textureImage(t, graphPath);
-    vk::Image2D image(ctx, static_cast<std::uint32_t>(pixels.width), static_cast<std::uint32_t>(pixels.height),
-                      vk::textureFormat(t), VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-    image.upload(ctx, pixels.rgba.data(), pixels.rgba.size());
-    textures_.push_back({&t, std::move(image), vk::createSampler(ctx, t)});
+    const VkFormat format = vk::textureFormat(t);
+    const std::vector<Image> below = mipLevelsBelow(pixels, format == VK_FORMAT_R8G8B8A8_SRGB);
+    std::vector<const std::vector<unsigned char>*> levels{&pixels.rgba};
+    for (const Image& level : below) levels.push_back(&level.rgba);
+    vk::Image2D image(ctx, static_cast<std::uint32_t>(pixels.width), static_cast<std::uint32_t>(pixels.height), format,
+                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                      static_cast<std::uint32_t>(levels.size()));
+    image.uploadLevels(ctx, levels);
+    textures_.push_back({&t, std::move(image), vk::createSampler(ctx, t, vk::MipSampling::FullChain),
+                         vk::createSampler(ctx, t, vk::MipSampling::BaseLevel)});
   }
 }
 
@@ -91,12 +99,12 @@ std::size_t MaterialResources::textureBytes() const {
   return n;
 }
 
-vk::MaterialPipeline& MaterialResources::pipeline(ShaderLanguage backend, VkRenderPass colourPass, VkRenderPass depthPass) {
+vk::MaterialPipeline& MaterialResources::pipeline(ShaderLanguage backend, const vk::PipelinePasses& passes) {
   auto& slot = pipelines_[backend];
   if (!slot) {
     const auto& vert = compiled_.stage(backend, ShaderStage::Vertex).spirv;
     const auto& frag = compiled_.stage(backend, ShaderStage::Fragment).spirv;
-    slot = std::make_unique<vk::MaterialPipeline>(ctx_, reflection_, vert, frag, colourPass, depthPass);
+    slot = std::make_unique<vk::MaterialPipeline>(ctx_, reflection_, vert, frag, passes);
   }
   return *slot;
 }

@@ -21,16 +21,21 @@ class MaterialResources {
   MaterialResources& operator=(const MaterialResources&) = delete;
 
   // Built on first use for each backend.
-  vk::MaterialPipeline& pipeline(ShaderLanguage backend, VkRenderPass colourPass, VkRenderPass depthPass);
+  vk::MaterialPipeline& pipeline(ShaderLanguage backend, const vk::PipelinePasses& passes);
   const vk::MaterialReflection& reflection() const { return reflection_; }
   const CompiledMaterial& compiled() const { return compiled_; }
   const std::string& graphPath() const { return graphPath_; }
   const vk::Buffer* parameterBuffer() const { return parameters_.get(); }
 
+  // Each texture has its full mip chain; `sampler` reads it trilinear (and anisotropic
+  // where the device allows), `baseLevelSampler` reads level 0 only, as the CPU
+  // evaluator does: the AOV renders bind that one (docs/runtime.md).
   struct BoundTexture {
     const vk::ReflectedTexture* reflected;
     vk::Image2D image;
     vk::UniqueSampler sampler;
+    vk::UniqueSampler baseLevelSampler;
+    VkSampler samplerFor(bool baseLevel) const { return baseLevel ? baseLevelSampler.get() : sampler.get(); }
   };
   const std::vector<BoundTexture>& textures() const { return textures_; }
   std::size_t textureBytes() const;

@@ -50,7 +50,8 @@ struct SceneRenderer::Frame {
   std::optional<FrameSlices> slices;  // per (pass, object)
   vk::UniqueDescriptorPool pool;
   std::vector<std::array<VkDescriptorSet, 2>> sets;  // per (pass, object)
-  vk::Image2D colour, depth;
+  vk::Image2D colour, depth;  // single-sampled: what later passes and the read-back see
+  vk::Image2D multisampledColour, multisampledDepth;  // lit frames on a multisampled pass
   vk::UniqueFramebuffer colourTarget, shadowTarget;
 
   std::size_t slot(std::size_t pass, std::size_t object) const { return pass * materials.size() + object; }
@@ -58,7 +59,10 @@ struct SceneRenderer::Frame {
 
 SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory)
     : ctx_(ctx), scene_(std::move(scene)), graphsDirectory_(std::move(graphsDirectory)), timer_(ctx) {
-  colourPass_ = createColourPass(ctx_.device());
+  colourSamples_ = colourPassSamples(ctx_);
+  colourPass_ = colourSamples_ == VK_SAMPLE_COUNT_1_BIT ? createColourPass(ctx_.device())
+                                                       : createMultisampledColourPass(ctx_, colourSamples_);
+  aovPass_ = createColourPass(ctx_.device());
   depthPass_ = createDepthOnlyPass(ctx_.device());
   linearClamp_ = createSampler(ctx_, "clamp", "linear");
   nearestClamp_ = createSampler(ctx_, "clamp", "nearest");
@@ -250,6 +254,7 @@ void SceneRenderer::allocateDescriptorSets(Frame& frame) {
       SharedMaps maps{terrainHeight_.view(), pass.exposureView, pass.shadowView,
                       (snowDeformation_ ? *snowDeformation_ : placeholderDeformation_).view(), linearClamp_.get(),
                       nearestClamp_.get(), linearRepeat_.get()};
+      maps.baseLevelTextures = frame.request.debugView != 0;  // AOVs read textures as the CPU evaluator does
       MaterialResources& m = *frame.materials[i];
       frame.sets[frame.slot(p, i)] = allocateMaterialSets(ctx_.device(), frame.pool.get(), m, pipelineOf(m, frame.request),
                                                           writer, frame.slices->buffer(), frame.slices->blockSize(), maps);
@@ -258,7 +263,18 @@ void SceneRenderer::allocateDescriptorSets(Frame& frame) {
 }
 
 vk::MaterialPipeline& SceneRenderer::pipelineOf(MaterialResources& material, const RenderRequest& request) {
-  return material.pipeline(request.backend, colourPass_.get(), depthPass_.get());
+  return material.pipeline(request.backend, {colourPass_.get(), colourSamples_, aovPass_.get(), depthPass_.get()});
+}
+
+// Lit frames draw multisampled where the device allows; AOVs single-sampled, so every
+// pixel they read back is one surface's value at the pixel centre, as the CPU evaluator
+// computes it (a resolve would average across edges).
+bool SceneRenderer::multisampled(const RenderRequest& r) const {
+  return r.debugView == 0 && colourSamples_ != VK_SAMPLE_COUNT_1_BIT;
+}
+
+VkRenderPass SceneRenderer::colourPassFor(const RenderRequest& r) const {
+  return r.debugView == 0 ? colourPass_.get() : aovPass_.get();
 }
 
 // Later passes (request.afterColourPass) may write the colour in compute and sample the depth.
@@ -269,7 +285,19 @@ void SceneRenderer::createTargets(Frame& frame) {
                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | later);
   frame.depth = vk::Image2D(ctx_, r.width, r.height, vk::kDepthFormat,
                             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (r.afterColourPass ? VK_IMAGE_USAGE_SAMPLED_BIT : 0));
-  frame.colourTarget = createFramebuffer(ctx_.device(), colourPass_.get(), {frame.colour.view(), frame.depth.view()}, r.width, r.height);
+  if (multisampled(r)) {
+    frame.multisampledColour = vk::Image2D(ctx_, r.width, r.height, vk::kColourFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 1,
+                                           colourSamples_);
+    frame.multisampledDepth = vk::Image2D(ctx_, r.width, r.height, vk::kDepthFormat,
+                                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, 1, colourSamples_);
+    frame.colourTarget = createFramebuffer(
+        ctx_.device(), colourPass_.get(),
+        {frame.multisampledColour.view(), frame.multisampledDepth.view(), frame.colour.view(), frame.depth.view()}, r.width,
+        r.height);
+  } else {
+    frame.colourTarget = createFramebuffer(ctx_.device(), colourPassFor(r), {frame.colour.view(), frame.depth.view()},
+                                           r.width, r.height);
+  }
   frame.shadowTarget = createFramebuffer(ctx_.device(), depthPass_.get(), {shadowMap_.view()}, kShadowResolution, kShadowResolution);
 }
 
@@ -313,7 +341,7 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   if (r.debugView == 0) colourClear.color = {{kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.f}};
   else colourClear.color = {{0.f, 0.f, 0.f, 0.f}};
   timer_.start(cmd);
-  recordPass(cmd, {colourPass_.get(), frame.colourTarget.get(), r.width, r.height, {colourClear, depthClear}},
+  recordPass(cmd, {colourPassFor(r), frame.colourTarget.get(), r.width, r.height, {colourClear, depthClear}},
              drawsOf(frame, p, order));
   timer_.stop(cmd);
   if (r.afterColourPass)

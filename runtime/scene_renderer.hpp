@@ -80,6 +80,9 @@ class SceneRenderer {
   std::size_t gpuMemoryBytes() const;
   // Every file the materials compiled so far were read from: each graph file, the
   // libraries it includes and the images it loads (what `compile --depfile` lists).
+  // Samples per pixel of lit frames (4 where the device allows; resolved before
+  // anything reads the colour); AOVs are always drawn single-sampled.
+  std::uint32_t colourSamples() const { return static_cast<std::uint32_t>(colourSamples_); }
   // Sorted, each once; `render --watch` polls them.
   std::vector<std::string> materialInputFiles() const;
   // The map materials sample as "snowDeformation" (docs/deformable-snow.md): RGBA32F,
@@ -114,13 +117,18 @@ class SceneRenderer {
   void createTargets(Frame& frame);
   std::vector<std::size_t> drawOrder(const Frame& frame) const;
   std::vector<ObjectDraw> drawsOf(Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
+  bool multisampled(const RenderRequest& request) const;
+  VkRenderPass colourPassFor(const RenderRequest& request) const;
   void recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
   RenderedFrame readBack(Frame& frame);
 
   vk::Context& ctx_;
   scene::Scene scene_;
   std::string graphsDirectory_;
-  vk::UniqueRenderPass colourPass_, depthPass_;  // outlive the materials' pipelines
+  // The lit colour pass (colourSamples_ per pixel), the single-sampled pass AOVs are
+  // drawn in, and the depth-only pass; they outlive the materials' pipelines.
+  VkSampleCountFlagBits colourSamples_ = VK_SAMPLE_COUNT_1_BIT;
+  vk::UniqueRenderPass colourPass_, aovPass_, depthPass_;
   std::map<std::string, std::unique_ptr<MaterialResources>> materials_;  // by graph + preset
   std::vector<std::unique_ptr<Object>> objects_;
   vk::Image2D terrainHeight_, exposureMap_, shadowMap_, placeholderHeight_, placeholderShadow_, placeholderDeformation_;

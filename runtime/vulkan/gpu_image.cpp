@@ -1,5 +1,7 @@
 #include "runtime/vulkan/gpu_image.hpp"
 
+#include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -19,18 +21,24 @@ std::uint32_t texelSize(VkFormat format) {
 
 bool Image2D::isDepth() const { return format_ == VK_FORMAT_D32_SFLOAT; }
 
-VkDeviceSize Image2D::byteSize() const { return VkDeviceSize(width_) * height_ * texelSize(format_); }
+VkDeviceSize Image2D::byteSize() const {
+  VkDeviceSize texels = 0;
+  for (std::uint32_t level = 0; level < mipLevels_; ++level)
+    texels += VkDeviceSize(std::max(1u, width_ >> level)) * std::max(1u, height_ >> level);
+  return texels * texelSize(format_);
+}
 
-Image2D::Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage)
-    : format_(format), width_(width), height_(height) {
+Image2D::Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                 std::uint32_t mipLevels, VkSampleCountFlagBits samples)
+    : format_(format), width_(width), height_(height), mipLevels_(mipLevels) {
   VkDevice device = ctx.device();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {width, height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = mipLevels;
   info.arrayLayers = 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.samples = samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
@@ -52,7 +60,7 @@ Image2D::Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkForm
   viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
   viewInfo.format = format;
   viewInfo.subresourceRange = {static_cast<VkImageAspectFlags>(isDepth() ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT),
-                               0, 1, 0, 1};
+                               0, mipLevels, 0, 1};
   VkImageView view;
   check(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
   view_ = UniqueImageView(device, view);
@@ -68,6 +76,7 @@ Image2D& Image2D::operator=(Image2D&& o) noexcept {
     format_ = o.format_;
     width_ = o.width_;
     height_ = o.height_;
+    mipLevels_ = o.mipLevels_;
   }
   return *this;
 }
@@ -80,7 +89,7 @@ void Image2D::transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags 
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {aspect, 0, 1, 0, 1};
+  barrier.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
   // Conservative but simple: every transition waits for all earlier work.
   barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
   barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
@@ -102,8 +111,36 @@ void Image2D::upload(Context& ctx, const void* texels, VkDeviceSize bytes) {
   });
 }
 
+void Image2D::uploadLevels(Context& ctx, const std::vector<const std::vector<unsigned char>*>& levels) {
+  if (levels.size() != mipLevels_) throw std::runtime_error("Image2D::uploadLevels: wrong number of levels");
+  VkDeviceSize total = 0;
+  for (const auto* level : levels) total += level->size();
+  Buffer staging(ctx, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  std::vector<VkBufferImageCopy> regions;
+  VkDeviceSize offset = 0;
+  for (std::uint32_t i = 0; i < mipLevels_; ++i) {
+    VkBufferImageCopy region{};
+    region.bufferOffset = offset;
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, i, 0, 1};
+    region.imageExtent = {std::max(1u, width_ >> i), std::max(1u, height_ >> i), 1};
+    const VkDeviceSize bytes = VkDeviceSize(region.imageExtent.width) * region.imageExtent.height * texelSize(format_);
+    if (levels[i]->size() != bytes) throw std::runtime_error("Image2D::uploadLevels: a level of the wrong size");
+    std::memcpy(static_cast<unsigned char*>(staging.mapped()) + offset, levels[i]->data(), bytes);
+    regions.push_back(region);
+    offset += bytes;
+  }
+  ctx.submitAndWait([&](VkCommandBuffer cmd) {
+    transition(cmd, handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    vkCmdCopyBufferToImage(cmd, staging.handle(), handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           static_cast<std::uint32_t>(regions.size()), regions.data());
+    transition(cmd, handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  });
+}
+
 std::vector<unsigned char> Image2D::download(Context& ctx, VkImageLayout layout) {
-  Buffer staging(ctx, byteSize(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  const VkDeviceSize bytes = VkDeviceSize(width_) * height_ * texelSize(format_);  // level 0
+  Buffer staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   VkImageAspectFlags aspect = isDepth() ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
     transition(cmd, handle(), aspect, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
@@ -113,7 +150,7 @@ std::vector<unsigned char> Image2D::download(Context& ctx, VkImageLayout layout)
     vkCmdCopyImageToBuffer(cmd, handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
     transition(cmd, handle(), aspect, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
   });
-  std::vector<unsigned char> out(byteSize());
+  std::vector<unsigned char> out(bytes);
   std::memcpy(out.data(), staging.mapped(), out.size());
   return out;
 }

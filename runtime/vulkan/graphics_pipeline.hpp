@@ -1,5 +1,5 @@
 // A graphics pipeline from the few settings the runtime's pipelines differ in; the
-// rest is fixed: triangle lists, fill, one sample, dynamic viewport and scissor.
+// rest is fixed: triangle lists, fill, dynamic viewport and scissor.
 #pragma once
 #include <optional>
 
@@ -19,6 +19,8 @@ struct GraphicsPipelineSettings {
   std::optional<VkPipelineColorBlendAttachmentState> colour;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass pass = VK_NULL_HANDLE;
+  // Must match the pass's attachments (the lit colour pass may be multisampled).
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 };
 
 UniquePipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineSettings& settings);

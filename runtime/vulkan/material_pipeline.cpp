@@ -54,7 +54,7 @@ VertexLayout vertexLayoutFrom(const MaterialReflection& r) {
 }
 
 MaterialPipeline::MaterialPipeline(Context& ctx, const MaterialReflection& reflection, const SpirvWords& vertex,
-                                   const SpirvWords& fragment, VkRenderPass colourPass, VkRenderPass depthPass)
+                                   const SpirvWords& fragment, const PipelinePasses& passes)
     : ctx_(ctx), reflection_(reflection), vertex_(vertexLayoutFrom(reflection)) {
   vertexModule_ = createShaderModule(ctx, vertex);
   fragmentModule_ = createShaderModule(ctx, fragment);
@@ -83,12 +83,12 @@ MaterialPipeline::MaterialPipeline(Context& ctx, const MaterialReflection& refle
   VkPipelineLayout layout;
   check(vkCreatePipelineLayout(ctx.device(), &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
   layout_ = UniquePipelineLayout(ctx.device(), layout);
-  colour_ = build(colourPass, Kind::Colour);
-  if (reflection.blended()) aov_ = build(colourPass, Kind::Aov);
-  depth_ = build(depthPass, Kind::Depth);
+  colour_ = build(passes.lit, Kind::Colour, passes.litSamples);
+  if (reflection.blended() || passes.litSamples != VK_SAMPLE_COUNT_1_BIT) aov_ = build(passes.aov, Kind::Aov);
+  depth_ = build(passes.depth, Kind::Depth);
 }
 
-UniquePipeline MaterialPipeline::build(VkRenderPass pass, Kind kind) {
+UniquePipeline MaterialPipeline::build(VkRenderPass pass, Kind kind, VkSampleCountFlagBits samples) {
   const bool depthOnly = kind == Kind::Depth;
   const bool blended = kind == Kind::Colour && reflection_.blended();
   VkVertexInputBindingDescription binding{0, vertex_.stride, VK_VERTEX_INPUT_RATE_VERTEX};
@@ -109,6 +109,7 @@ UniquePipeline MaterialPipeline::build(VkRenderPass pass, Kind kind) {
   if (!depthOnly) settings.colour = blended ? straightAlphaBlend() : opaqueColour();
   settings.layout = layout_.get();
   settings.pass = pass;
+  settings.samples = samples;
   return createGraphicsPipeline(ctx_.device(), settings);
 }
 

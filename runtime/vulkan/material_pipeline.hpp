@@ -20,13 +20,24 @@ struct VertexLayout {
 
 VertexLayout vertexLayoutFrom(const MaterialReflection& reflection);
 
+// The render passes a material's pipelines are built for: the lit colour pass
+// (`litSamples` per pixel), the single-sampled pass the AOVs are drawn in, and the
+// depth-only pass.
+struct PipelinePasses {
+  VkRenderPass lit = VK_NULL_HANDLE;
+  VkSampleCountFlagBits litSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkRenderPass aov = VK_NULL_HANDLE;
+  VkRenderPass depth = VK_NULL_HANDLE;
+};
+
 class MaterialPipeline {
  public:
   MaterialPipeline(Context& ctx, const MaterialReflection& reflection, const SpirvWords& vertex,
-                   const SpirvWords& fragment, VkRenderPass colourPass, VkRenderPass depthPass);
+                   const SpirvWords& fragment, const PipelinePasses& passes);
 
-  // The lit colour pipeline; for an AOV (a debug view) a blended material is drawn
-  // opaque with depth writes, so read-backs see its attributes unblended.
+  // The lit colour pipeline; for an AOV (a debug view) the single-sampled one, where a
+  // blended material is drawn opaque with depth writes, so read-backs see its
+  // attributes unblended.
   VkPipeline colourPipeline(bool aov = false) const { return aov && aov_ ? aov_.get() : colour_.get(); }
   VkPipeline depthPipeline() const { return depth_.get(); }
   VkPipelineLayout layout() const { return layout_.get(); }
@@ -36,7 +47,7 @@ class MaterialPipeline {
 
  private:
   enum class Kind { Colour, Aov, Depth };
-  UniquePipeline build(VkRenderPass pass, Kind kind);
+  UniquePipeline build(VkRenderPass pass, Kind kind, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
 
   Context& ctx_;
   MaterialReflection reflection_;
@@ -46,7 +57,7 @@ class MaterialPipeline {
   UniqueDescriptorSetLayout setLayouts_[2];
   UniquePipelineLayout layout_;
   UniquePipeline colour_, depth_;
-  UniquePipeline aov_;  // blended materials only
+  UniquePipeline aov_;  // blended materials, or a multisampled lit pass
 };
 
 // Formats of the renderer's attachments.

@@ -1,5 +1,7 @@
 #include "runtime/vulkan/texture_sampler.hpp"
 
+#include <algorithm>
+
 namespace wg::vk {
 
 namespace {
@@ -12,21 +14,31 @@ VkFilter filterMode(std::string_view filter) { return filter == "nearest" ? VK_F
 }  // namespace
 
 UniqueSampler createSampler(Context& ctx, std::string_view wrapU, std::string_view wrapV, std::string_view minFilter,
-                        std::string_view magFilter) {
+                            std::string_view magFilter, MipSampling mips) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.minFilter = filterMode(minFilter);
   info.magFilter = filterMode(magFilter);
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = addressMode(wrapU);
   info.addressModeV = info.addressModeW = addressMode(wrapV);
-  info.maxLod = 0.f;  // one level: the CPU evaluator samples level 0 too
+  if (mips == MipSampling::FullChain) {
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    info.maxLod = VK_LOD_CLAMP_NONE;
+    const bool linear = info.minFilter == VK_FILTER_LINEAR && info.magFilter == VK_FILTER_LINEAR;
+    if (linear && ctx.samplerAnisotropy()) {
+      info.anisotropyEnable = VK_TRUE;
+      info.maxAnisotropy = std::min(16.f, ctx.properties().limits.maxSamplerAnisotropy);
+    }
+  } else {
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.maxLod = 0.f;  // level 0, as the CPU evaluator samples
+  }
   VkSampler sampler;
   check(vkCreateSampler(ctx.device(), &info, nullptr, &sampler), "vkCreateSampler");
   return UniqueSampler(ctx.device(), sampler);
 }
 
-UniqueSampler createSampler(Context& ctx, const ReflectedTexture& t) {
-  return createSampler(ctx, t.wrapU, t.wrapV, t.minFilter, t.magFilter);
+UniqueSampler createSampler(Context& ctx, const ReflectedTexture& t, MipSampling mips) {
+  return createSampler(ctx, t.wrapU, t.wrapV, t.minFilter, t.magFilter, mips);
 }
 
 VkFormat textureFormat(const ReflectedTexture& t) {

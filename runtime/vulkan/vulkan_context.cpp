@@ -160,9 +160,30 @@ bool Context::createDevice(std::string& error) {
   queueInfo.queueFamilyIndex = queueFamily_;
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(physical_, &supported);
+  VkPhysicalDeviceFeatures features{};
+  features.samplerAnisotropy = supported.samplerAnisotropy;
+  samplerAnisotropy_ = supported.samplerAnisotropy == VK_TRUE;
+  std::uint32_t extensionCount = 0;
+  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, nullptr);
+  std::vector<VkExtensionProperties> available(extensionCount);
+  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, available.data());
+  auto has = [&](const char* name) {
+    return std::any_of(available.begin(), available.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+  };
+  std::vector<const char*> extensions;
+  if (has(VK_KHR_CREATE_RENDERPASS_2_EXTENSION_NAME) && has(VK_KHR_DEPTH_STENCIL_RESOLVE_EXTENSION_NAME)) {
+    extensions = {VK_KHR_CREATE_RENDERPASS_2_EXTENSION_NAME, VK_KHR_DEPTH_STENCIL_RESOLVE_EXTENSION_NAME};
+    depthStencilResolve_ = true;
+  }
   VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   deviceInfo.queueCreateInfoCount = 1;
   deviceInfo.pQueueCreateInfos = &queueInfo;
+  deviceInfo.pEnabledFeatures = &features;
+  deviceInfo.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  deviceInfo.ppEnabledExtensionNames = extensions.data();
   VkDevice device = VK_NULL_HANDLE;
   if (vkCreateDevice(physical_, &deviceInfo, nullptr, &device) != VK_SUCCESS) {
     error = "cannot create a logical device on " + deviceName();

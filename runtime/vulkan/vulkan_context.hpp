@@ -35,6 +35,11 @@ class Context {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   std::string deviceName() const { return properties_.deviceName; }
   bool validationEnabled() const { return static_cast<bool>(messenger_); }
+  // Optional capabilities, enabled at device creation where the device has them:
+  // anisotropic texture filtering, and VK_KHR_depth_stencil_resolve (with
+  // VK_KHR_create_renderpass2), which a multisampled colour pass resolves its depth with.
+  bool samplerAnisotropy() const { return samplerAnisotropy_; }
+  bool depthStencilResolve() const { return depthStencilResolve_; }
 
   // Validation messages (warnings and errors) seen so far.
   const std::vector<std::string>& validationMessages() const { return messages_; }
@@ -77,6 +82,7 @@ class Context {
   UniqueCommandPool commandPool_;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_{};
+  bool samplerAnisotropy_ = false, depthStencilResolve_ = false;
 };
 
 // Throws std::runtime_error naming the call when a Vulkan call fails.
