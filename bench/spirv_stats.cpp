@@ -181,7 +181,8 @@ std::string probeGraph(const wg::OpDef* op) {
       node("sum", "add", {{"a", "c.out"}, {"b", value}});
       output["baseColor"] = "sum.out";
     } else {
-      if (op->valueType != wg::ValueType::Float && op->outputs.size() <= 1) {
+      // A whole vector (the first output reads no swizzle) is split to a float first.
+      if (op->valueType != wg::ValueType::Float && (op->outputs.empty() || op->outputs.front().accessor.empty())) {
         node("probeParts", "split", {{"in", value}});
         value = "probeParts.x";
       }

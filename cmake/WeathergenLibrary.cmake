@@ -7,7 +7,7 @@ include(GNUInstallDirs)
 # The static libraries end up in a shared object.
 set_target_properties(weathergen_compiler weathergen_backends weathergen_compiler_core weathergen_nodes PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
-add_library(weathergen_shared SHARED driver/public_api.cpp)
+add_library(weathergen_shared SHARED driver/public_api.cpp driver/public_weather_noise.cpp)
 add_library(weathergen::compiler ALIAS weathergen_shared)
 # The public header is the whole interface: consumers see include/ and nothing else.
 target_include_directories(weathergen_shared INTERFACE

@@ -93,11 +93,12 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
     std::string_view name, texture, sampler;
     std::uint32_t binding;
   };
-  constexpr std::array<WeatherMap, 4> kWeatherMaps = {{
+  constexpr std::array<WeatherMap, 5> kWeatherMaps = {{
       {"terrainHeight", "wg_terrain_height_map", "wg_terrain_height_sampler", 1},
       {"skyExposure", "wg_sky_exposure_map", "wg_sky_exposure_sampler", 3},
       {"sunShadow", "wg_sun_shadow_map", "wg_sun_shadow_sampler", 5},  // every fragment stage reads it
       {"snowDeformation", "wg_snow_deformation_map", "wg_snow_deformation_sampler", 7},  // docs/deformable-snow.md
+      {"weatherNoise", "wg_weather_noise_map", "wg_weather_noise_sampler", 9},  // nodes/weather_noise.hpp
   }};
   for (const auto& map : kWeatherMaps) {
     mi.globals.reserve(map.texture);

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "nodes/lattice_noise.hpp"
+#include "nodes/weather_noise.hpp"
 
 namespace wg::weather {
 
@@ -38,17 +38,16 @@ constexpr float kFrostFadeIn = 10.f;
 // Section 5.1.2: puddles only within 8 degrees of up; fully formed within 4.
 const float kCosPuddleMaxSlope = std::cos(glm::radians(8.f));
 const float kCosPuddleFullSlope = std::cos(glm::radians(4.f));
-// Puddle shapes: high-contrast noise of about 3 m blobs, with a soft 0.1-wide edge.
-constexpr float kPuddleNoiseScale = 0.35f;
+// Puddle shapes: the noise texture's high-contrast a channel, with a soft 0.1-wide edge.
 constexpr float kPuddleEdge = 0.05f;
-// World-space noise frequencies (cells per metre) for transitions, wind and ripples.
-constexpr float kCoverageNoiseScale = 1.5f;
-constexpr float kWindFlowScale = 0.25f;
-constexpr float kRippleScale = 2.f;
+// The noise texture (nodes/weather_noise.hpp): world xz to tile coordinates, and the
+// tile coordinates of one lattice cell of the panned channels. All are powers of two,
+// so the shaders' multiplies round exactly as these do.
+constexpr float kTilePerMetre = 1.f / kNoiseTile;
+constexpr float kTilePerFlowCell = 1.f / static_cast<float>(kFlowCells);
+constexpr float kTilePerRippleCell = 1.f / static_cast<float>(kRippleCells);
 constexpr float kRippleStrength = 0.25f;
 constexpr float kRippleFold = 7.f;  // decorrelates the ripple's second slope from the first
-// Offsets that decorrelate a second noise lookup from the first.
-constexpr glm::vec2 kDecorrelate{17.3f, 9.1f};
 // Temperatures (C) over which rain turns into wetness (eq. 3.15's T > 0, made continuous).
 constexpr float kWetTemperatureRamp = 1.f;
 // Precipitation over which the flowing-water normal fades in (eq. 3.15's P > 0).
@@ -99,14 +98,14 @@ float sunShade(glm::vec3 normal, glm::vec3 towardsSun, float melt) {
 }
 
 float windFlow(glm::vec2 xz, glm::vec2 direction, float time) {
-  glm::vec2 p = xz * kWindFlowScale;
-  auto pan = [&](float h, float v) { return valueNoise(p.x + h * time, p.y + v * time); };
-  return pan(direction.x, direction.y) + 0.5f * pan(direction.y, direction.x);
+  glm::vec2 uv = xz * kTilePerMetre;
+  glm::vec2 pan = direction * (time * kTilePerFlowCell);
+  return sampleNoise(uv + pan).y + 0.5f * sampleNoise(uv + glm::vec2(pan.y, pan.x)).y;
 }
 
 float windInfluence(glm::vec3 normal, glm::vec2 xz, glm::vec2 direction, float intensity, float time) {
-  glm::vec3 flow = glm::vec3(direction.x, 0.f, direction.y) * windFlow(xz, direction, time);
-  return clamp01(glm::dot(normal, flow) + intensity);
+  // N . (d.x, 0, d.y) f_wind, with the zero term left out as the shaders do.
+  return clamp01(glm::dot(glm::vec2(normal.x, normal.z), direction) * windFlow(xz, direction, time) + intensity);
 }
 
 float height(float y, float minHeight, float maxHeight) {
@@ -143,14 +142,14 @@ glm::vec3 wetDiffuse(glm::vec3 diffuse, float p) { return diffuse * lerp(1.f, kW
 float wetRoughness(float roughness, float p) { return clamp01(roughness - p); }
 
 glm::vec3 wetNormal(glm::vec3 tangentNormal, glm::vec2 xz, float p, float precipitation, float time) {
-  float rain = smoothStep(0.f, kRainFlowRamp, precipitation);
-  if (p <= 0.f || rain <= 0.f) return tangentNormal;
-  glm::vec2 uv = xz * kRippleScale + kWetFlowSpeed * p * time;
+  // No rain (rain 0) or a dry point (p 0): no flowing water, the normal as it was.
+  float strength = (p > 0.f ? 2.f * kRippleStrength : 0.f) * smoothStep(0.f, kRainFlowRamp, precipitation);
+  glm::vec2 uv = xz * kTilePerMetre + kWetFlowSpeed * (p * time * kTilePerRippleCell);
   // One lookup gives both slopes: the second is the noise folded by a fixed factor.
-  float n = valueNoise(uv.x, uv.y);
+  float n = sampleNoise(uv).z;
   float folded = n * kRippleFold;
   glm::vec2 pan(n - 0.5f, folded - std::floor(folded) - 0.5f);
-  return tangentNormal + glm::vec3(pan * (2.f * kRippleStrength * rain), 0.f);
+  return tangentNormal + glm::vec3(pan * strength, 0.f);
 }
 
 glm::vec3 desaturate(glm::vec3 in, float p) { return p * glm::dot(kDetailWeights, in) + (1.f - p) * in; }
@@ -176,9 +175,6 @@ float skyExposure(float pointHeight, float occluderHeight) {
   return 1.f - smoothStep(pointHeight + kShelterClearance, pointHeight + kShelterFull, occluderHeight);
 }
 
-float coverageNoise(glm::vec3 position) {
-  return valueNoise(position.x * kCoverageNoiseScale, position.z * kCoverageNoiseScale);
-}
 
 namespace {
 glm::vec3 toVec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
@@ -190,69 +186,61 @@ glm::vec2 toVec2(const std::array<float, 2>& a) { return {a[0], a[1]}; }
 float shapedPrediction(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
                        float terrain, const SnowShape& shape) {
   glm::vec4 weights = shape.weights;
-  weights.x = lerp(1.f, weights.x, shape.terms.y);
-  weights.z = lerp(1.f, weights.z, shape.terms.z);
-  float inc = lerp(1.f, inclination(normal, detailNormal, shape.inclinationIntensity), shape.terms.x);
-  float sun = lerp(1.f, sunFacing(normal, toVec3(frame.sunDirection), frame.sunMelt), shape.terms.y);
-  float h = lerp(1.f, height(position.y, shape.minHeight, shape.maxHeight), shape.terms.z);
-  float wind = windInfluence(normal, {position.x, position.z}, toVec2(frame.windDirection), frame.windIntensity,
-                             frame.time) *
-               shape.terms.w;
+  const glm::vec4& on = shape.terms;  // each switch is on above 0.5
+  weights.x = on.y > 0.5f ? weights.x : 1.f;
+  weights.z = on.z > 0.5f ? weights.z : 1.f;
+  float inc = on.x > 0.5f ? inclination(normal, detailNormal, shape.inclinationIntensity) : 1.f;
+  float sun = on.y > 0.5f ? sunFacing(normal, toVec3(frame.sunDirection), frame.sunMelt) : 1.f;
+  float h = on.z > 0.5f ? height(position.y, shape.minHeight, shape.maxHeight) : 1.f;
+  float wind = on.w > 0.5f ? windInfluence(normal, {position.x, position.z}, toVec2(frame.windDirection),
+                                           frame.windIntensity, frame.time)
+                           : 0.f;
   return prediction(inc, sun, h, terrain, wind, weights);
 }
 }  // namespace
 
 float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
-                   glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape) {
+                   glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape, float noise) {
   float level = clamp01(frame.snowLevel) * clamp01(exposure);
-  if (level <= 0.f) return 0.f;
   float fp = shapedPrediction(frame, normal, detailNormal, position, terrain, shape);
-  float noise = 0.5f * coverageNoise(position) + 0.5f * (1.f - detailMask(diffuse));
-  return transition(noise, fp * level);
+  return transition(0.5f * noise + 0.5f * (1.f - detailMask(diffuse)), fp * level);
 }
 
 glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure,
-                     const SnowShape& shape, float maxSnowHeight) {
+                     const SnowShape& shape, float maxSnowHeight, float noise) {
   float level = clamp01(frame.snowLevel) * clamp01(exposure);
-  if (level <= 0.f) return glm::vec3(0.f);
   float fp = shapedPrediction(frame, normal, normal, position, 0.f, shape);
-  return snowDisplacement(coverageNoise(position), fp * level, maxSnowHeight, normal);
+  return snowDisplacement(noise, fp * level, maxSnowHeight, normal);
 }
 
 float mossCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, glm::vec3 diffuse,
-                   const SnowShape& shape) {
+                   const SnowShape& shape, float noise) {
   float level = clamp01(frame.mossLevel);
-  if (level <= 0.f) return 0.f;
   // Least sun (eq. 3.5 read for moss) and low ground (eq. 3.9), weighted as eq. 3.1's
   // w1 and w3; tops and sides alike, but not overhangs.
   float shade = sunShade(normal, toVec3(frame.sunDirection), frame.sunMelt);
   float low = heightInverted(position.y, shape.minHeight, shape.maxHeight);
   float facing = clamp01(1.f + kMossOverhangRamp * glm::dot(normal, kUp));
   float predicted = clamp01(shape.weights.x * shade * shape.weights.z * low) * facing;
-  float noise = 0.5f * coverageNoise(position + glm::vec3(kDecorrelate.x, 0.f, kDecorrelate.y)) +
-                0.5f * (1.f - detailMask(diffuse));
-  return transition(noise, predicted * level);
+  return transition(0.5f * noise + 0.5f * (1.f - detailMask(diffuse)), predicted * level);
 }
 
-float puddleCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure) {
+float puddleCoverage(const FrameState& frame, glm::vec3 normal, float noise, float exposure) {
   float level = clamp01(frame.puddleLevel) * clamp01(exposure);
-  if (level <= 0.f) return 0.f;
-  return puddleMask(normal, valueNoise(position.x * kPuddleNoiseScale, position.z * kPuddleNoiseScale), level);
+  return (level > 0.f ? 1.f : 0.f) * puddleMask(normal, noise, level);  // the mask alone is not 0 at level 0
 }
 
 float puddleIce(const FrameState& frame) {
   return std::max(clamp01(frame.frostLevel), 1.f - smoothStep(0.f, kWetTemperatureRamp, frame.temperature));
 }
 
-float frostCoverage(const FrameState& frame, float frostMap, glm::vec3 position) {
-  if (frame.frostLevel <= 0.f) return 0.f;
-  return transition(coverageNoise(position), frostMask(frostMap, frame.frostLevel));
+float frostCoverage(const FrameState& frame, float frostMap, float noise) {
+  return transition(noise, frostMask(frostMap, frame.frostLevel));
 }
 
-float hoarfrostCoverage(const FrameState& frame, glm::vec3 position, float exposure) {
+float hoarfrostCoverage(const FrameState& frame, float noise, float exposure) {
   float level = clamp01(frame.frostLevel) * clamp01(exposure);
-  if (level <= 0.f) return 0.f;
-  return transition(coverageNoise(position), level);
+  return transition(noise, level);
 }
 
 }  // namespace wg::weather

@@ -47,7 +47,8 @@ float sunFacing(glm::vec3 normal, glm::vec3 towardsSun, float melt);
 // Eq. 3.5 for moss, as printed with SunIntensity 0.5: Clamp(0.5 - 0.5 melt (N . L)).
 // The side facing away from the sun scores highest, the side facing it lowest.
 float sunShade(glm::vec3 normal, glm::vec3 towardsSun, float melt);
-// Eq. 3.6: f_pan(h, v) = flow(xz + (h, v) * time); f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x).
+// Eq. 3.6: f_pan(h, v) = flow(xz + (h, v) * time); f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x),
+// flow the noise texture's g channel (nodes/weather_noise.hpp), panned (h, v) * time cells.
 float windFlow(glm::vec2 xz, glm::vec2 direction, float time);
 // Eq. 3.7: Clamp(N . (d.x, 0, d.y) * f_wind(d) + windIntensity).
 float windInfluence(glm::vec3 normal, glm::vec2 xz, glm::vec2 direction, float intensity, float time);
@@ -67,7 +68,8 @@ float prediction(float inc, float sun, float heightTerm, float terrain, float wi
 float wetness(float temperature, float wetnessLevel, float exposure);
 glm::vec3 wetDiffuse(glm::vec3 diffuse, float p);  // eq. 3.16: diffuse * Lerp(1, 0.7, p)
 float wetRoughness(float roughness, float p);      // eq. 3.17: Clamp(R - p)
-// Eq. 3.18: normal + Pan((0.5 p, 0.01 p)) * (1, 1, 0), flowing only while it rains.
+// Eq. 3.18: normal + Pan((0.5 p, 0.01 p)) * (1, 1, 0), flowing only while it rains; the
+// pan reads the noise texture's b channel.
 glm::vec3 wetNormal(glm::vec3 tangentNormal, glm::vec2 xz, float p, float precipitation, float time);
 glm::vec3 desaturate(glm::vec3 in, float p);  // eq. 3.19
 float detailMask(glm::vec3 diffuse);          // eq. 3.19 with p = 1: Clamp(d . diffuse)
@@ -79,34 +81,34 @@ float frostMask(float frostMap, float frostLevel);
 // Section 5.1.2: flat (within 8 degrees of up) and where high-contrast noise allows.
 float puddleMask(glm::vec3 normal, float noise, float puddleLevel);
 
-// The per-effect coverage functions the injection pass emits. Each returns 0 at
-// once when its level is 0, which is the uniform branch the shaders take.
+// The per-effect coverage functions the injection pass emits. None branches on its
+// level: at level 0 each is exactly 0 through its arithmetic (eq. 3.14's transition of a
+// noise of at most 1), puddles through one select. `noise` is the
+// one lookup they share: eq. 3.14's NoiseMap, the noise texture's r channel at the point
+// (noiseAt(position).x), and for puddles its a channel.
 struct SnowShape {
   glm::vec4 weights{2.f, 0.5f, 2.f, 0.5f};  // w1 sun, w2 wind, w3 height, w4 terrain
   float minHeight = -50.f, maxHeight = 50.f;
   float inclinationIntensity = 0.5f;
-  // Use inclination, sun, height, wind (0 or 1). A switched-off factor counts as 1 and so
+  // Use inclination, sun, height, wind (on above 0.5). A switched-off factor counts as 1 and so
   // does its weight (w1 for the sun, w3 for the height): the weights are renormalised.
   glm::vec4 terms{1.f, 1.f, 1.f, 1.f};
 };
 float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
-                   glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape);
+                   glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape, float noise);
 glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure,
-                     const SnowShape& shape, float maxSnowHeight);
+                     const SnowShape& shape, float maxSnowHeight, float noise);
 float mossCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, glm::vec3 diffuse,
-                   const SnowShape& shape);
-float puddleCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure);
+                   const SnowShape& shape, float noise);
+float puddleCoverage(const FrameState& frame, glm::vec3 normal, float noise, float exposure);
 // How frozen standing water is: liquid only above 0 C (the 1 C ramp of eq. 3.15), and
 // the frost level keeps it frozen while it thaws: max(frost, 1 - smoothstep(0, 1 C, T)).
 float puddleIce(const FrameState& frame);
 // Eq. 3.20's frost mask with eq. 3.14's noisy edges: transition(coverageNoise(p), mask).
-float frostCoverage(const FrameState& frame, float frostMap, glm::vec3 position);
-float hoarfrostCoverage(const FrameState& frame, glm::vec3 position, float exposure);
+float frostCoverage(const FrameState& frame, float frostMap, float noise);
+float hoarfrostCoverage(const FrameState& frame, float noise, float exposure);
 
 // Sky exposure from the shared map's occluder height above a point (1 open, 0 sheltered).
 float skyExposure(float pointHeight, float occluderHeight);
-
-// Low-contrast world-space noise the coverage functions share (value noise, [0, 1]).
-float coverageNoise(glm::vec3 position);
 
 }  // namespace wg::weather

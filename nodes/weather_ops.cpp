@@ -8,6 +8,7 @@
 #include "nodes/texture_image.hpp"
 #include "nodes/texture_sampling.hpp"
 #include "nodes/weather_model.hpp"
+#include "nodes/weather_noise.hpp"
 #include "nodes/weather_shader_library.hpp"
 
 namespace wg {
@@ -40,8 +41,12 @@ SnowShape shapeFrom(const Value& weights, const Value& shape, const Value* terms
 OpDef weatherOp(std::string_view name, std::string_view summary, std::vector<PortSpec> inputs, ValueType type,
                 std::string_view glsl, CpuEval eval, OpPurity purity = OpPurity::Pure) {
   // The library text is shared; only vector type names differ, and templates use none.
-  return {name, "weather", summary, std::move(inputs), ValueRule::Fixed, type, glsl, "", singleOutput(), eval, purity,
-          {&kWeatherLibrary}};
+  // It samples the noise texture (eq. 3.6's flow, the ripple), so every op that emits it
+  // makes the material declare that map.
+  OpDef op{name, "weather", summary, std::move(inputs), ValueRule::Fixed, type, glsl, "", singleOutput(), eval, purity,
+           {&kWeatherLibrary}};
+  op.weatherMaps = {"weatherNoise"};
+  return op;
 }
 
 const SnowShape kDefaultShape;
@@ -108,7 +113,7 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                                return Value::scalar(c.terrainHeight->sample(in[0].v[0], in[0].v[1]));
                              },
                              V);
-    height.weatherMaps = {"terrainHeight"};
+    height.weatherMaps.push_back("terrainHeight");
     ops.push_back(std::move(height));
   }
   ops.push_back(weatherOp("weather_terrain_slope", "eq. 3.12: slope from the height map shifted by 0.05",
@@ -193,7 +198,7 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                                "wg_exposure_from_map({position}, {@sampleFn}(sampler2D(wg_sky_exposure_map, "
                                "wg_sky_exposure_sampler), wg_sky_exposure_uv({position}){@lodArg}).r)",
                                [](const Value*, const EvalContext& c) { return Value::scalar(c.surface->skyExposure); }, V);
-    exposure.weatherMaps = {"skyExposure"};
+    exposure.weatherMaps.push_back("skyExposure");
     ops.push_back(std::move(exposure));
   }
 
@@ -215,56 +220,73 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                  },
                  V});
 
+  // The shared noise texture (nodes/weather_noise.hpp): one lookup at a point serves
+  // every effect's eq. 3.14 transition (and eq. 3.10's displacement noise) and the puddles.
+  ops.push_back({"weather_noise", "weather",
+                 "the shared weather noise texture at a world point: eq. 3.14's transition noise (r), eq. 3.6's flow (g), "
+                 "the eq. 3.18 ripple (b), puddle shapes (a)",
+                 {vec3Required("position")}, ValueRule::Fixed, ValueType::Vec4, "wg_weather_noise_at({position})", "",
+                 {{"out", ""}, {"transition", ".x"}, {"flow", ".y"}, {"ripple", ".z"}, {"puddle", ".w"}},
+                 [](const Value* in, const EvalContext&) {
+                   glm::vec4 n = noiseAt(v3(in[0]));
+                   return Value::vec4(n.x, n.y, n.z, n.w);
+                 },
+                 V, {&kWeatherNoiseLibrary}, {"weatherNoise"}});
+
   // Effect ops: each early-outs while its level is 0.
   ops.push_back(weatherOp("weather_snow_coverage", "snow cover: eq. 3.1 prediction, eq. 3.14 noisy edges, detail mask",
                           {vec3Required("normal"), vec3Required("detailNormal"), vec3Required("position"), vec3Required("diffuse"),
                            floatPort("terrain", 0.f), floatPort("exposure", 1.f, 0.f, 1.f), vec4Port("weights", kDefaultShape.weights),
-                           vec4Port("shape", kDefaultShapeVector), vec4Port("terms", kDefaultShape.terms)},
+                           vec4Port("shape", kDefaultShapeVector), vec4Port("terms", kDefaultShape.terms), floatRequired("noise")},
                           F,
                           "wg_snow_coverage({normal}, {detailNormal}, {position}, {diffuse}, {terrain}, {exposure}, {weights}, "
-                          "{shape}, {terms})",
+                          "{shape}, {terms}, {noise})",
                           [](const Value* in, const EvalContext& c) {
                             return Value::scalar(snowCoverage(*c.frame, v3(in[0]), v3(in[1]), v3(in[2]), v3(in[3]), in[4].x(),
-                                                              in[5].x(), shapeFrom(in[6], in[7], &in[8])));
+                                                              in[5].x(), shapeFrom(in[6], in[7], &in[8]), in[9].x()));
                           },
                           V));
   ops.push_back(weatherOp("weather_snow_offset", "snow displacement along the normal (eq. 3.10), vertex stage",
                           {vec3Required("normal"), vec3Required("position"), floatPort("exposure", 1.f, 0.f, 1.f),
                            vec4Port("weights", kDefaultShape.weights), vec4Port("shape", kDefaultShapeVector),
-                           vec4Port("terms", kDefaultShape.terms), floatPort("maxSnowHeight", 0.25f, 0.f, 10.f)},
-                          V3, "wg_snow_offset({normal}, {position}, {exposure}, {weights}, {shape}, {terms}, {maxSnowHeight})",
+                           vec4Port("terms", kDefaultShape.terms), floatPort("maxSnowHeight", 0.25f, 0.f, 10.f),
+                           floatRequired("noise")},
+                          V3,
+                          "wg_snow_offset({normal}, {position}, {exposure}, {weights}, {shape}, {terms}, {maxSnowHeight}, {noise})",
                           [](const Value* in, const EvalContext& c) {
                             return out3(snowOffset(*c.frame, v3(in[0]), v3(in[1]), in[2].x(), shapeFrom(in[3], in[4], &in[5]),
-                                                   in[6].x()));
+                                                   in[6].x(), in[7].x()));
                           },
                           V));
   ops.push_back(weatherOp("weather_moss_coverage", "moss: least sun (eq. 3.5), low ground (eq. 3.9), noisy edges (eq. 3.14)",
                           {vec3Required("normal"), vec3Required("position"), vec3Required("diffuse"),
-                           vec4Port("weights", kDefaultShape.weights), vec4Port("shape", kDefaultShapeVector)},
-                          F, "wg_moss_coverage({normal}, {position}, {diffuse}, {weights}, {shape})",
+                           vec4Port("weights", kDefaultShape.weights), vec4Port("shape", kDefaultShapeVector),
+                           floatRequired("noise")},
+                          F, "wg_moss_coverage({normal}, {position}, {diffuse}, {weights}, {shape}, {noise})",
                           [](const Value* in, const EvalContext& c) {
-                            return Value::scalar(mossCoverage(*c.frame, v3(in[0]), v3(in[1]), v3(in[2]), shapeFrom(in[3], in[4], nullptr)));
+                            return Value::scalar(mossCoverage(*c.frame, v3(in[0]), v3(in[1]), v3(in[2]),
+                                                              shapeFrom(in[3], in[4], nullptr), in[5].x()));
                           },
                           V));
-  ops.push_back(weatherOp("weather_puddle_coverage", "puddles on flat ground (section 5.1.2)",
-                          {vec3Required("normal"), vec3Required("position"), floatPort("exposure", 1.f, 0.f, 1.f)}, F,
-                          "wg_puddle_coverage({normal}, {position}, {exposure})", [](const Value* in, const EvalContext& c) {
-                            return Value::scalar(puddleCoverage(*c.frame, v3(in[0]), v3(in[1]), in[2].x()));
+  ops.push_back(weatherOp("weather_puddle_coverage", "puddles on flat ground (section 5.1.2), shaped by the puddle noise",
+                          {vec3Required("normal"), floatRequired("noise"), floatPort("exposure", 1.f, 0.f, 1.f)}, F,
+                          "wg_puddle_coverage({normal}, {noise}, {exposure})", [](const Value* in, const EvalContext& c) {
+                            return Value::scalar(puddleCoverage(*c.frame, v3(in[0]), in[1].x(), in[2].x()));
                           },
                           V));
   ops.push_back(weatherOp("weather_frost_coverage", "water freezing from the banks (eq. 3.20), noisy edges (eq. 3.14)",
-                          {floatRequired("frostMap"), vec3Required("position")}, F, "wg_frost_coverage({frostMap}, {position})",
+                          {floatRequired("frostMap"), floatRequired("noise")}, F, "wg_frost_coverage({frostMap}, {noise})",
                           [](const Value* in, const EvalContext& c) {
-                            return Value::scalar(frostCoverage(*c.frame, in[0].x(), v3(in[1])));
+                            return Value::scalar(frostCoverage(*c.frame, in[0].x(), in[1].x()));
                           },
                           V));
   ops.push_back(weatherOp("weather_puddle_ice", "how frozen standing water is: liquid only above 0 C, kept by the frost level",
                           {}, F, "wg_puddle_ice()",
                           [](const Value*, const EvalContext& c) { return Value::scalar(puddleIce(*c.frame)); }, V));
   ops.push_back(weatherOp("weather_hoarfrost_coverage", "frost crystals on exposed ground (eq. 3.14 edges)",
-                          {vec3Required("position"), floatPort("exposure", 1.f, 0.f, 1.f)}, F,
-                          "wg_hoarfrost_coverage({position}, {exposure})", [](const Value* in, const EvalContext& c) {
-                            return Value::scalar(hoarfrostCoverage(*c.frame, v3(in[0]), in[1].x()));
+                          {floatRequired("noise"), floatPort("exposure", 1.f, 0.f, 1.f)}, F,
+                          "wg_hoarfrost_coverage({noise}, {exposure})", [](const Value* in, const EvalContext& c) {
+                            return Value::scalar(hoarfrostCoverage(*c.frame, in[0].x(), in[1].x()));
                           },
                           V));
 }

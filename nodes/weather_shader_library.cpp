@@ -4,7 +4,7 @@
 #include "nodes/weather_shader_library.hpp"
 
 #include "nodes/core_library.hpp"
-#include "nodes/lattice_noise.hpp"
+#include "nodes/weather_noise.hpp"
 
 namespace wg {
 
@@ -31,15 +31,16 @@ float wg_sun_facing(vec3 n, vec3 towardsSun, float melt) {
 float wg_sun_shade(vec3 n, vec3 towardsSun, float melt) {
   return wg_clamp01(0.5 - 0.5 * wg_clamp01(melt) * dot(n, towardsSun));
 }
-// Eq. 3.6: two panning phases of the flow noise.
+// Eq. 3.6: two panning phases of the flow map (the noise texture's g), panned at d * t
+// flow cells (8 per tile) per second.
 float wg_wind_flow(vec2 xz, vec2 d, float t) {
-  vec2 p = xz * 0.25;
-  return wg_value_noise(p + vec2(d.x, d.y) * t) + 0.5 * wg_value_noise(p + vec2(d.y, d.x) * t);
+  vec2 uv = xz * 0.03125;
+  vec2 pan = d * (t * 0.125);
+  return wg_weather_noise(uv + pan).y + 0.5 * wg_weather_noise(uv + pan.yx).y;
 }
-// Eq. 3.7
+// Eq. 3.7: N . (d.x, 0, d.y) f_wind, with the zero term left out.
 float wg_wind_influence(vec3 n, vec2 xz, vec2 d, float intensity, float t) {
-  vec3 flow = vec3(d.x, 0.0, d.y) * wg_wind_flow(xz, d, t);
-  return wg_clamp01(dot(n, flow) + intensity);
+  return wg_clamp01(dot(n.xz, d) * wg_wind_flow(xz, d, t) + intensity);
 }
 float wg_height(float y, float lo, float hi) { return wg_clamp01((y - lo) / max(hi - lo, 1e-3)); }  // eq. 3.8
 float wg_height_inverted(float y, float lo, float hi) { return 1.0 - wg_height(y, lo, hi); }  // eq. 3.9
@@ -68,13 +69,12 @@ vec3 wg_wet_diffuse(vec3 d, float p) { return d * wg_lerp(1.0, 0.7, p); }  // eq
 float wg_wet_roughness(float r, float p) { return wg_clamp01(r - p); }  // eq. 3.17
 // Eq. 3.18: a panning ripple added to the tangent-space normal while it rains.
 vec3 wg_wet_normal(vec3 n, vec2 xz, float p, float precipitation, float t) {
-  float rain = smoothstep(0.0, 0.1, precipitation);
-  if (rain <= 0.0) return n;  // uniform: no rain, no flowing water
-  if (p <= 0.0) return n;
-  vec2 uv = xz * 2.0 + vec2(0.5, 0.01) * p * t;
-  float noise = wg_value_noise(uv);
+  // No rain (rain 0) or a dry point (p 0): no flowing water, the normal as it was.
+  float strength = (p > 0.0 ? 2.0 * 0.25 : 0.0) * smoothstep(0.0, 0.1, precipitation);
+  vec2 uv = xz * 0.03125 + vec2(0.5, 0.01) * (p * t * 0.015625);  // ripple cells: 64 per tile
+  float noise = wg_weather_noise(uv).z;
   vec2 pan = vec2(noise - 0.5, fract(noise * 7.0) - 0.5);
-  return n + vec3(pan * (2.0 * 0.25 * rain), 0.0);
+  return n + vec3(pan * strength, 0.0);
 }
 vec3 wg_desaturate(vec3 c, float p) { return p * dot(vec3(0.3, 0.59, 0.11), c) + (1.0 - p) * c; }  // eq. 3.19
 float wg_detail_mask(vec3 d) { return wg_clamp01(wg_desaturate(d, 1.0).x); }  // eq. 3.19
@@ -96,66 +96,57 @@ float wg_puddle_mask(vec3 n, float noise, float level) {
   float flatness = smoothstep(0.99026807, 0.99756405, dot(n, vec3(0.0, 1.0, 0.0)));
   return flatness * smoothstep(0.45, 0.55, noise + level - 0.5);
 }
-float wg_coverage_noise(vec3 p) { return wg_value_noise(vec2(p.x * 1.5, p.z * 1.5)); }
 // Eq. 3.1 with switches: shape = (minHeight, maxHeight, inclination intensity, unused),
-// terms = (inclination, sun, height, wind) as 0 or 1.
+// terms = (inclination, sun, height, wind), each on above 0.5.
 // A switched-off factor counts as 1, and so does its weight (w1 sun, w3 height).
 float wg_shaped_prediction(vec3 n, vec3 nd, vec3 p, float terrain, vec4 w, vec4 shape, vec4 terms) {
-  w.x = wg_lerp(1.0, w.x, terms.y);
-  w.z = wg_lerp(1.0, w.z, terms.z);
-  float inc = wg_lerp(1.0, wg_inclination(n, nd, shape.z), terms.x);
-  float sun = wg_lerp(1.0, wg_sun_facing(n, frame_sunDirection, frame_sunMelt), terms.y);
-  float h = wg_lerp(1.0, wg_height(p.y, shape.x, shape.y), terms.z);
-  float wind = wg_wind_influence(n, vec2(p.x, p.z), frame_windDirection, frame_windIntensity, frame_time) * terms.w;
+  // Selects, not lerps: the injected terms are constants, so spirv-opt drops what is off.
+  w.x = terms.y > 0.5 ? w.x : 1.0;
+  w.z = terms.z > 0.5 ? w.z : 1.0;
+  float inc = terms.x > 0.5 ? wg_inclination(n, nd, shape.z) : 1.0;
+  float sun = terms.y > 0.5 ? wg_sun_facing(n, frame_sunDirection, frame_sunMelt) : 1.0;
+  float h = terms.z > 0.5 ? wg_height(p.y, shape.x, shape.y) : 1.0;
+  float wind = terms.w > 0.5 ? wg_wind_influence(n, vec2(p.x, p.z), frame_windDirection, frame_windIntensity, frame_time) : 0.0;
   return wg_prediction(inc, sun, h, terrain, wind, w);
 }
-// Each effect returns at once while its level is 0: one uniform branch.
+// No effect branches on its level: at level 0 its transition (eq. 3.14) of a noise of at
+// most 1 is exactly 0, and the weather's one uniform branch skips the lot while every
+// level is 0.
+// `noise` is the shared transition noise (eq. 3.14's NoiseMap, wg_weather_noise_at(p).x).
 float wg_snow_coverage(vec3 n, vec3 nd, vec3 p, vec3 diffuse, float terrain, float exposure, vec4 w, vec4 shape,
-                       vec4 terms) {
-  if (frame_snowLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
+                       vec4 terms, float noise) {
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
-  if (level <= 0.0) return 0.0;
   float fp = wg_shaped_prediction(n, nd, p, terrain, w, shape, terms);
-  float noise = 0.5 * wg_coverage_noise(p) + 0.5 * (1.0 - wg_detail_mask(diffuse));
-  return wg_transition(noise, fp * level);
+  return wg_transition(0.5 * noise + 0.5 * (1.0 - wg_detail_mask(diffuse)), fp * level);
 }
-vec3 wg_snow_offset(vec3 n, vec3 p, float exposure, vec4 w, vec4 shape, vec4 terms, float maxSnowHeight) {
-  if (frame_snowLevel <= 0.0) return vec3(0.0);  // uniform: the whole effect is skipped
+vec3 wg_snow_offset(vec3 n, vec3 p, float exposure, vec4 w, vec4 shape, vec4 terms, float maxSnowHeight, float noise) {
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
-  if (level <= 0.0) return vec3(0.0);
   float fp = wg_shaped_prediction(n, n, p, 0.0, w, shape, terms);
-  return wg_snow_displacement(wg_coverage_noise(p), fp * level, maxSnowHeight, n);
+  return wg_snow_displacement(noise, fp * level, maxSnowHeight, n);
 }
-float wg_moss_coverage(vec3 n, vec3 p, vec3 diffuse, vec4 w, vec4 shape) {
+float wg_moss_coverage(vec3 n, vec3 p, vec3 diffuse, vec4 w, vec4 shape, float noise) {
   float level = wg_clamp01(frame_mossLevel);
-  if (level <= 0.0) return 0.0;
   float shade = wg_sun_shade(n, frame_sunDirection, frame_sunMelt);
   float low = wg_height_inverted(p.y, shape.x, shape.y);
   float facing = wg_clamp01(1.0 + 2.0 * dot(n, vec3(0.0, 1.0, 0.0)));  // not on overhangs
   float predicted = wg_clamp01(w.x * shade * w.z * low) * facing;
-  float noise = 0.5 * wg_coverage_noise(p + vec3(17.3, 0.0, 9.1)) + 0.5 * (1.0 - wg_detail_mask(diffuse));
-  return wg_transition(noise, predicted * level);
+  return wg_transition(0.5 * noise + 0.5 * (1.0 - wg_detail_mask(diffuse)), predicted * level);
 }
-float wg_puddle_coverage(vec3 n, vec3 p, float exposure) {
-  if (frame_puddleLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
+float wg_puddle_coverage(vec3 n, float noise, float exposure) {
   float level = wg_clamp01(frame_puddleLevel) * wg_clamp01(exposure);
-  if (level <= 0.0) return 0.0;
-  return wg_puddle_mask(n, wg_value_noise(vec2(p.x * 0.35, p.z * 0.35)), level);
+  return (level > 0.0 ? 1.0 : 0.0) * wg_puddle_mask(n, noise, level);  // the mask alone is not 0 at level 0
 }
 // Standing water is liquid only above 0 C; the frost level keeps it frozen while it thaws.
 float wg_puddle_ice() {
   return max(wg_clamp01(frame_frostLevel), 1.0 - smoothstep(0.0, 1.0, frame_temperature));
 }
 // Eq. 3.20 with eq. 3.14's noisy edges.
-float wg_frost_coverage(float frostMap, vec3 p) {
-  if (frame_frostLevel <= 0.0) return 0.0;
-  return wg_transition(wg_coverage_noise(p), wg_frost_mask(frostMap, frame_frostLevel));
+float wg_frost_coverage(float frostMap, float noise) {
+  return wg_transition(noise, wg_frost_mask(frostMap, frame_frostLevel));
 }
-float wg_hoarfrost_coverage(vec3 p, float exposure) {
-  if (frame_frostLevel <= 0.0) return 0.0;  // uniform: the whole effect is skipped
+float wg_hoarfrost_coverage(float noise, float exposure) {
   float level = wg_clamp01(frame_frostLevel) * wg_clamp01(exposure);
-  if (level <= 0.0) return 0.0;
-  return wg_transition(wg_coverage_noise(p), level);
+  return wg_transition(noise, level);
 }
 // Tangent-space normal to world space; the fragment stage's frame is already orthonormal.
 vec3 wg_tangent_to_world(vec3 n, vec3 normal, vec4 tangent) {
@@ -169,12 +160,14 @@ vec3 wg_tangent_to_world(vec3 n, vec3 normal, vec4 tangent) {
 vec2 wg_sky_exposure_uv(vec3 p) { return (vec2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw; }
 float wg_exposure_from_map(vec3 p, float occluderHeight) {
   vec2 uv = wg_sky_exposure_uv(p);
-  bool inside = frame_skyExposureRegion.z > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
-  return inside ? 1.0 - smoothstep(p.y + 0.1, p.y + 0.5, occluderHeight) : 1.0;
+  // Inside: uv is its own clamp to [0, 1] (no short-circuit branches).
+  bool inside = all(bvec3(frame_skyExposureRegion.z > 0.0, equal(uv, clamp(uv, 0.0, 1.0))));
+  float exposed = 1.0 - smoothstep(p.y + 0.1, p.y + 0.5, occluderHeight);
+  return inside ? exposed : 1.0;  // a select of two values, not a branch
 }
 // Eq. 3.11: world position to height-map coordinates.
 vec2 wg_terrain_coord(vec3 p) { return (vec2(p.x, p.z) - frame_terrainRegion.xy) * frame_terrainRegion.zw; }
 )WG",
-    {&kCoreLibrary, &kLatticeNoiseLibrary}};
+    {&kCoreLibrary, &weather::kWeatherNoiseLibrary}};
 
 }  // namespace wg

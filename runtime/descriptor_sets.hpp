@@ -49,8 +49,9 @@ struct DescriptorWriter {
 // The images a pass binds for the shared maps.
 struct SharedMaps {
   VkImageView terrainHeight, skyExposure, sunShadow, snowDeformation;
+  VkImageView weatherNoise;   // the shared noise texture (nodes/weather_noise.hpp)
   VkSampler linear, nearest;  // depth formats need not be filterable; PCF filters
-  VkSampler repeat;           // the toroidal snow deformation map
+  VkSampler repeat;           // the toroidal snow deformation map and the tiling noise
   // The materials' textures read at level 0 only (AOVs: as the CPU evaluator reads
   // them), not through their mip chains.
   bool baseLevelTextures = false;

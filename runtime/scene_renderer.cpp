@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "compiler/material_input_files.hpp"
+#include "nodes/weather_noise.hpp"
 #include "runtime/descriptor_sets.hpp"
 #include "runtime/draw_order.hpp"
 #include "runtime/frame_recording.hpp"
@@ -78,6 +79,10 @@ SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string g
                                         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   placeholderDeformation_.upload(ctx_, undeformed, sizeof undeformed);
   linearRepeat_ = createSampler(ctx_, "repeat", "linear");
+  const Image& noise = weather::noiseImage();  // the weather's noise texture, sampled with linearRepeat_
+  weatherNoise_ = vk::Image2D(ctx_, static_cast<std::uint32_t>(noise.width), static_cast<std::uint32_t>(noise.height),
+                              VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  weatherNoise_.upload(ctx_, noise.rgba.data(), noise.rgba.size());
   shadowMap_ = vk::Image2D(ctx_, kShadowResolution, kShadowResolution, vk::kDepthFormat,
                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
   uploadTerrain();
@@ -252,8 +257,8 @@ void SceneRenderer::allocateDescriptorSets(Frame& frame) {
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       const Pass& pass = frame.passes[p];
       SharedMaps maps{terrainHeight_.view(), pass.exposureView, pass.shadowView,
-                      (snowDeformation_ ? *snowDeformation_ : placeholderDeformation_).view(), linearClamp_.get(),
-                      nearestClamp_.get(), linearRepeat_.get()};
+                      (snowDeformation_ ? *snowDeformation_ : placeholderDeformation_).view(), weatherNoise_.view(),
+                      linearClamp_.get(), nearestClamp_.get(), linearRepeat_.get()};
       maps.baseLevelTextures = frame.request.debugView != 0;  // AOVs read textures as the CPU evaluator does
       MaterialResources& m = *frame.materials[i];
       frame.sets[frame.slot(p, i)] = allocateMaterialSets(ctx_.device(), frame.pool.get(), m, pipelineOf(m, frame.request),

@@ -132,6 +132,7 @@ class SceneRenderer {
   std::map<std::string, std::unique_ptr<MaterialResources>> materials_;  // by graph + preset
   std::vector<std::unique_ptr<Object>> objects_;
   vk::Image2D terrainHeight_, exposureMap_, shadowMap_, placeholderHeight_, placeholderShadow_, placeholderDeformation_;
+  vk::Image2D weatherNoise_;  // the weather's shared noise texture, uploaded once
   const vk::Image2D* snowDeformation_ = nullptr;
   vk::UniqueSampler linearClamp_;
   vk::UniqueSampler linearRepeat_;  // the toroidal snow deformation map

@@ -43,7 +43,7 @@ std::vector<float> SceneRenderer::drawSkyOccluders(const glm::mat4& topDown) {
   meshes.reserve(drawn.size());  // draws point into it
   auto pool = createMaterialDescriptorPool(ctx_.device(), static_cast<std::uint32_t>(2 * drawn.size() + 2), 64, 512);
   SharedMaps maps{terrainHeight_.view(), placeholderHeight_.view(), placeholderShadow_.view(), placeholderDeformation_.view(),
-                  linearClamp_.get(), nearestClamp_.get(), linearRepeat_.get()};
+                  weatherNoise_.view(), linearClamp_.get(), nearestClamp_.get(), linearRepeat_.get()};
   DescriptorWriter writer;
   std::vector<ObjectDraw> draws;
   for (std::size_t k = 0; k < drawn.size(); ++k) {

@@ -4,6 +4,7 @@
 // preset "none" the pass does nothing, so the shader is exactly the unweathered one.
 #include <algorithm>
 #include <iterator>
+#include <optional>
 
 #include "compiler/ir_node_builder.hpp"
 #include "compiler/pass_pipeline.hpp"
@@ -118,6 +119,14 @@ class WeatherInjector {
       tangentNormal_ = lerp(tangentNormal_, flatNormal(), b_.add("multiply", {{"a", coverage}, {"b", k(normalFlattening)}}));
   }
 
+  // The shared noise lookup at the point (nodes/weather_noise.hpp), made once: snow,
+  // moss, ice and hoarfrost read its transition channel (eq. 3.14 shares one NoiseMap),
+  // puddles its puddle channel.
+  Operand noise(std::string_view channel) {
+    if (!noise_) noise_ = b_.add("weather_noise", {{"position", position_}});
+    return b_.output(*noise_, channel);
+  }
+
   Operand terrainTerm() {
     // Eq. 3.11-3.13: slope of the shared height map under the object.
     Operand uv = b_.add("terrain_coord", {{"position", position_}});
@@ -137,13 +146,13 @@ class WeatherInjector {
     Operand coverage = b_.add("weather_snow_coverage", {{"normal", normal_}, {"detailNormal", detailNormal},
                                                         {"position", position_}, {"diffuse", diffuse_}, {"terrain", terrain},
                                                         {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
-                                                        {"terms", terms_}});
+                                                        {"terms", terms_}, {"noise", noise("transition")}});
     cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), weather::kSnowRoughness, 0.5f, 0.7f);
     g_.coverage(CoverageTerm::Snow) = coverage;
     if (cfg_.effects.displacement) {
       Operand offset = b_.add("weather_snow_offset", {{"normal", normal_}, {"position", position_}, {"exposure", exposure_},
                                                       {"weights", weights_}, {"shape", shape_}, {"terms", terms_},
-                                                      {"maxSnowHeight", paramNodes_[4]}});
+                                                      {"maxSnowHeight", paramNodes_[4]}, {"noise", noise("transition")}});
       g_.output(PbrField::WorldPositionOffset) =
           b_.add("add", {{"a", g_.output(PbrField::WorldPositionOffset)}, {"b", offset}});
     }
@@ -151,7 +160,8 @@ class WeatherInjector {
 
   void addMoss() {
     Operand coverage = b_.add("weather_moss_coverage", {{"normal", normal_}, {"position", position_}, {"diffuse", diffuse_},
-                                                        {"weights", weights_}, {"shape", shape_}});
+                                                        {"weights", weights_}, {"shape", shape_},
+                                                        {"noise", noise("transition")}});
     cover(coverage, b_.add("weather_moss_albedo", {{"diffuse", diffuse_}}), weather::kMossRoughness, 0.5f, 0.f);
     g_.coverage(CoverageTerm::Moss) = coverage;
   }
@@ -177,7 +187,7 @@ class WeatherInjector {
 
   void addPuddles() {
     // Flooded: water's F0 0.02 and a near-mirror surface over a darkened base.
-    Operand coverage = b_.add("weather_puddle_coverage", {{"normal", normal_}, {"position", position_}, {"exposure", exposure_}});
+    Operand coverage = b_.add("weather_puddle_coverage", {{"normal", normal_}, {"noise", noise("puddle")}, {"exposure", exposure_}});
     Operand darkened = b_.add("multiply", {{"a", color_}, {"b", k(kPuddleDarkening)}});
     // Below 0 C the puddle is ice: ice's albedo (Table 4.1), roughness and F0.
     Operand frozen = b_.add("weather_puddle_ice", {});
@@ -189,14 +199,14 @@ class WeatherInjector {
   }
 
   void addIce() {
-    Operand coverage = b_.add("weather_frost_coverage", {{"frostMap", frostMap()}, {"position", position_}});
+    Operand coverage = b_.add("weather_frost_coverage", {{"frostMap", frostMap()}, {"noise", noise("transition")}});
     cover(coverage, b_.add("weather_ice_albedo", {{"diffuse", diffuse_}}), weather::kIceRoughness, weather::kIceSpecular, 1.f);
     g_.coverage(CoverageTerm::Frost) = coverage;
     g_.coverage(CoverageTerm::Ice) = coverage;
   }
 
   void addHoarfrost() {
-    Operand coverage = b_.add("weather_hoarfrost_coverage", {{"position", position_}, {"exposure", exposure_}});
+    Operand coverage = b_.add("weather_hoarfrost_coverage", {{"noise", noise("transition")}, {"exposure", exposure_}});
     Operand partial = b_.add("multiply", {{"a", coverage}, {"b", k(kHoarfrostOpacity)}});
     cover(partial, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), weather::kFrostRoughness, 0.5f, 0.f);
     g_.coverage(CoverageTerm::Frost) = coverage;
@@ -226,6 +236,7 @@ class WeatherInjector {
   std::vector<Operand> paramNodes_;
   Operand position_, normal_, exposure_, diffuse_, color_, roughness_, specular_, metallic_, tangentNormal_;
   Operand weights_, shape_, terms_;
+  std::optional<Operand> noise_;
 };
 
 }  // namespace

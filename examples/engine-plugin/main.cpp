@@ -311,6 +311,16 @@ MaterialPipelines createMaterial(const Gpu& gpu, const weathergen::Result& compi
   for (std::size_t i = 0; i + 1 < compiled.stages.size(); i += 2)
     material.pipelines.push_back(createPipeline(gpu, material.layout, compiled.stages[i], compiled.stages[i + 1], reflection));
 
+  // A weathered material samples the shared noise texture: the engine uploads its texels
+  // once (R8G8B8A8_UNORM, a repeating linear sampler, maxLod 0) and binds it in set 0.
+  for (const json& map : reflection.at("weatherMaps"))
+    if (map.at("name") == "weatherNoise") {
+      weathergen::NoiseTexture noise = weathergen::weatherNoiseTexture();
+      if (noise.width <= 0 || noise.rgba8.size() != std::size_t(noise.width) * std::size_t(noise.height) * 4)
+        throw std::runtime_error("weatherNoiseTexture() returned no texels");
+      std::printf("weatherNoise: %dx%d RGBA8 from weathergen::weatherNoiseTexture()\n", noise.width, noise.height);
+    }
+
   std::printf("%s %s: %zu pipelines;", compiled.name.c_str(), compiled.contentHash.c_str(), material.pipelines.size());
   for (std::size_t s = 0; s < sets.size(); ++s) std::printf(" set %zu: %zu bindings;", s, sets[s].size());
   std::printf(" %zu vertex inputs\n", reflection.at("vertexInputs").size());

@@ -62,6 +62,18 @@ bool initialize();
 // texture paths; json is the graph text. Never throws.
 Result compile(std::string_view fileName, std::string_view json, const Options& options = {}) noexcept;
 
+// The weather's shared noise texture: the "weatherNoise" entry of the reflection's
+// weatherMaps (set 0), which weathered materials sample. RGBA8 texels, row-major, row 0
+// first, width * height * 4 bytes; the same bytes on every call and every machine.
+// Upload it once as VK_FORMAT_R8G8B8A8_UNORM with one mip level and bind it with a
+// sampler that repeats (REPEAT on u and v), filters linearly and has maxLod 0, as the
+// CPU evaluator reads it (docs/engine-api.md). Never throws; empty if out of memory.
+struct NoiseTexture {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba8;
+};
+NoiseTexture weatherNoiseTexture() noexcept;
+
 // weathergen's version, e.g. "0.1.0".
 std::string version();
 

@@ -12,6 +12,7 @@
 
 #include "nodes/lattice_noise.hpp"
 #include "nodes/weather_model.hpp"
+#include "nodes/weather_noise.hpp"
 #include "runtime/scene/probe_visibility.hpp"
 #include "runtime/scene/shapes.hpp"
 
@@ -221,8 +222,10 @@ glm::vec2 wettestSpot(const RoadLayout& road, float alongFrom, float alongTo, fl
         FrameState frame;
         frame.puddleLevel = kProbePuddleLevelStep * static_cast<float>(k);
         float covered = 1.f;
-        for (glm::vec2 o : around)
-          covered = std::min(covered, weather::puddleCoverage(frame, kUp, road.surfacePoint(s + o.x, t + o.y), 1.f));
+        for (glm::vec2 o : around) {
+          float noise = weather::noiseAt(road.surfacePoint(s + o.x, t + o.y)).w;  // the puddle channel
+          covered = std::min(covered, weather::puddleCoverage(frame, kUp, noise, 1.f));
+        }
         score += covered;
       }
       if (score > bestScore) bestScore = score, best = {s, t};

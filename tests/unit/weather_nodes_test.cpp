@@ -2,12 +2,9 @@
 // values computed by hand from the equations, called through the op registry the way
 // constant folding and the CPU evaluator call them. The arithmetic is in the comments.
 //
-// Noise: value noise at a lattice point is that cell's hash, toUnit(h) = (h >> 8) / 2^24,
-// and latticeHash(0, 0) = 0, so most cases sit at world xz = (0, 0) where every noise
-// lookup is exactly 0. The few other lattice cells used:
-//   latticeHash(1, 2) = 3724694931 -> 0.8672231
-//   latticeHash(4, 0) = 2788059268 -> 0.6491456
-//   latticeHash(0, 4) = 3745327908 -> 0.8720271
+// Noise: the coverage ops take the shared noise lookup as an input, so most cases pass
+// noise 0; wind and the ripple read the noise texture themselves, and their cases read
+// the same texels through weather::sampleNoise (nodes/weather_noise.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,9 +17,9 @@
 
 #include "backends/shader_syntax.hpp"
 #include "nodes/height_field.hpp"
-#include "nodes/lattice_noise.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/texture_image.hpp"
+#include "nodes/weather_noise.hpp"
 #include "nodes/weather_shader_library.hpp"
 
 namespace wg {
@@ -51,8 +48,6 @@ void expectValue(const Value& actual, const Value& expected, float tolerance = 1
   for (int i = 0; i < expected.width(); ++i) EXPECT_NEAR(actual.v[i], expected.v[i], tolerance) << "component " << i;
 }
 
-float unitHash(int x, int y) { return static_cast<float>(latticeHash(x, y) >> 8) / 16777216.0f; }
-
 Value s(float x) { return Value::scalar(x); }
 Value v2(float x, float y) { return Value::vec2(x, y); }
 Value v3(float x, float y, float z) { return Value::vec3(x, y, z); }
@@ -75,7 +70,7 @@ TEST(WeatherNodes, EveryWeatherOpIsRegistered) {
         "weather_wet_normal", "weather_detail_mask", "weather_snow_albedo", "weather_moss_albedo", "weather_ice_albedo",
         "weather_frost_mask", "weather_puddle_mask", "tangent_to_world", "sky_exposure", "weather_levels",
         "weather_conditions", "weather_snow_coverage", "weather_snow_offset", "weather_moss_coverage",
-        "weather_puddle_coverage", "weather_frost_coverage", "weather_hoarfrost_coverage"}) {
+        "weather_puddle_coverage", "weather_frost_coverage", "weather_hoarfrost_coverage", "weather_noise"}) {
     const OpDef* op = findOp(name);
     ASSERT_NE(op, nullptr) << name;
     EXPECT_NE(op->eval, nullptr) << name;
@@ -130,35 +125,34 @@ TEST(WeatherNodes, SunFacing) {
   expectValue(eval("weather_sun", {v3(0.8660254f, 0.5f, 0)}, env), s(1));
 }
 
-// Eq. 3.6-3.7: f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x), f_pan(h, v) =
-// noise(0.25 * xz + (h, v) * time); f_w = Clamp(N . (d.x, 0, d.y) * f_wind + windIntensity).
+// Eq. 3.6-3.7: f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x), f_pan(h, v) = the noise
+// texture's flow channel (g) at xz / 32 + (h, v) * time / 8 (8 flow cells per 32 m tile);
+// f_w = Clamp(N . (d.x, 0, d.y) * f_wind + windIntensity).
 TEST(WeatherNodes, Wind) {
+  using weather::sampleNoise;
   Env env;
   env.frame.windDirection = {1, 0};  // blowing towards +x
   env.frame.windIntensity = 0.2f;
   env.frame.time = 0;
-  // At xz = (4, 8) the flow noise is read at (1, 2), a lattice point, for both phases:
-  // f_wind = 0.8672231 + 0.5 * 0.8672231 = 1.3008346.
-  const float flow = 1.5f * unitHash(1, 2);
-  EXPECT_NEAR(flow, 1.3008346f, 1e-6f);
-  // Leeward-tilted normal (0.6, 0.8, 0): 0.6 * 1.3008346 + 0.2 = 0.9805008.
-  expectValue(eval("weather_wind", {v3(0.6f, 0.8f, 0), v3(4, 0, 8)}, env), s(0.9805008f));
-  // Windward (-0.6, 0.8, 0): -0.7805008 + 0.2 < 0 -> 0; with intensity 1: 0.2194992.
-  expectValue(eval("weather_wind", {v3(-0.6f, 0.8f, 0), v3(4, 0, 8)}, env), s(0));
+  // At xz = (4, 8) and time 0 both phases read tile coordinates (0.125, 0.25).
+  const float flow = 1.5f * sampleNoise({0.125f, 0.25f}).y;
+  ASSERT_GT(flow, 0.f);
+  // Leeward-tilted normal (0.6, 0.8, 0): 0.6 * flow + 0.2.
+  expectValue(eval("weather_wind", {v3(0.6f, 0.8f, 0), v3(4, 0, 8)}, env), s(std::clamp(0.6f * flow + 0.2f, 0.f, 1.f)));
+  // Windward (-0.6, 0.8, 0): -0.6 flow + intensity.
   env.frame.windIntensity = 1.f;
-  expectValue(eval("weather_wind", {v3(-0.6f, 0.8f, 0), v3(4, 0, 8)}, env), s(0.2194992f));
+  expectValue(eval("weather_wind", {v3(-0.6f, 0.8f, 0), v3(4, 0, 8)}, env), s(std::clamp(1.f - 0.6f * flow, 0.f, 1.f)));
   // Up-facing: N . (1, 0, 0) = 0 -> Clamp(windIntensity) = 1.
   expectValue(eval("weather_wind", {kUp, v3(4, 0, 8)}, env), s(1));
-  // Panning: at xz = (0, 0), time 4, the phases read (4, 0) and (0, 4):
-  // f_wind = 0.6491456 + 0.5 * 0.8720271 = 1.0851592; (0.6, 0.8, 0), intensity 0: 0.6510955.
+  // Panning: at xz = (0, 0), time 4, the phases read (4, 0) / 8 = (0.5, 0) and (0, 0.5).
   env.frame.windIntensity = 0.f;
   env.frame.time = 4.f;
-  EXPECT_NEAR(unitHash(4, 0) + 0.5f * unitHash(0, 4), 1.0851592f, 1e-6f);
-  expectValue(eval("weather_wind", {v3(0.6f, 0.8f, 0), kOrigin}, env), s(0.6510955f));
-  // Wind towards +z acts on z-facing sides; the phases now read (0, 4) and (4, 0):
-  // f_wind = 0.8720271 + 0.5 * 0.6491456 = 1.1965999; (0, 0.8, 0.6): 0.6 * 1.1965999 = 0.7179599.
+  const float panned = sampleNoise({0.5f, 0.f}).y + 0.5f * sampleNoise({0.f, 0.5f}).y;
+  expectValue(eval("weather_wind", {v3(0.6f, 0.8f, 0), kOrigin}, env), s(std::clamp(0.6f * panned, 0.f, 1.f)));
+  // Wind towards +z acts on z-facing sides; the phases swap.
   env.frame.windDirection = {0, 1};
-  expectValue(eval("weather_wind", {v3(0, 0.8f, 0.6f), kOrigin}, env), s(0.7179599f));
+  const float swapped = sampleNoise({0.f, 0.5f}).y + 0.5f * sampleNoise({0.5f, 0.f}).y;
+  expectValue(eval("weather_wind", {v3(0, 0.8f, 0.6f), kOrigin}, env), s(std::clamp(0.6f * swapped, 0.f, 1.f)));
 }
 
 // Eq. 3.8-3.9: Clamp((y - min) / (max - min)) and 1 - that.
@@ -278,9 +272,10 @@ TEST(WeatherNodes, WetDiffuseAndRoughness) {
   expectValue(eval("weather_wet_roughness", {s(0.2f), s(0.5f)}), s(0));     // -0.3 -> 0
 }
 
-// Eq. 3.18 as read: N + pan * 2 * 0.25 * rain with one value-noise lookup n at
-// 2 * xz + (0.5, 0.01) * p * time giving both slopes, pan = (n - 0.5, fract(7 n) - 0.5),
-// and rain = smoothstep(0, 0.1, precipitation).
+// Eq. 3.18 as read: N + pan * 2 * 0.25 * rain with one lookup n of the noise texture's
+// ripple channel (b) at xz / 32 + (0.5, 0.01) * p * time / 64 (64 ripple cells per tile)
+// giving both slopes, pan = (n - 0.5, fract(7 n) - 0.5), and rain = smoothstep(0, 0.1,
+// precipitation).
 TEST(WeatherNodes, WetNormal) {
   Env env;
   const Value flat = v3(0, 0, 1);
@@ -291,14 +286,15 @@ TEST(WeatherNodes, WetNormal) {
   env.frame.precipitation = 1;
   expectValue(eval("weather_wet_normal", {flat, kOrigin, s(0)}, env), flat);
   // Precipitation 0.05 -> rain = smoothstep(0, 0.1, 0.05) = 0.5; scale 2 * 0.25 * 0.5 = 0.25.
-  // At xz = 0, time 0: n = noise(0, 0) = 0, pan = (-0.5, fract(0) - 0.5) = (-0.5, -0.5)
-  // -> (0, 0, 1) + (-0.125, -0.125, 0).
+  // At xz = 0, time 0 the lookup is at (0, 0).
   env.frame.precipitation = 0.05f;
-  expectValue(eval("weather_wet_normal", {flat, kOrigin, s(1)}, env), v3(-0.125f, -0.125f, 1));
-  // Full rain (scale 0.5), p = 0.5, time 4: uv = (0.5 * 0.5 * 4, 0.01 * 0.5 * 4) = (1, 0.02).
+  const float n0 = weather::sampleNoise({0.f, 0.f}).z;
+  expectValue(eval("weather_wet_normal", {flat, kOrigin, s(1)}, env),
+              v3(0.25f * (n0 - 0.5f), 0.25f * (7 * n0 - std::floor(7 * n0) - 0.5f), 1), 1e-4f);
+  // Full rain (scale 0.5), p = 0.5, time 4: uv = (0.5, 0.01) * 0.5 * 4 / 64 = (0.015625, 0.0003125).
   env.frame.precipitation = 1;
   env.frame.time = 4;
-  float n = valueNoise(1.f, 0.02f);
+  float n = weather::sampleNoise({0.015625f, 0.0003125f}).z;
   float px = n - 0.5f, py = (7 * n - std::floor(7 * n)) - 0.5f;
   expectValue(eval("weather_wet_normal", {v3(0.1f, 0.2f, 0.9f), kOrigin, s(0.5f)}, env),
               v3(0.1f + px * 0.5f, 0.2f + py * 0.5f, 0.9f), 1e-4f);
@@ -416,13 +412,15 @@ TEST(WeatherNodes, SkyExposureLevelsAndConditions) {
               s(0.7f));
 }
 
-// Snow: transition(0.5 noise(1.5 xz) + 0.5 (1 - detailMask), f_p * snowLevel * exposure).
-// At xz = 0 the noise is 0, so the transition noise is 0.5 * (1 - 0.408) = 0.296.
+// Snow: transition(0.5 noise + 0.5 (1 - detailMask), f_p * snowLevel * exposure), noise the
+// shared lookup's transition channel, an input. With noise 0 the transition noise is
+// 0.5 * (1 - 0.408) = 0.296.
 TEST(WeatherNodes, SnowCoverage) {
   Env env;
   auto coverage = [&](const Value& n, const Value& nd, float exposure, const Value& terms = kAllTerms,
                       const Value& position = kOrigin, float terrain = 0) {
-    return eval("weather_snow_coverage", {n, nd, position, kDiffuse, s(terrain), s(exposure), kWeights, kShape, terms}, env);
+    return eval("weather_snow_coverage", {n, nd, position, kDiffuse, s(terrain), s(exposure), kWeights, kShape, terms, s(0)},
+                env);
   };
   // Level 0: the early-out, however favourable everything else is.
   env.frame.snowLevel = 0;
@@ -463,7 +461,7 @@ TEST(WeatherNodes, SnowCoverage) {
 TEST(WeatherNodes, SnowOffset) {
   Env env;
   auto offset = [&](const Value& n, float exposure, float maxSnowHeight) {
-    return eval("weather_snow_offset", {n, kOrigin, s(exposure), kWeights, kShape, kAllTerms, s(maxSnowHeight)}, env);
+    return eval("weather_snow_offset", {n, kOrigin, s(exposure), kWeights, kShape, kAllTerms, s(maxSnowHeight), s(0)}, env);
   };
   env.frame.snowLevel = 0;
   expectValue(offset(kUp, 1, 0.25f), v3(0, 0, 0));
@@ -477,13 +475,14 @@ TEST(WeatherNodes, SnowOffset) {
 }
 
 // Moss: transition(0.5 noise + 0.5 (1 - detailMask), Clamp(w1 shade w3 (1 - height)) *
-// Clamp(1 + 2 N.up) * mossLevel), shade = Clamp(0.5 - 0.5 sunMelt N.L) (eq. 3.5 for moss). The moss noise reads position + (17.3, 0, 9.1), so at
-// xz = (-17.3, -9.1) it is noise(0, 0) = 0 and the transition noise is again 0.296.
+// Clamp(1 + 2 N.up) * mossLevel), shade = Clamp(0.5 - 0.5 sunMelt N.L) (eq. 3.5 for moss).
+// The noise is the same shared transition noise as snow's (eq. 3.14); with noise 0 the
+// transition noise is again 0.296.
 TEST(WeatherNodes, MossCoverage) {
   Env env;
   const Value at = v3(-17.3f, 0, -9.1f);
   auto coverage = [&](const Value& n, const Value& position) {
-    return eval("weather_moss_coverage", {n, position, kDiffuse, kWeights, kShape}, env);
+    return eval("weather_moss_coverage", {n, position, kDiffuse, kWeights, kShape, s(0)}, env);
   };
   env.frame.mossLevel = 0;
   expectValue(coverage(kUp, at), s(0));
@@ -515,45 +514,41 @@ TEST(WeatherNodes, MossCoverage) {
   expectValue(coverage(v3(-1, 0, 0), at), s(0.796f));
 }
 
-// Puddles: puddleMask(N, noise(0.35 xz), puddleLevel * exposure); noise(0, 0) = 0.
+// Puddles: puddleMask(N, noise, puddleLevel * exposure), noise the shared lookup's puddle
+// channel, an input.
 TEST(WeatherNodes, PuddleCoverage) {
   Env env;
   env.frame.puddleLevel = 0;
-  expectValue(eval("weather_puddle_coverage", {kUp, kOrigin, s(1)}, env), s(0));
+  expectValue(eval("weather_puddle_coverage", {kUp, s(0), s(1)}, env), s(0));
   // Full level on flat ground: smoothstep(0.45, 0.55, 0 + 1 - 0.5) = 0.5.
   env.frame.puddleLevel = 1;
-  expectValue(eval("weather_puddle_coverage", {kUp, kOrigin, s(1)}, env), s(0.5f));
+  expectValue(eval("weather_puddle_coverage", {kUp, s(0), s(1)}, env), s(0.5f));
   // Exposure 0.6 -> level 0.6: 0.1 < 0.45 -> 0. Exposure 0 -> the early-out.
-  expectValue(eval("weather_puddle_coverage", {kUp, kOrigin, s(0.6f)}, env), s(0));
-  expectValue(eval("weather_puddle_coverage", {kUp, kOrigin, s(0)}, env), s(0));
+  expectValue(eval("weather_puddle_coverage", {kUp, s(0), s(0.6f)}, env), s(0));
+  expectValue(eval("weather_puddle_coverage", {kUp, s(0), s(0)}, env), s(0));
   // A 10 degree slope never holds water.
   const float d = 3.14159265f / 180.f;
-  expectValue(eval("weather_puddle_coverage", {v3(std::sin(10 * d), std::cos(10 * d), 0), kOrigin, s(1)}, env), s(0));
-  // Elsewhere the shape follows the noise: at xz = (4, 8) it reads noise(1.4, 2.8).
-  float n = valueNoise(4 * 0.35f, 8 * 0.35f);
-  float x = std::clamp((n + 1 - 0.5f - 0.45f) / 0.1f, 0.f, 1.f);
-  expectValue(eval("weather_puddle_coverage", {kUp, v3(4, 0, 8), s(1)}, env), s(x * x * (3 - 2 * x)));
+  expectValue(eval("weather_puddle_coverage", {v3(std::sin(10 * d), std::cos(10 * d), 0), s(0), s(1)}, env), s(0));
+  // The shape follows the noise: 0.02 + 1 - 0.5 = 0.52 -> smoothstep(0.45, 0.55, 0.52) = 0.784.
+  expectValue(eval("weather_puddle_coverage", {kUp, s(0.02f), s(1)}, env), s(0.784f));
 }
 
-// Ice: the frost mask of eq. 3.20 with frame_frostLevel.
-// Ice: transition(noise(1.5 xz), frostMask(F, frostLevel)) (eq. 3.20 with eq. 3.14's
-// noisy edges); noise(0, 0) = 0.
+// Ice: transition(noise, frostMask(F, frostLevel)) (eq. 3.20 with eq. 3.14's noisy edges),
+// noise the shared transition noise, an input.
 TEST(WeatherNodes, FrostCoverage) {
   Env env;
   env.frame.frostLevel = 0;
-  expectValue(eval("weather_frost_coverage", {s(0), kOrigin}, env), s(0));  // liquid, even at the banks
+  expectValue(eval("weather_frost_coverage", {s(0), s(0)}, env), s(0));  // liquid, even at the banks
   env.frame.frostLevel = 1;
-  expectValue(eval("weather_frost_coverage", {s(0.5f), kOrigin}, env), s(1));  // whole river: 3 - 1 -> 1
-  expectValue(eval("weather_frost_coverage", {s(1), kOrigin}, env), s(1));
+  expectValue(eval("weather_frost_coverage", {s(0.5f), s(0)}, env), s(1));  // whole river: 3 - 1 -> 1
+  expectValue(eval("weather_frost_coverage", {s(1), s(0)}, env), s(1));
   // Frost 0.7 on a bank (F = 0): mask 1 -> 1; mid-stream (F = 0.5): mask 0.5^1.5 =
   // 0.3535534 -> 3 * 0.3535534 - 1 = 0.0606602 at the origin.
   env.frame.frostLevel = 0.7f;
-  expectValue(eval("weather_frost_coverage", {s(0), kOrigin}, env), s(1));
-  expectValue(eval("weather_frost_coverage", {s(0.5f), kOrigin}, env), s(0.0606602f));
-  // Elsewhere the edge follows the noise: at xz = (1, 2) it reads noise(1.5, 3).
-  const float n = valueNoise(1.5f, 3.f);
-  expectValue(eval("weather_frost_coverage", {s(0.5f), v3(1, 0, 2)}, env),
-              s(std::clamp(n - 1.f + 3.f * 0.3535534f, 0.f, 1.f)));
+  expectValue(eval("weather_frost_coverage", {s(0), s(0)}, env), s(1));
+  expectValue(eval("weather_frost_coverage", {s(0.5f), s(0)}, env), s(0.0606602f));
+  // The edge follows the noise: noise 0.3 -> 0.3 - 1 + 3 * 0.3535534 = 0.3606602.
+  expectValue(eval("weather_frost_coverage", {s(0.5f), s(0.3f)}, env), s(0.3606602f));
 }
 
 // Puddle ice: max(frostLevel, 1 - smoothstep(0, 1, T)): liquid only above 0 C.
@@ -573,17 +568,17 @@ TEST(WeatherNodes, PuddleIce) {
   expectValue(eval("weather_puddle_ice", {}, env), s(0.6f));
 }
 
-// Hoarfrost: transition(noise(1.5 xz), frostLevel * exposure).
+// Hoarfrost: transition(noise, frostLevel * exposure), noise the shared transition noise.
 TEST(WeatherNodes, HoarfrostCoverage) {
   Env env;
   env.frame.frostLevel = 0;
-  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(1)}, env), s(0));
+  expectValue(eval("weather_hoarfrost_coverage", {s(0), s(1)}, env), s(0));
   env.frame.frostLevel = 1;
-  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(1)}, env), s(1));    // 0 - 1 + 3 -> 1
-  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(0)}, env), s(0));    // sheltered
-  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(0.4f)}, env), s(0.2f));  // -1 + 1.2
+  expectValue(eval("weather_hoarfrost_coverage", {s(0), s(1)}, env), s(1));    // 0 - 1 + 3 -> 1
+  expectValue(eval("weather_hoarfrost_coverage", {s(0), s(0)}, env), s(0));    // sheltered
+  expectValue(eval("weather_hoarfrost_coverage", {s(0), s(0.4f)}, env), s(0.2f));  // -1 + 1.2
   env.frame.frostLevel = 0.4f;
-  expectValue(eval("weather_hoarfrost_coverage", {kOrigin, s(1)}, env), s(0.2f));
+  expectValue(eval("weather_hoarfrost_coverage", {s(0), s(1)}, env), s(0.2f));
 }
 
 // The HLSL the backend derives from the library must define the same functions: a
