@@ -146,6 +146,9 @@ std::vector<Option> outputOptions(RenderOptions& o) {
        storeValue(o.device)},
       {"--validation", "", "", "enable the Vulkan validation layers; any message fails", storeFlag(o.validation)},
       {"--no-shadows", "", "", "draw without the sun shadow map", storeFlag(o.request.shadows, false)},
+      {"--no-precipitation", "", "",
+       "no falling snow or rain near the viewer (lit frames draw\nit from the weather's precipitation; AOVs never do)",
+       storeFlag(o.request.precipitation, false)},
   };
 }
 
@@ -183,6 +186,7 @@ OptionTable renderOptionTable(RenderOptions& o, bool& help) {
 
 std::optional<int> parseRenderOptions(int argc, char** argv, int first, RenderOptions& o) {
   o.graphsDir = bundledGraphsDirectory();
+  o.request.precipitation = true;  // render draws it unless --no-precipitation
   bool help = false;
   const OptionTable table = renderOptionTable(o, help);
   const OptionParseResult parsed = parseOptions(table, argc, argv, first);

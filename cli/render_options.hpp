@@ -22,7 +22,7 @@ struct RenderOptions {
   std::string output, timelinePath, framesDir, aov = "lit", device, graphsDir;
   std::optional<std::string> weatherPreset;
   std::vector<std::string> weatherLists;
-  RenderRequest request;  // size, backend, shadows
+  RenderRequest request;  // size, backend, shadows, precipitation
   double step = 300.0;    // --timeline's simulation step, seconds
   bool validation = false, quiet = false;
   bool watch = false;

@@ -11,6 +11,7 @@
 #include "runtime/frame_recording.hpp"
 #include "runtime/frame_slices.hpp"
 #include "runtime/pass_cameras.hpp"
+#include "runtime/precipitation_pass.hpp"
 #include "runtime/render_passes.hpp"
 #include "runtime/scene/graph_path.hpp"
 #include "runtime/weather/frame_weather.hpp"
@@ -23,6 +24,11 @@ constexpr glm::vec3 kSunColor{3.2f, 3.05f, 2.8f};  // a clear midday sun against
 constexpr glm::vec3 kSkyColor{0.45f, 0.55f, 0.72f};
 constexpr float kAmbientIntensity = 0.8f;
 constexpr float kToneExposure = 1.f;
+
+// Lit frames asked for precipitation draw it when something falls.
+bool drawsPrecipitation(const RenderRequest& r) {
+  return r.precipitation && r.debugView == 0 && precipitationField(r.weather.conditions).total() > 0;
+}
 }  // namespace
 
 struct SceneRenderer::Object {
@@ -289,7 +295,8 @@ void SceneRenderer::createTargets(Frame& frame) {
   frame.colour = vk::Image2D(ctx_, r.width, r.height, vk::kColourFormat,
                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | later);
   frame.depth = vk::Image2D(ctx_, r.width, r.height, vk::kDepthFormat,
-                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (r.afterColourPass ? VK_IMAGE_USAGE_SAMPLED_BIT : 0));
+                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                (r.afterColourPass || drawsPrecipitation(r) ? VK_IMAGE_USAGE_SAMPLED_BIT : 0));
   if (multisampled(r)) {
     frame.multisampledColour = vk::Image2D(ctx_, r.width, r.height, vk::kColourFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 1,
                                            colourSamples_);
@@ -349,8 +356,17 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   recordPass(cmd, {colourPassFor(r), frame.colourTarget.get(), r.width, r.height, {colourClear, depthClear}},
              drawsOf(frame, p, order));
   timer_.stop(cmd);
-  if (r.afterColourPass)
-    r.afterColourPass({cmd, &frame.colour, &frame.depth, pass.viewProjection, pass.eye, frame.clip.nearPlane, frame.clip.farPlane});
+  const ColourPassTargets targets{cmd, &frame.colour, &frame.depth, pass.viewProjection, pass.eye, frame.clip.nearPlane,
+                                  frame.clip.farPlane};
+  if (drawsPrecipitation(r)) recordPrecipitation(targets, r.weather);
+  if (r.afterColourPass) r.afterColourPass(targets);
+}
+
+// Falling snow and rain over the lit colour, lit by the frame's sun and sky.
+void SceneRenderer::recordPrecipitation(const ColourPassTargets& targets, const WeatherState& weather) {
+  if (!precipitation_) precipitation_ = std::make_unique<PrecipitationPass>(ctx_);
+  const PrecipitationLight light{kSunColor * weather.conditions.sunIntensity, kSkyColor * kAmbientIntensity, kToneExposure};
+  precipitation_->record(targets, precipitationField(weather.conditions), light, weather.time);
 }
 
 RenderedFrame SceneRenderer::readBack(Frame& frame) {

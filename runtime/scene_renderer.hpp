@@ -17,6 +17,8 @@
 
 namespace wg {
 
+class PrecipitationPass;
+
 // What work recorded after the colour pass sees (particles, post passes): the colour
 // target, to be left in COLOR_ATTACHMENT_OPTIMAL, and the depth target (D32, stored,
 // sampleable) in DEPTH_STENCIL_ATTACHMENT_OPTIMAL, with the camera that drew them.
@@ -78,11 +80,11 @@ class SceneRenderer {
   glm::vec4 exposureRegion() const { return exposureRegion_; }
   glm::mat4 viewProjection(const std::string& camera, std::uint32_t width, std::uint32_t height) const;
   std::size_t gpuMemoryBytes() const;
-  // Every file the materials compiled so far were read from: each graph file, the
-  // libraries it includes and the images it loads (what `compile --depfile` lists).
   // Samples per pixel of lit frames (4 where the device allows; resolved before
   // anything reads the colour); AOVs are always drawn single-sampled.
   std::uint32_t colourSamples() const { return static_cast<std::uint32_t>(colourSamples_); }
+  // Every file the materials compiled so far were read from: each graph file, the
+  // libraries it includes and the images it loads (what `compile --depfile` lists).
   // Sorted, each once; `render --watch` polls them.
   std::vector<std::string> materialInputFiles() const;
   // The map materials sample as "snowDeformation" (docs/deformable-snow.md): RGBA32F,
@@ -115,11 +117,12 @@ class SceneRenderer {
   void writeFrameSlices(Frame& frame) const;
   void allocateDescriptorSets(Frame& frame);
   void createTargets(Frame& frame);
-  std::vector<std::size_t> drawOrder(const Frame& frame) const;
-  std::vector<ObjectDraw> drawsOf(Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
   bool multisampled(const RenderRequest& request) const;
   VkRenderPass colourPassFor(const RenderRequest& request) const;
+  std::vector<std::size_t> drawOrder(const Frame& frame) const;
+  std::vector<ObjectDraw> drawsOf(Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
   void recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
+  void recordPrecipitation(const ColourPassTargets& targets, const WeatherState& weather);
   RenderedFrame readBack(Frame& frame);
 
   vk::Context& ctx_;
@@ -140,6 +143,7 @@ class SceneRenderer {
   std::vector<float> exposureHeights_;
   glm::vec4 exposureRegion_{0.f};
   vk::GpuTimer timer_;  // the colour pass
+  std::unique_ptr<PrecipitationPass> precipitation_;  // made on the first frame that draws it
 };
 
 }  // namespace wg

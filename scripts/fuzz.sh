@@ -73,7 +73,7 @@ PY
     # output is closed (rerun a crash without -close_fd_mask to read it).
     { for w in --scene --material --model --preset-map --model-scale --camera -o --output --timeline --aov \
                --device --graphs --frames --weather --weather-preset --backend --size --step --watch-renders \
-               --validation --no-shadows --quiet --watch --snow-displacement --help -- orbit: glsl hlsl \
+               --validation --no-shadows --no-precipitation --quiet --watch --snow-displacement --help -- orbit: glsl hlsl \
                temperature precipitation windDirection windIntensity sunDirection sunIntensity snowLevel \
                wetnessLevel mossLevel frostLevel puddleLevel time terrainHeightScale worldPosition normal tangent texcoord vertexColor skyExposure \
                scale offset tint colour wet true false; do echo "\"$w\""; done
