@@ -1,5 +1,6 @@
 #include "runtime/snow/snow_interactors.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace wg::snow {
@@ -38,9 +39,21 @@ void walkerStamps(const Walker& w, double t0, double t1, const SnowCover& cover,
   }
 }
 
+namespace {
+// The k-th rut mark's distance along the path; the path's end is the last mark.
+float rutMark(const Vehicle& v, long k) { return std::min(float(k) * v.rutStep, v.path.length()); }
+}  // namespace
+
 void vehicleStamps(const Vehicle& v, double t0, double t1, const SnowCover& cover, std::vector<Stamp>& out) {
-  if (!(t1 > t0)) return;
-  float s0 = v.path.distanceAt(std::max(t0, 0.0)), s1 = v.path.distanceAt(t1);
+  if (!(t1 > t0) || !(v.rutStep > 0.f)) return;
+  auto lastMark = [&](double t) {
+    float s = v.path.distanceAt(t);
+    return s >= v.path.length() ? long(std::ceil(v.path.length() / v.rutStep)) : long(std::floor(s / v.rutStep));
+  };
+  // Before t = 0 no mark is passed: the first frame presses the wheels in where they stand.
+  long k0 = t0 < 0.0 ? -1 : lastMark(t0), k1 = lastMark(t1);
+  if (k1 <= k0) return;  // no new mark: the vehicle has not moved since its last stamp
+  float s0 = rutMark(v, std::max(k0, 0L)), s1 = rutMark(v, k1);
   for (float side : {0.5f, -0.5f}) {
     glm::vec2 from = v.path.pointAt(s0) + leftOf(v.path.headingAt(s0)) * (side * v.track);
     glm::vec2 to = v.path.pointAt(s1) + leftOf(v.path.headingAt(s1)) * (side * v.track);

@@ -4,7 +4,9 @@
 // is, so a walker faster than one step per frame leaves every print. In snow deeper
 // than its feet lift, the feet drag through it and the prints join into a furrow
 // (seed 5.2.2: "the feet never rise above the snow surface"). A vehicle's two wheel
-// ruts are capsules from each wheel's previous to its current contact point.
+// ruts are capsules between marks every `rutStep` along its path: a frame stamps from
+// the last mark passed before it to the last mark passed in it, so a parked vehicle
+// stamps nothing and a creeping one stamps every few frames, never leaving a gap.
 #pragma once
 #include <vector>
 
@@ -27,6 +29,7 @@ struct Vehicle {
   float track = 1.5f;       // between the wheel centres, left to right
   float wheelWidth = 0.22f;
   float sink = 0.5f;        // a loaded wheel packs everything under it
+  float rutStep = 0.02f;    // half a 4 cm texel: finer moves wait for the next frame
 };
 
 // Stamps for the interval (t0, t1] in seconds.
