@@ -17,6 +17,7 @@ namespace {
 // stages read it without locks.
 struct DerivedHlsl {
   std::unordered_map<const ShaderLibrary*, std::string> libraries;
+  std::unordered_map<const ShaderLibrary*, bool> librariesCallingPrelude;  // scanned once, not per stage
   std::unordered_map<const OpDef*, std::string> ops;
 
   DerivedHlsl() {
@@ -30,7 +31,9 @@ struct DerivedHlsl {
 
   void addLibrary(const ShaderLibrary& library) {
     if (libraries.contains(&library)) return;
-    libraries.emplace(&library, glslToHlsl(library.glsl, frameMatrixTranslation()));
+    std::string hlsl = glslToHlsl(library.glsl, frameMatrixTranslation());
+    librariesCallingPrelude.emplace(&library, callsHlslPrelude(hlsl));
+    libraries.emplace(&library, std::move(hlsl));
     for (const ShaderLibrary* dependency : library.dependencies) addLibrary(*dependency);
   }
 };
@@ -61,5 +64,9 @@ const HlslTranslation& frameMatrixTranslation() {
 
 std::string_view derivedHlsl(const ShaderLibrary& library) { return find(derived().libraries, &library, library.name); }
 std::string_view derivedHlsl(const OpDef& op) { return find(derived().ops, &op, op.name); }
+bool derivedHlslCallsPrelude(const ShaderLibrary& library) {
+  find(derived().libraries, &library, library.name);  // the same error for an unreachable library
+  return derived().librariesCallingPrelude.at(&library);
+}
 
 }  // namespace wg

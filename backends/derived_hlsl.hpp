@@ -13,5 +13,6 @@ const HlslTranslation& frameMatrixTranslation();
 
 std::string_view derivedHlsl(const ShaderLibrary& library);
 std::string_view derivedHlsl(const OpDef& op);  // the op's hlsl override where it has one
+bool derivedHlslCallsPrelude(const ShaderLibrary& library);  // callsHlslPrelude(derivedHlsl(library))
 
 }  // namespace wg
