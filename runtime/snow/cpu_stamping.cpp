@@ -34,9 +34,8 @@ std::vector<TexelRect> stampOnCpu(const SnowWindow& window, MapTexels texels, st
     if (box.empty()) continue;
     for (int z = box.min.y; z < box.min.y + box.size.y; ++z)
       for (int x = box.min.x; x < box.min.x + box.size.x; ++x) {
-        StampProfile p = stampProfile(stamp, window.texelCentre({x, z}));
         std::uint32_t& t = texels.heights[window.storageIndex({x, z})];
-        t = std::max(t, packTexel(p.depth, p.rim));
+        t = std::max(t, stampTexel(stamp, window, {x, z}));
       }
     touched.push_back(box.grown(1).intersect(window.rect()));
   }

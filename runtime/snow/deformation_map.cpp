@@ -1,5 +1,6 @@
 #include "runtime/snow/deformation_map.hpp"
 
+#include "runtime/snow/beyond_window_stamping.hpp"
 #include "runtime/snow/cpu_stamping.hpp"
 #include "runtime/snow/deformation_texel.hpp"
 #include "runtime/snow/map_lookup.hpp"
@@ -7,11 +8,17 @@
 namespace wg::snow {
 
 DeformationMap::DeformationMap(const WindowSettings& settings, glm::vec2 camera)
-    : window_(settings), heights_(window_.texelCount(), 0u), normals_(window_.texelCount(), 0u) {
+    : window_(settings),
+      heights_(window_.texelCount(), 0u),
+      normals_(window_.texelCount(), 0u),
+      store_(settings.printStoreBudget) {
   window_.setOrigin(window_.originFor(camera));
 }
 
-void DeformationMap::apply(std::span<const Stamp> stamps) { stampOnCpu(window_, texels(), stamps); }
+void DeformationMap::apply(std::span<const Stamp> stamps) {
+  stampOnCpu(window_, texels(), stamps);
+  stampBeyondWindow(window_, stamps, store_, refill_.totalQuanta());
+}
 
 void DeformationMap::refill(double metresPerSecond, double seconds) {
   std::uint32_t quanta = refill_.advance(metresPerSecond, seconds);

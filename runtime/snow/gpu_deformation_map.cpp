@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "runtime/snow/beyond_window_stamping.hpp"
 #include "runtime/snow/deformation_texel.hpp"
 #include "runtime/snow/map_lookup.hpp"
 #include "runtime/vulkan/compute_barriers.hpp"
@@ -22,7 +23,7 @@ glm::ivec4 packRect(const TexelRect& r) { return {r.min.x, r.min.y, r.size.x, r.
 }  // namespace
 
 GpuDeformationMap::GpuDeformationMap(vk::Context& ctx, const WindowSettings& settings, glm::vec2 camera)
-    : ctx_(ctx), window_(settings), pass_(ctx), timer_(ctx) {
+    : ctx_(ctx), window_(settings), pass_(ctx), store_(settings.printStoreBudget), timer_(ctx) {
   window_.setOrigin(window_.originFor(camera));
   VkDeviceSize bytes = window_.texelCount() * sizeof(std::uint32_t);
   heights_ = vk::Buffer(ctx_, bytes, kStorage);
@@ -91,6 +92,7 @@ double GpuDeformationMap::submit(const std::function<void(VkCommandBuffer)>& rec
 }
 
 double GpuDeformationMap::apply(std::span<const Stamp> stamps) {
+  stampBeyondWindow(window_, stamps, store_, refill_.totalQuanta());
   reserve(stamps.size());
   auto* records = static_cast<Stamp*>(stamps_.mapped());
   auto* boxes = static_cast<glm::ivec4*>(stampBoxes_.mapped());

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "runtime/snow/deformation_texel.hpp"
+
 namespace wg::snow {
 
 namespace {
@@ -50,11 +52,20 @@ StampProfile stampProfile(const Stamp& s, glm::vec2 point) {
   return out;
 }
 
-TexelRect stampBounds(const Stamp& s, const SnowWindow& window) {
+TexelRect stampReach(const Stamp& s, const SnowWindow& window) {
   float reach = std::max(s.radiusA, s.radiusB) + s.rimWidth;
   glm::vec2 lo = glm::min(s.a, s.b) - reach, hi = glm::max(s.a, s.b) + reach;
   glm::ivec2 first = window.texelAt(lo), last = window.texelAt(hi);
-  return TexelRect{first, last - first + 1}.intersect(window.rect());
+  return TexelRect{first, last - first + 1};
+}
+
+TexelRect stampBounds(const Stamp& s, const SnowWindow& window) {
+  return stampReach(s, window).intersect(window.rect());
+}
+
+std::uint32_t stampTexel(const Stamp& s, const SnowWindow& window, glm::ivec2 texel) {
+  StampProfile p = stampProfile(s, window.texelCentre(texel));
+  return packTexel(p.depth, p.rim);
 }
 
 float deepestPrint(const SnowCover& cover) {

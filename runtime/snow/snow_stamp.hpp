@@ -7,6 +7,8 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <cstdint>
+
 #include "runtime/snow/snow_window.hpp"
 
 namespace wg::snow {
@@ -25,8 +27,11 @@ struct StampProfile {
 };
 StampProfile stampProfile(const Stamp& stamp, glm::vec2 point);
 
-// World texels the stamp (rim included) can touch.
+// World texels the stamp (rim included) can touch, anywhere, and within the window.
+TexelRect stampReach(const Stamp& stamp, const SnowWindow& window);
 TexelRect stampBounds(const Stamp& stamp, const SnowWindow& window);
+// The packed texel (deformation_texel.hpp) the stamp leaves at a world texel.
+std::uint32_t stampTexel(const Stamp& stamp, const SnowWindow& window, glm::ivec2 texel);
 
 // The snow the stamps are pressed into.
 struct SnowCover {

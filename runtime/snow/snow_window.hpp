@@ -31,6 +31,10 @@ struct WindowSettings {
   // resolution). 32 texels = 1.28 m: fine enough that the camera stays near the centre,
   // coarse enough that the store holds few, 4 KiB tiles.
   std::uint32_t tileTexels = 32;
+  // Memory the print store may use for tiles outside the window; past it the tiles
+  // stored longest ago are dropped (print_tile_store.hpp). 16 MiB: twice the window's
+  // height and normal planes.
+  std::size_t printStoreBudget = std::size_t(16) << 20;
 };
 inline constexpr std::uint32_t kMaxTileTexels = 256;
 

@@ -20,20 +20,15 @@ void forEachTile(const TexelRect& rect, int tileTexels, Visit&& visit) {
 bool evictTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, PrintTileStore& store,
                std::uint64_t refillQuanta) {
   int n = window.tileTexels();
-  StoredTile stored;
-  stored.refillAtEviction = refillQuanta;
+  std::vector<std::uint32_t> dense(std::size_t(n) * std::size_t(n));
   for (int z = 0; z < n; ++z)
     for (int x = 0; x < n; ++x) {
       std::size_t slot = window.storageIndex(tile * n + glm::ivec2(x, z));
-      std::uint32_t value = std::exchange(texels.heights[slot], 0u);
+      dense[std::size_t(z * n + x)] = std::exchange(texels.heights[slot], 0u);
       texels.normals[slot] = 0;  // packNormal of straight up
-      if (value == 0) continue;
-      stored.positions.push_back(static_cast<std::uint16_t>(z * n + x));
-      stored.heights.push_back(value);
     }
+  StoredTile stored = packTile(dense, refillQuanta);
   if (stored.heights.empty()) return false;
-  stored.positions.shrink_to_fit();
-  stored.heights.shrink_to_fit();
   store.put(tile, std::move(stored));
   return true;
 }

@@ -1,0 +1,46 @@
+#include "runtime/snow/beyond_window_stamping.hpp"
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+#include "runtime/snow/deformation_texel.hpp"
+
+namespace wg::snow {
+
+std::size_t stampBeyondWindow(const SnowWindow& window, std::span<const Stamp> stamps, PrintTileStore& store,
+                              std::uint64_t refillQuanta) {
+  const int n = window.tileTexels();
+  // Tiles this call writes, unpacked once however many stamps reach them.
+  std::map<glm::ivec2, std::vector<std::uint32_t>, TileOrder> open;
+  for (const Stamp& stamp : stamps) {
+    TexelRect reach = stampReach(stamp, window);
+    if (window.rect().intersect(reach).size == reach.size) continue;  // all inside: the map's
+    glm::ivec2 first(floorDiv(reach.min.x, n), floorDiv(reach.min.y, n));
+    glm::ivec2 last(floorDiv(reach.min.x + reach.size.x - 1, n), floorDiv(reach.min.y + reach.size.y - 1, n));
+    for (int tz = first.y; tz <= last.y; ++tz)
+      for (int tx = first.x; tx <= last.x; ++tx) {
+        glm::ivec2 tile(tx, tz);
+        if (window.contains(tile * n)) continue;
+        auto it = open.find(tile);
+        if (it == open.end()) {
+          std::vector<std::uint32_t> texels(std::size_t(n) * std::size_t(n), 0u);
+          if (const StoredTile* stored = store.find(tile)) {
+            auto missed = std::min<std::uint64_t>(refillQuanta - stored->refillAtEviction, kMaxQuanta);
+            texels = unpackTile(*stored, n, static_cast<std::uint32_t>(missed));
+          }
+          it = open.emplace(tile, std::move(texels)).first;
+        }
+        TexelRect box = reach.intersect({tile * n, glm::ivec2(n)});
+        for (int z = box.min.y; z < box.min.y + box.size.y; ++z)
+          for (int x = box.min.x; x < box.min.x + box.size.x; ++x) {
+            std::uint32_t& t = it->second[std::size_t((z - tile.y * n) * n + (x - tile.x * n))];
+            t = std::max(t, stampTexel(stamp, window, {x, z}));
+          }
+      }
+  }
+  for (auto& [tile, texels] : open) store.put(tile, packTile(texels, refillQuanta));
+  return open.size();
+}
+
+}  // namespace wg::snow
