@@ -3,6 +3,7 @@
 // maps, the refill pass, and the memory of the map and the print store after a
 // 10-minute scripted walk in simulated time. Prints markdown (docs/BENCHMARKS.md).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -22,16 +23,20 @@ namespace wg {
 
 namespace {
 
-constexpr const char* kUsage = R"(Usage: weathergen bench-snow [--frames N] [--walk-minutes M] [--device NAME]
+constexpr const char* kUsage = R"(Usage: weathergen bench-snow [--frames N] [--walk-minutes M] [--profile-seconds S]
+                            [--store-budget MIB] [--refill-tiles N] [--device NAME]
 
 Moves N interactors (1, 16, 256, 1024) through the default 1024² deformation map (4 cm
 texels); each presses a 0.15 m-radius capsule from its previous to its current position
 every frame (60 fps, 1.4 m/s), the worst case: walkers stamp only when a foot lands.
 Prints the median GPU time over N frames (default 120, after 10 warm-up frames) of the
 stamp and normal dispatches, the same 256 interactors on 512² and 2048² maps, the global
-refill pass, then walks a player with 16 companions and a vehicle for M simulated
-minutes (default 10) with the window following and reports the memory of the map and of
-the print store.
+refill pass; then every frame's snow work (recentring, stamps, refill) for S simulated
+seconds (default 60) of a player with 16 companions and a vehicle in heavy snowfall, as
+median and worst frame; then the same walk for M simulated minutes (default 10) in calm
+weather with the window following, and the memory of the map and of the print store
+(whose budget --store-budget sets, default 16 MiB). --refill-tiles sets how many tiles
+with prints a frame refills at most (default 4).
 )";
 
 constexpr int kWarmUpFrames = 10;
@@ -41,6 +46,8 @@ constexpr float kBodyRadius = 0.15f;  // a dragged foot or a small body
 const snow::SnowCover kCover{0.3f};
 // Refill two quanta per call: every call dispatches.
 constexpr double kTwoQuantaPerSecond = 2.0 * snow::kDepthQuantum;
+// Heavy snowfall: prints fill at ~5 cm/h (docs/deformable-snow.md), a quantum every 7.2 s.
+constexpr double kHeavySnowRefill = 0.05 / 3600.0;
 constexpr int kCompanions = 16;
 constexpr float kLegLength = 120.f, kLegGap = 30.f;  // the walk's serpentine, metres
 
@@ -78,9 +85,15 @@ double measureMovers(vk::Context& ctx, std::uint32_t resolution, int count, int 
   return median(times);
 }
 
-// Median GPU milliseconds of the global refill (every texel, then every normal).
-double measureRefill(vk::Context& ctx, int frames) {
-  snow::GpuDeformationMap map(ctx);
+// Median GPU milliseconds of one frame's refill on a map with prints in every tile:
+// refillTilesPerFrame tiles and their normals (the whole map before refill was spread).
+double measureRefill(vk::Context& ctx, const snow::WindowSettings& settings, int frames) {
+  snow::GpuDeformationMap map(ctx, settings);
+  std::vector<snow::Stamp> everywhere;
+  float tile = map.window().texelSize() * float(map.window().tileTexels()), half = 0.5f * map.window().extent();
+  for (float z = -half + 0.5f * tile; z < half; z += tile)
+    for (float x = -half + 0.5f * tile; x < half; x += tile) everywhere.push_back(snow::capsule({x, z}, {x, z}, 0.2f, kCover, kCover.depth));
+  map.apply(everywhere);
   std::vector<double> times;
   for (int f = 0; f < kWarmUpFrames + frames; ++f) {
     double ms = map.refill(kTwoQuantaPerSecond, 1.0);
@@ -104,32 +117,45 @@ std::vector<glm::vec2> serpentine(float length, float leg, float gap, glm::vec2 
 }
 
 // The player (whom the window follows), 16 companions on parallel paths and a vehicle,
-// for `minutes` of simulated time at 60 frames per second, in calm weather (no refill:
-// every print is kept, the store's worst case).
-int runSnowWalk(vk::Context& ctx, double minutes) {
-  const double seconds = minutes * 60.0;
-  const float length = float(seconds) * kWalkSpeed + kLegLength;
-  snow::GpuDeformationMap map(ctx);
+// on a serpentine long enough for `seconds`.
+struct SnowWalk {
   std::vector<snow::Walker> walkers;
-  for (int i = 0; i <= kCompanions; ++i) {
-    snow::Walker w;
-    // Companions walk beside the player, up to 8 m either side, a little faster or slower.
-    float side = i == 0 ? 0.f : float((i + 1) / 2) * (i % 2 ? 1.f : -1.f);
-    float speed = kWalkSpeed * (1.f + 0.02f * float(i % 5 - 2));
-    w.path = snow::ScriptedPath(serpentine(length, kLegLength, kLegGap, {0.f, side}), speed);
-    walkers.push_back(w);
-  }
   snow::Vehicle car;
-  car.path = snow::ScriptedPath(serpentine(length, kLegLength, kLegGap, {0.f, -10.f}), kWalkSpeed);
+
+  explicit SnowWalk(double seconds) {
+    const float length = float(seconds) * kWalkSpeed + kLegLength;
+    for (int i = 0; i <= kCompanions; ++i) {
+      snow::Walker w;
+      // Companions walk beside the player, up to 8 m either side, a little faster or slower.
+      float side = i == 0 ? 0.f : float((i + 1) / 2) * (i % 2 ? 1.f : -1.f);
+      float speed = kWalkSpeed * (1.f + 0.02f * float(i % 5 - 2));
+      w.path = snow::ScriptedPath(serpentine(length, kLegLength, kLegGap, {0.f, side}), speed);
+      walkers.push_back(w);
+    }
+    car.path = snow::ScriptedPath(serpentine(length, kLegLength, kLegGap, {0.f, -10.f}), kWalkSpeed);
+  }
+  void stamps(double t0, double t1, std::vector<snow::Stamp>& out) const {
+    out.clear();
+    for (const auto& w : walkers) snow::walkerStamps(w, t0, t1, kCover, out);
+    snow::vehicleStamps(car, t0, t1, kCover, out);
+  }
+  glm::vec2 player(double t) const { return walkers.front().path.pointAt(walkers.front().path.distanceAt(t)); }
+};
+
+// The walk for `minutes` of simulated time at 60 frames per second, in calm weather (no
+// refill: every print is kept, the store's worst case).
+int runSnowWalk(vk::Context& ctx, const snow::WindowSettings& settings, double minutes) {
+  const double seconds = minutes * 60.0;
+  const std::size_t storeBudget = settings.printStoreBudget;
+  snow::GpuDeformationMap map(ctx, settings);
+  SnowWalk walk(seconds);
   std::size_t stamps = 0, peakStore = 0;
   std::vector<snow::Stamp> frame;
   const auto frames = static_cast<long>(seconds / kFrameSeconds);
   for (long f = 0; f < frames; ++f) {
     double t0 = double(f - 1) * kFrameSeconds, t1 = double(f) * kFrameSeconds;
-    frame.clear();
-    for (const auto& w : walkers) snow::walkerStamps(w, t0, t1, kCover, frame);
-    snow::vehicleStamps(car, t0, t1, kCover, frame);
-    map.follow(walkers.front().path.pointAt(walkers.front().path.distanceAt(t1)));
+    walk.stamps(t0, t1, frame);
+    map.follow(walk.player(t1));
     map.apply(frame);
     stamps += frame.size();
     peakStore = std::max(peakStore, map.store().memoryBytes());
@@ -140,21 +166,68 @@ int runSnowWalk(vk::Context& ctx, double minutes) {
   std::printf("| what | memory |\n|---|---|\n");
   std::printf("| deformation map (heights + normals, 1024², 2 x 32 bit) | %.2f MiB |\n", map.mapBytes() / kMiB);
   std::printf("| surface image the snow layer samples (RGBA16F) | %.2f MiB |\n", map.surfaceImage().byteSize() / kMiB);
-  std::printf("| print store: %zu tiles of 32² texels | %.2f MiB (peak %.2f MiB) |\n", map.store().tileCount(),
-              map.store().memoryBytes() / kMiB, peakStore / kMiB);
+  std::printf("| print store: %zu tiles of 32² texels, %zu dropped (budget %.2f MiB) | %.2f MiB (peak %.2f MiB) |\n",
+              map.store().tileCount(), map.store().tilesDropped(), storeBudget / kMiB, map.store().memoryBytes() / kMiB,
+              peakStore / kMiB);
   return kExitOk;
+}
+
+// Every frame's snow work (recentring, stamps, refill) in heavy snowfall, as GPU
+// milliseconds and as wall time of the calls (on lavapipe the GPU is the CPU).
+void measureFrameProfile(vk::Context& ctx, const snow::WindowSettings& settings, double seconds) {
+  snow::GpuDeformationMap map(ctx, settings);
+  SnowWalk walk(seconds);
+  std::vector<snow::Stamp> frame;
+  std::vector<double> follow, stamps, refill, gpu, wall;
+  const auto frames = static_cast<long>(seconds / kFrameSeconds);
+  for (long f = 0; f < frames; ++f) {
+    double t0 = double(f - 1) * kFrameSeconds, t1 = double(f) * kFrameSeconds;
+    walk.stamps(t0, t1, frame);
+    auto start = std::chrono::steady_clock::now();
+    double a = map.follow(walk.player(t1)).gpuMilliseconds;
+    double b = map.apply(frame);
+    double c = map.refill(kHeavySnowRefill, kFrameSeconds);
+    double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (f < kWarmUpFrames) continue;
+    follow.push_back(a);
+    stamps.push_back(b);
+    refill.push_back(c);
+    gpu.push_back(a + b + c);
+    wall.push_back(elapsed);
+  }
+  auto row = [](const char* what, std::vector<double> v) {
+    double mid = median(v), worst = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+    auto over = std::count_if(v.begin(), v.end(), [&](double ms) { return ms > 2.0 * mid; });
+    std::printf("| %s | %.4f | %.4f | %ld of %zu |\n", what, mid, worst, long(over), v.size());
+  };
+  std::printf("\nEvery frame's snow work over %.0f simulated seconds of the walk in heavy snowfall (refill 5 cm/h):\n\n",
+              seconds);
+  std::printf("| per frame | median ms | worst ms | frames over 2x median |\n|---|---|---|---|\n");
+  row("GPU: recentring (tiles that enter)", follow);
+  row("GPU: stamps and their normals", stamps);
+  row("GPU: refill and its normals", refill);
+  row("GPU: all snow work", gpu);
+  row("wall time of the calls (submits and waits included)", wall);
 }
 
 struct BenchSnowOptions {
   std::string device;
   int frames = 120;
   double walkMinutes = 10.0;
+  double profileSeconds = 60.0;
+  double storeBudgetMiB = double(snow::WindowSettings{}.printStoreBudget) / (1024.0 * 1024.0);
+  double refillTiles = snow::WindowSettings{}.refillTilesPerFrame;
   bool help = false;
 };
 
-std::string setWalkMinutes(const std::string& v, double& walkMinutes) {
-  walkMinutes = parseNumberText(v).value_or(0.0);
-  if (!(walkMinutes > 0.0) || !std::isfinite(walkMinutes)) return "--walk-minutes takes a positive number";
+// "" or the usage message; `out` is positive and at most `most`.
+std::string setPositive(const std::string& v, const char* option, double most, double& out) {
+  out = parseNumberText(v).value_or(0.0);
+  if (!(out > 0.0) || !(out <= most)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%s takes a positive number up to %g", option, most);
+    return text;
+  }
   return "";
 }
 
@@ -163,7 +236,16 @@ OptionTable benchSnowOptionTable(BenchSnowOptions& o) {
       {"--frames", "", "N", "frames measured per load (default 120)",
        [&o](const std::string& v) { return setFrameCount(v, o.frames); }},
       {"--walk-minutes", "", "M", "simulated minutes of the walk (default 10)",
-       [&o](const std::string& v) { return setWalkMinutes(v, o.walkMinutes); }},
+       [&o](const std::string& v) { return setPositive(v, "--walk-minutes", 1e4, o.walkMinutes); }},
+      {"--profile-seconds", "", "S", "simulated seconds of the per-frame profile (default 60)",
+       [&o](const std::string& v) { return setPositive(v, "--profile-seconds", 3600.0, o.profileSeconds); }},
+      {"--store-budget", "", "MIB", "print store budget in MiB (default 16)",
+       [&o](const std::string& v) { return setPositive(v, "--store-budget", 1e6, o.storeBudgetMiB); }},
+      {"--refill-tiles", "", "N", "tiles refilled per frame at most (default 4)",
+       [&o](const std::string& v) {
+         std::string error = setPositive(v, "--refill-tiles", 1024.0, o.refillTiles);
+         return error.empty() && o.refillTiles != std::floor(o.refillTiles) ? "--refill-tiles takes a whole number" : error;
+       }},
       {"--device", "", "NAME", "Vulkan device, as render takes it", storeValue(o.device)},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
   }};
@@ -197,9 +279,13 @@ int runBenchSnowCommand(int argc, char** argv) {
   std::printf("Device: %s. Median of %d frames (after %d warm-up), stamps + normals, GPU timestamps.\n\n",
               ctx->deviceName().c_str(), o.frames, kWarmUpFrames);
   measureMoverTable(*ctx, o.frames);
-  std::printf("\nGlobal refill pass (1024², every texel and normal, on frames a quantum is due): %.4f ms\n",
-              measureRefill(*ctx, o.frames));
-  return runSnowWalk(*ctx, o.walkMinutes);
+  snow::WindowSettings settings;
+  settings.printStoreBudget = std::size_t(o.storeBudgetMiB * 1024.0 * 1024.0);
+  settings.refillTilesPerFrame = std::uint32_t(o.refillTiles);
+  std::printf("\nRefill on a map with prints in every tile (%u tiles a frame and their normals): %.4f ms\n",
+              settings.refillTilesPerFrame, measureRefill(*ctx, settings, o.frames));
+  measureFrameProfile(*ctx, settings, o.profileSeconds);
+  return runSnowWalk(*ctx, settings, o.walkMinutes);
 }
 
 }  // namespace wg

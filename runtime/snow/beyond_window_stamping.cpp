@@ -16,10 +16,9 @@ std::size_t stampBeyondWindow(const SnowWindow& window, std::span<const Stamp> s
   for (const Stamp& stamp : stamps) {
     TexelRect reach = stampReach(stamp, window);
     if (window.rect().intersect(reach).size == reach.size) continue;  // all inside: the map's
-    glm::ivec2 first(floorDiv(reach.min.x, n), floorDiv(reach.min.y, n));
-    glm::ivec2 last(floorDiv(reach.min.x + reach.size.x - 1, n), floorDiv(reach.min.y + reach.size.y - 1, n));
-    for (int tz = first.y; tz <= last.y; ++tz)
-      for (int tx = first.x; tx <= last.x; ++tx) {
+    TileSpan tiles = tilesReached(reach, n);
+    for (int tz = tiles.first.y; tz <= tiles.last.y; ++tz)
+      for (int tx = tiles.first.x; tx <= tiles.last.x; ++tx) {
         glm::ivec2 tile(tx, tz);
         if (window.contains(tile * n)) continue;
         auto it = open.find(tile);

@@ -11,24 +11,25 @@ DeformationMap::DeformationMap(const WindowSettings& settings, glm::vec2 camera)
     : window_(settings),
       heights_(window_.texelCount(), 0u),
       normals_(window_.texelCount(), 0u),
-      store_(settings.printStoreBudget) {
+      store_(settings.printStoreBudget),
+      schedule_(window_) {
   window_.setOrigin(window_.originFor(camera));
 }
 
 void DeformationMap::apply(std::span<const Stamp> stamps) {
   stampOnCpu(window_, texels(), stamps);
+  schedule_.stamped(window_, stamps, refill_.totalQuanta());
   stampBeyondWindow(window_, stamps, store_, refill_.totalQuanta());
 }
 
 void DeformationMap::refill(double metresPerSecond, double seconds) {
-  std::uint32_t quanta = refill_.advance(metresPerSecond, seconds);
-  if (quanta == 0) return;
-  refillOnCpu(texels(), quanta);
-  regenerateNormals(window_, texels(), window_.rect());
+  refill_.advance(metresPerSecond, seconds);
+  auto tiles = schedule_.due(window_, refill_.totalQuanta(), window_.settings().refillTilesPerFrame);
+  for (const TexelRect& rect : refillOnCpu(window_, texels(), tiles)) regenerateNormals(window_, texels(), rect);
 }
 
 Recentring DeformationMap::follow(glm::vec2 camera) {
-  return recentre(window_, texels(), camera, store_, refill_.totalQuanta());
+  return recentre(window_, texels(), camera, store_, schedule_, refill_.totalQuanta());
 }
 
 float DeformationMap::heightAt(glm::vec2 world) const { return texelHeight(heightTexelAt(window_, heights_, world)); }

@@ -24,7 +24,8 @@ class DeformationMap {
   MapTexels texels() { return {heights_, normals_}; }
 
   void apply(std::span<const Stamp> stamps);
-  // Refill at `metresPerSecond` for `seconds`, applied in whole quanta.
+  // Refill at `metresPerSecond` for `seconds`, in whole quanta, over at most
+  // refillTilesPerFrame of the tiles that hold prints (refill_schedule.hpp).
   void refill(double metresPerSecond, double seconds);
   Recentring follow(glm::vec2 camera);
 
@@ -40,6 +41,7 @@ class DeformationMap {
   std::vector<std::uint32_t> heights_, normals_;
   PrintTileStore store_;
   DeformationRefill refill_;
+  RefillSchedule schedule_;
 };
 
 }  // namespace wg::snow

@@ -34,7 +34,8 @@ DeformationPass::DeformationPass(vk::Context& ctx) : ctx_(ctx) {
   }
 }
 
-DeformationPass::~DeformationPass() { vkDeviceWaitIdle(ctx_.device()); }
+// The owner makes sure the device is done with the pass (an engine, or GpuDeformationMap).
+DeformationPass::~DeformationPass() = default;
 
 void DeformationPass::bind(const std::string& block, const vk::Buffer& buffer) { set_->bindBuffer(block, buffer); }
 
@@ -63,8 +64,9 @@ void DeformationPass::recordNormals(VkCommandBuffer cmd, const WindowConstants& 
   dispatch(cmd, normals_, window, rectExtent, rects);
 }
 
-void DeformationPass::recordRefill(VkCommandBuffer cmd, const WindowConstants& window) const {
-  dispatch(cmd, refill_, window, glm::ivec2(window.resolution), 1);
+void DeformationPass::recordRefill(VkCommandBuffer cmd, const WindowConstants& window, std::uint32_t tiles,
+                                   int tileTexels) const {
+  dispatch(cmd, refill_, window, glm::ivec2(tileTexels), tiles);
 }
 
 void DeformationPass::computeBarrier(VkCommandBuffer cmd) { vk::computeToComputeBarrier(cmd); }

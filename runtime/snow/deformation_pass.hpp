@@ -32,7 +32,7 @@ class DeformationPass {
   DeformationPass(const DeformationPass&) = delete;
   DeformationPass& operator=(const DeformationPass&) = delete;
 
-  // Points the block named `block` (Heights, Normals, Stamps, StampBoxes, NormalRects)
+  // Points the block named `block` (Heights, Normals, Stamps, StampBoxes, NormalRects, RefillTiles)
   // at a buffer. Every block must be bound before the first record.
   void bind(const std::string& block, const vk::Buffer& buffer);
   // The surface image the normal stage writes (GENERAL layout while the pass runs).
@@ -44,7 +44,8 @@ class DeformationPass {
                     glm::ivec2 stampExtent) const;
   void recordNormals(VkCommandBuffer cmd, const WindowConstants& window, std::uint32_t rects,
                      glm::ivec2 rectExtent) const;
-  void recordRefill(VkCommandBuffer cmd, const WindowConstants& window) const;
+  // One layer per tile of RefillTiles (x, z, tileTexels, quanta).
+  void recordRefill(VkCommandBuffer cmd, const WindowConstants& window, std::uint32_t tiles, int tileTexels) const;
   static void computeBarrier(VkCommandBuffer cmd);
 
  private:

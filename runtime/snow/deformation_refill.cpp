@@ -18,9 +18,18 @@ std::uint32_t DeformationRefill::advance(double metresPerSecond, double seconds)
   return quanta;
 }
 
-void refillOnCpu(MapTexels texels, std::uint32_t quanta) {
-  if (quanta == 0) return;
-  for (auto& t : texels.heights) t = refillTexel(t, quanta);
+std::vector<TexelRect> refillOnCpu(const SnowWindow& window, MapTexels texels, std::span<const TileRefill> tiles) {
+  std::vector<TexelRect> touched;
+  const int n = window.tileTexels();
+  for (const TileRefill& r : tiles) {
+    for (int z = 0; z < n; ++z)
+      for (int x = 0; x < n; ++x) {
+        std::uint32_t& t = texels.heights[window.storageIndex(r.tile * n + glm::ivec2(x, z))];
+        t = refillTexel(t, r.quanta);
+      }
+    touched.push_back(TexelRect{r.tile * n, glm::ivec2(n)}.grown(1).intersect(window.rect()));
+  }
+  return touched;
 }
 
 }  // namespace wg::snow

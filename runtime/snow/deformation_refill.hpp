@@ -4,7 +4,11 @@
 #pragma once
 #include <cstdint>
 
+#include <span>
+#include <vector>
+
 #include "runtime/snow/map_texels.hpp"
+#include "runtime/snow/refill_schedule.hpp"
 
 namespace wg::snow {
 
@@ -19,7 +23,8 @@ class DeformationRefill {
   std::uint64_t total_ = 0;
 };
 
-// Lowers every texel's depth and rim by `quanta` (the CPU form of the refill pass).
-void refillOnCpu(MapTexels texels, std::uint32_t quanta);
+// Lowers the depth and rim of every texel of each tile by its quanta (the CPU form of
+// the refill pass); returns the tiles grown by one texel, whose normals changed.
+std::vector<TexelRect> refillOnCpu(const SnowWindow& window, MapTexels texels, std::span<const TileRefill> tiles);
 
 }  // namespace wg::snow

@@ -4,10 +4,10 @@ namespace wg::snow {
 
 namespace {
 
-// Shared by all three passes: the window (push constants) and the texel encoding of
+// Shared by the compute passes: the window (push constants) and the texel encoding of
 // deformation_texel.hpp. `originSlot` is the origin's storage position (origin mod N,
 // taken on the CPU, so no shader ever takes the modulo of a negative number).
-constexpr std::string_view kCommon = R"(#version 450
+constexpr std::string_view kComputeHeader = R"(#version 450
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(push_constant) uniform Window {
   ivec2 origin;
@@ -16,6 +16,23 @@ layout(push_constant) uniform Window {
   float texelSize;
   uint refillQuanta;
 } window;
+)";
+
+// The mesh interactors' window: the same fields after the model matrix, and where the
+// undisturbed snow surface and the ground under it are (world y).
+constexpr std::string_view kMeshHeader = R"(#version 450
+layout(push_constant) uniform Window {
+  mat4 model;
+  ivec2 origin;
+  ivec2 originSlot;
+  int resolution;
+  float texelSize;
+  float surfaceHeight;
+  float snowDepth;
+} window;
+)";
+
+constexpr std::string_view kTexelEncoding = R"(
 layout(std430, set = 0, binding = 0) buffer Heights { uint heights[]; };
 const float kDepthQuantum = 1e-4;
 const uint kMaxQuanta = 0xFFFFu;
@@ -104,20 +121,55 @@ void main() {
 }
 )";
 
-// Fresh snow and drift: both halves of every texel lowered by refillQuanta, never
-// below 0 (issue 5, §3). Runs only on frames where a whole quantum is due.
+// Fresh snow and drift: both halves of every texel of a tile lowered by the quanta
+// that tile is owed, never below 0. One workgroup layer per tile (x, z, size, quanta):
+// only tiles that hold prints, a few per frame (refill_schedule.hpp).
 constexpr std::string_view kRefill = R"(
+layout(std430, set = 0, binding = 6) readonly buffer RefillTiles { ivec4 refillTiles[]; };
 void main() {
+  ivec4 tile = refillTiles[gl_WorkGroupID.z];
   ivec2 local = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(local, ivec2(window.resolution)))) return;
-  uint i = uint(local.y * window.resolution + local.x);
+  if (any(greaterThanEqual(local, ivec2(tile.z)))) return;
+  uint i = storageIndex(tile.xy + local);
   uint texel = heights[i];
-  uint depth = texel >> 16, rim = texel & kMaxQuanta, q = window.refillQuanta;
+  uint depth = texel >> 16, rim = texel & kMaxQuanta, q = uint(tile.w);
   heights[i] = ((depth > q ? depth - q : 0u) << 16) | (rim > q ? rim - q : 0u);
 }
 )";
 
-std::string join(std::string_view body) { return std::string(kCommon) + std::string(body); }
+// Any mesh deforms the snow by its depth seen from below (the shipped technique:
+// render the interactors' depth from under the ground): an orthographic projection
+// straight down maps world texels to framebuffer pixels, and every fragment merges
+// its print depth (how far below the snow surface the mesh reaches there, at most
+// the snow's depth) into the map with the stamps' atomicMax. The largest depth is
+// the lowest surface, so no depth buffer is needed and triangle order does not matter.
+constexpr std::string_view kMeshVertex = R"(
+layout(location = 0) in vec3 position;
+layout(location = 0) out float worldHeight;
+void main() {
+  vec4 world = window.model * vec4(position, 1.0);
+  worldHeight = world.y;
+  vec2 pixel = world.xz / window.texelSize - vec2(window.origin);
+  gl_Position = vec4(pixel / float(window.resolution) * 2.0 - 1.0, 0.5, 1.0);
+}
+)";
+
+constexpr std::string_view kMeshFragment = R"(
+layout(location = 0) in float worldHeight;
+void main() {
+  ivec2 texel = window.origin + ivec2(gl_FragCoord.xy);
+  float depth = min(window.surfaceHeight - worldHeight, window.snowDepth);
+  uint packed = toQuanta(depth) << 16;
+  if (packed != 0u) atomicMax(heights[storageIndex(texel)], packed);
+}
+)";
+
+std::string join(std::string_view body) {
+  return std::string(kComputeHeader) + std::string(kTexelEncoding) + std::string(body);
+}
+std::string joinMesh(std::string_view body) {
+  return std::string(kMeshHeader) + std::string(kTexelEncoding) + std::string(body);
+}
 
 }  // namespace
 
@@ -131,6 +183,16 @@ std::string_view normalShaderSource() {
 }
 std::string_view refillShaderSource() {
   static const std::string source = join(kRefill);
+  return source;
+}
+std::string_view meshVertexShaderSource() {
+  // No Heights here: a vertex stage that declares a writable buffer would need
+  // vertexPipelineStoresAndAtomics.
+  static const std::string source = std::string(kMeshHeader) + std::string(kMeshVertex);
+  return source;
+}
+std::string_view meshFragmentShaderSource() {
+  static const std::string source = joinMesh(kMeshFragment);
   return source;
 }
 

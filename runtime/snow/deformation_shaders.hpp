@@ -1,5 +1,5 @@
-// GLSL 450 of the deformation pass (issue 5, §2): stamps, normals over touched
-// rectangles, and the global refill. Compiled at start-up through the project's
+// GLSL 450 of the deformation pass: stamps, normals over touched rectangles, the
+// global refill, and the mesh interactors' depth-from-below raster. Compiled at start-up through the project's
 // glslang wrapper; the descriptor layout comes from their SPIRV-Cross reflection.
 #pragma once
 #include <string>
@@ -10,5 +10,7 @@ namespace wg::snow {
 std::string_view stampShaderSource();
 std::string_view normalShaderSource();
 std::string_view refillShaderSource();
+std::string_view meshVertexShaderSource();
+std::string_view meshFragmentShaderSource();
 
 }  // namespace wg::snow

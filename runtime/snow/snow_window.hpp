@@ -35,6 +35,11 @@ struct WindowSettings {
   // stored longest ago are dropped (print_tile_store.hpp). 16 MiB: twice the window's
   // height and normal planes.
   std::size_t printStoreBudget = std::size_t(16) << 20;
+  // Tiles refilled per frame at most (refill_schedule.hpp): the refill of the whole map
+  // is spread over frames instead of rewriting it at once. 4 tiles cost ~0.25 ms on
+  // lavapipe, and a window full of prints (1024 tiles) is refilled every 4.3 s, faster
+  // than heavy snowfall makes a quantum due (7.2 s).
+  std::uint32_t refillTilesPerFrame = 4;
 };
 inline constexpr std::uint32_t kMaxTileTexels = 256;
 
@@ -72,5 +77,15 @@ class SnowWindow {
 // Floor division and modulo for negative world coordinates.
 constexpr int floorDiv(int a, int b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 constexpr int floorMod(int a, int b) { return a - floorDiv(a, b) * b; }
+
+// The world tiles a non-empty rectangle of texels reaches, first to last inclusive.
+struct TileSpan {
+  glm::ivec2 first{0}, last{-1};
+};
+constexpr TileSpan tilesReached(const TexelRect& rect, int tileTexels) {
+  glm::ivec2 hi = rect.min + rect.size - 1;
+  return {{floorDiv(rect.min.x, tileTexels), floorDiv(rect.min.y, tileTexels)},
+          {floorDiv(hi.x, tileTexels), floorDiv(hi.y, tileTexels)}};
+}
 
 }  // namespace wg::snow

@@ -18,7 +18,7 @@ void forEachTile(const TexelRect& rect, int tileTexels, Visit&& visit) {
 // Moves a tile's texels out of the map (into the store when any is deformed) and
 // leaves the slots untouched and flat for whatever enters there.
 bool evictTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, PrintTileStore& store,
-               std::uint64_t refillQuanta) {
+               RefillSchedule& schedule, std::uint64_t refillQuanta) {
   int n = window.tileTexels();
   std::vector<std::uint32_t> dense(std::size_t(n) * std::size_t(n));
   for (int z = 0; z < n; ++z)
@@ -27,30 +27,37 @@ bool evictTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, Prin
       dense[std::size_t(z * n + x)] = std::exchange(texels.heights[slot], 0u);
       texels.normals[slot] = 0;  // packNormal of straight up
     }
-  StoredTile stored = packTile(dense, refillQuanta);
+  StoredTile stored = packTile(dense, schedule.left(tile, refillQuanta));
   if (stored.heights.empty()) return false;
   store.put(tile, std::move(stored));
   return true;
 }
 
 bool restoreTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, PrintTileStore& store,
-                 std::uint64_t refillQuanta) {
+                 RefillSchedule& schedule, std::uint64_t refillQuanta) {
   auto stored = store.take(tile);
-  if (!stored) return false;
+  if (!stored) {
+    schedule.entered(tile, 0, refillQuanta);
+    return false;
+  }
   std::uint64_t missed = refillQuanta - stored->refillAtEviction;
   auto quanta = static_cast<std::uint32_t>(std::min<std::uint64_t>(missed, kMaxQuanta));
   int n = window.tileTexels();
+  std::uint32_t deepest = 0;
   for (std::size_t i = 0; i < stored->heights.size(); ++i) {
     glm::ivec2 at(stored->positions[i] % n, stored->positions[i] / n);
-    texels.heights[window.storageIndex(tile * n + at)] = refillTexel(stored->heights[i], quanta);
+    std::uint32_t texel = refillTexel(stored->heights[i], quanta);
+    texels.heights[window.storageIndex(tile * n + at)] = texel;
+    deepest = std::max({deepest, texel >> kDepthShift, texel & kMaxQuanta});
   }
+  schedule.entered(tile, deepest, refillQuanta);
   return true;
 }
 
 }  // namespace
 
 Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, PrintTileStore& store,
-                    std::uint64_t refillQuanta) {
+                    RefillSchedule& schedule, std::uint64_t refillQuanta) {
   Recentring out;
   glm::ivec2 target = window.originFor(camera);
   if (target == window.origin()) return out;
@@ -60,13 +67,13 @@ Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, Prin
   forEachTile(before, n, [&](glm::ivec2 tile) {
     if (after.contains(tile * n)) return;
     ++out.evicted;
-    out.stored += evictTile(window, texels, tile, store, refillQuanta);
+    out.stored += evictTile(window, texels, tile, store, schedule, refillQuanta);
   });
   window.setOrigin(target);
   forEachTile(after, n, [&](glm::ivec2 tile) {
     if (before.contains(tile * n)) return;
     out.enteredRects.push_back(TexelRect{tile * n, glm::ivec2(n)}.grown(1).intersect(window.rect()));
-    if (!restoreTile(window, texels, tile, store, refillQuanta)) return;
+    if (!restoreTile(window, texels, tile, store, schedule, refillQuanta)) return;
     ++out.restored;
     out.restoredRects.push_back(TexelRect{tile * n, glm::ivec2(n)}.grown(1).intersect(window.rect()));
   });
@@ -74,9 +81,10 @@ Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, Prin
   return out;
 }
 
-void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store, std::uint64_t refillQuanta) {
+void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store, RefillSchedule& schedule,
+              std::uint64_t refillQuanta) {
   forEachTile(window.rect(), window.tileTexels(),
-              [&](glm::ivec2 tile) { evictTile(window, texels, tile, store, refillQuanta); });
+              [&](glm::ivec2 tile) { evictTile(window, texels, tile, store, schedule, refillQuanta); });
 }
 
 }  // namespace wg::snow

@@ -10,6 +10,7 @@
 
 #include "runtime/snow/map_texels.hpp"
 #include "runtime/snow/print_tile_store.hpp"
+#include "runtime/snow/refill_schedule.hpp"
 #include "runtime/snow/snow_window.hpp"
 
 namespace wg::snow {
@@ -21,14 +22,17 @@ struct Recentring {
   // Every tile that entered (restored or fresh), grown by one texel and clipped: what
   // a GPU copy of the map derived from the texels (its surface image) must redo.
   std::vector<TexelRect> enteredRects;
+  double gpuMilliseconds = 0.0;  // what redoing them took on a GPU map
   bool moved() const { return evicted != 0; }
 };
 
+// `schedule` says how much refill each leaving tile has had, and learns what entered.
 Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, PrintTileStore& store,
-                    std::uint64_t refillQuanta);
+                    RefillSchedule& schedule, std::uint64_t refillQuanta);
 
 // Every tile of the window with any deformation goes to the store (the camera jumped
 // away, or the layer is being torn down but its prints should outlive it).
-void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store, std::uint64_t refillQuanta);
+void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store, RefillSchedule& schedule,
+              std::uint64_t refillQuanta);
 
 }  // namespace wg::snow

@@ -5,7 +5,7 @@
 
 namespace wg::vk {
 
-Buffer::Buffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage) : size_(size) {
+Buffer::Buffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, BufferMemory kind) : size_(size) {
   VkDevice device = ctx.device();
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size;
@@ -18,14 +18,17 @@ Buffer::Buffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage) : size
   vkGetBufferMemoryRequirements(device, buffer, &req);
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex =
-      ctx.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  if (alloc.memoryTypeIndex == UINT32_MAX) throw std::runtime_error("no host-visible memory for a buffer");
+  bool hostVisible = kind == BufferMemory::HostVisible;
+  alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                                                    VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                                                                              : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  if (alloc.memoryTypeIndex == UINT32_MAX)
+    throw std::runtime_error(hostVisible ? "no host-visible memory for a buffer" : "no device-local memory for a buffer");
   VkDeviceMemory memory;
   check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
   memory_ = UniqueDeviceMemory(device, memory);
   check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
-  check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
+  if (hostVisible) check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
 }
 
 Buffer::Buffer(Buffer&& o) noexcept { *this = std::move(o); }

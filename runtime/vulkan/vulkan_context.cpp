@@ -165,6 +165,8 @@ bool Context::createDevice(std::string& error) {
   VkPhysicalDeviceFeatures features{};
   features.samplerAnisotropy = supported.samplerAnisotropy;
   samplerAnisotropy_ = supported.samplerAnisotropy == VK_TRUE;
+  features.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
+  fragmentStoresAndAtomics_ = supported.fragmentStoresAndAtomics == VK_TRUE;
   std::uint32_t extensionCount = 0;
   vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, nullptr);
   std::vector<VkExtensionProperties> available(extensionCount);
@@ -201,7 +203,21 @@ bool Context::createDevice(std::string& error) {
 }
 
 Context::~Context() {
+  if (borrowed_) device_.release();
   if (device_) vkDeviceWaitIdle(device_.get());
+}
+
+std::unique_ptr<Context> Context::borrow(VkPhysicalDevice physical, VkDevice device, std::uint32_t queueFamily,
+                                         bool fragmentStoresAndAtomics) {
+  std::unique_ptr<Context> ctx(new Context());
+  ctx->borrowed_ = true;
+  ctx->physical_ = physical;
+  ctx->device_ = UniqueDevice(device);
+  ctx->queueFamily_ = queueFamily;
+  ctx->fragmentStoresAndAtomics_ = fragmentStoresAndAtomics;
+  vkGetPhysicalDeviceProperties(physical, &ctx->properties_);
+  vkGetPhysicalDeviceMemoryProperties(physical, &ctx->memory_);
+  return ctx;
 }
 
 std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags flags) const {
@@ -211,6 +227,7 @@ std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFl
 }
 
 UniqueCommandBuffer Context::beginOneTime() {
+  if (borrowed_) throw std::logic_error("submitAndWait on an engine's device: record into its command buffers instead");
   VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   info.commandPool = commandPool_.get();
   info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;

@@ -22,6 +22,11 @@ class Context {
  public:
   // Returns null and sets error when no usable device exists.
   static std::unique_ptr<Context> create(const ContextOptions& options, std::string& error);
+  // Wraps a device an engine created and keeps: nothing is destroyed or waited on when
+  // it goes, it has no command pool (submitAndWait is unavailable), and
+  // `fragmentStoresAndAtomics` says whether the engine enabled that feature.
+  static std::unique_ptr<Context> borrow(VkPhysicalDevice physical, VkDevice device, std::uint32_t queueFamily,
+                                         bool fragmentStoresAndAtomics);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -40,6 +45,8 @@ class Context {
   // VK_KHR_create_renderpass2), which a multisampled colour pass resolves its depth with.
   bool samplerAnisotropy() const { return samplerAnisotropy_; }
   bool depthStencilResolve() const { return depthStencilResolve_; }
+  // Storage writes and atomics from fragment shaders (the snow's mesh interactors).
+  bool fragmentStoresAndAtomics() const { return fragmentStoresAndAtomics_; }
 
   // Validation messages (warnings and errors) seen so far.
   const std::vector<std::string>& validationMessages() const { return messages_; }
@@ -82,7 +89,8 @@ class Context {
   UniqueCommandPool commandPool_;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_{};
-  bool samplerAnisotropy_ = false, depthStencilResolve_ = false;
+  bool samplerAnisotropy_ = false, depthStencilResolve_ = false, fragmentStoresAndAtomics_ = false;
+  bool borrowed_ = false;
 };
 
 // Throws std::runtime_error naming the call when a Vulkan call fails.

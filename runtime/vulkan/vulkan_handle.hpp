@@ -35,6 +35,8 @@ class Handle {
 
   T get() const { return handle_; }
   explicit operator bool() const { return handle_ != T{}; }
+  // Gives the object up without destroying it (a device an engine owns).
+  T release() noexcept { return std::exchange(handle_, T{}); }
   void reset() noexcept {
     if (handle_ == T{}) return;
     if constexpr (std::is_same_v<Parent, NoParent>) Destroy(handle_, nullptr);

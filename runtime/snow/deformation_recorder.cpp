@@ -1,0 +1,269 @@
+#include "runtime/snow/deformation_recorder.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "runtime/snow/beyond_window_stamping.hpp"
+
+namespace wg::snow {
+
+namespace {
+constexpr VkBufferUsageFlags kMapUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+constexpr VkBufferUsageFlags kUploadUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+// Stamps and rectangles go up with vkCmdUpdateBuffer (at most 64 KiB a call), so the
+// upload is part of the recorded commands and needs no host buffer to guard; a frame
+// with more stamps records several batches.
+constexpr std::size_t kBatch = 1024;
+static_assert(kBatch * sizeof(Stamp) <= 65536, "one vkCmdUpdateBuffer per batch");
+// Half floats hold the height to ~0.2 mm and the normal to ~1e-3: plenty for shading,
+// half the memory of RGBA32F.
+constexpr VkFormat kSurfaceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+// Everything that reads or writes the map: the compute passes, the mesh raster and
+// the copies.
+constexpr VkPipelineStageFlags kMapStages =
+    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+constexpr VkAccessFlags kMapWrites = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+constexpr VkAccessFlags kMapAccess =
+    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags src, VkAccessFlags srcAccess, VkPipelineStageFlags dst,
+                   VkAccessFlags dstAccess) {
+  VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  b.srcAccessMask = srcAccess;
+  b.dstAccessMask = dstAccess;
+  vkCmdPipelineBarrier(cmd, src, dst, 0, 1, &b, 0, nullptr, 0, nullptr);
+}
+
+// Between any two steps: the map's earlier writes before its later reads and writes
+// (and earlier reads before later writes: the upload buffers are reused each batch).
+void mapBarrier(VkCommandBuffer cmd) { memoryBarrier(cmd, kMapStages, kMapWrites, kMapStages, kMapAccess); }
+
+glm::ivec4 packRect(const TexelRect& r) { return {r.min.x, r.min.y, r.size.x, r.size.y}; }
+
+template <typename T>
+void update(VkCommandBuffer cmd, const vk::Buffer& buffer, const std::vector<T>& data, std::size_t first,
+            std::size_t count) {
+  vkCmdUpdateBuffer(cmd, buffer.handle(), 0, count * sizeof(T), data.data() + first);
+}
+
+glm::ivec2 largest(const std::vector<glm::ivec4>& rects, std::size_t first, std::size_t count) {
+  glm::ivec2 extent(0);
+  for (std::size_t i = first; i < first + count; ++i) extent = glm::max(extent, glm::ivec2(rects[i].z, rects[i].w));
+  return extent;
+}
+}  // namespace
+
+DeformationRecorder::DeformationRecorder(vk::Context& ctx, const WindowSettings& settings, glm::vec2 camera,
+                                         std::uint32_t framesInFlight)
+    : ctx_(ctx), window_(settings), pass_(ctx), store_(settings.printStoreBudget), schedule_(window_),
+      framesInFlight_(std::max(framesInFlight, 1u)) {
+  window_.setOrigin(window_.originFor(camera));
+  VkDeviceSize bytes = window_.texelCount() * sizeof(std::uint32_t);
+  heights_ = vk::Buffer(ctx_, bytes, kMapUsage, vk::BufferMemory::DeviceLocal);
+  normals_ = vk::Buffer(ctx_, bytes, kMapUsage, vk::BufferMemory::DeviceLocal);
+  stamps_ = vk::Buffer(ctx_, kBatch * sizeof(Stamp), kUploadUsage, vk::BufferMemory::DeviceLocal);
+  stampBoxes_ = vk::Buffer(ctx_, kBatch * sizeof(glm::ivec4), kUploadUsage, vk::BufferMemory::DeviceLocal);
+  normalRects_ = vk::Buffer(ctx_, kBatch * sizeof(glm::ivec4), kUploadUsage, vk::BufferMemory::DeviceLocal);
+  refillTiles_ = vk::Buffer(ctx_, kBatch * sizeof(glm::ivec4), kUploadUsage, vk::BufferMemory::DeviceLocal);
+  readback_ = vk::Buffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  surface_ = vk::Image2D(ctx_, settings.resolution, settings.resolution, kSurfaceFormat,
+                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT);  // cleared on first use; read back by tests
+  pass_.bind("Heights", heights_);
+  pass_.bind("Normals", normals_);
+  pass_.bind("Stamps", stamps_);
+  pass_.bind("StampBoxes", stampBoxes_);
+  pass_.bind("NormalRects", normalRects_);
+  pass_.bind("RefillTiles", refillTiles_);
+  pass_.bindSurface(surface_);
+  if (ctx_.fragmentStoresAndAtomics())
+    meshPass_ = std::make_unique<MeshInteractorPass>(ctx_, settings.resolution, heights_);
+}
+
+// The owner makes sure the device is done with the recorded work before this.
+DeformationRecorder::~DeformationRecorder() = default;
+
+void DeformationRecorder::beginFrame(std::uint32_t frameIndex) {
+  if (frameIndex >= framesInFlight_)
+    throw std::invalid_argument("snow frame index " + std::to_string(frameIndex) + " is not below the " +
+                                std::to_string(framesInFlight_) + " frames in flight");
+  frame_ = frameIndex;
+  if (frameIndex != readbackFrame_) return;
+  if (readbackState_ == Readback::Copying) readbackState_ = Readback::Ready;
+  else if (readbackState_ == Readback::Uploading) readbackState_ = Readback::Idle;
+}
+
+WindowConstants DeformationRecorder::constants(std::uint32_t refillQuanta) const {
+  WindowConstants c{};
+  int n = window_.resolution();
+  c.origin[0] = window_.origin().x;
+  c.origin[1] = window_.origin().y;
+  c.originSlot[0] = floorMod(window_.origin().x, n);
+  c.originSlot[1] = floorMod(window_.origin().y, n);
+  c.resolution = n;
+  c.texelSize = window_.texelSize();
+  c.refillQuanta = refillQuanta;
+  return c;
+}
+
+void DeformationRecorder::clearOnce(VkCommandBuffer cmd) {
+  if (cleared_) return;
+  // Untouched snow: no offset, normal straight up (packNormal of up is 0).
+  vkCmdFillBuffer(cmd, heights_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  vkCmdFillBuffer(cmd, normals_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  VkClearColorValue flat{{0.f, 0.f, 1.f, 0.f}};
+  VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdClearColorImage(cmd, surface_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &flat, 1, &all);
+  vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  mapBarrier(cmd);
+  cleared_ = true;
+}
+
+template <typename Record>
+void DeformationRecorder::withSurfaceWritable(VkCommandBuffer cmd, Record&& record) {
+  vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                          VK_IMAGE_LAYOUT_GENERAL);
+  mapBarrier(cmd);
+  record();
+  vk::Image2D::transition(cmd, surface_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+void DeformationRecorder::recordNormals(VkCommandBuffer cmd, const std::vector<TexelRect>& rects) {
+  std::vector<glm::ivec4> packed;
+  for (const TexelRect& r : rects)
+    if (!r.empty()) packed.push_back(packRect(r));
+  WindowConstants c = constants(0);
+  for (std::size_t first = 0; first < packed.size(); first += kBatch) {
+    std::size_t count = std::min(kBatch, packed.size() - first);
+    mapBarrier(cmd);
+    update(cmd, normalRects_, packed, first, count);
+    mapBarrier(cmd);
+    pass_.recordNormals(cmd, c, static_cast<std::uint32_t>(count), largest(packed, first, count));
+  }
+}
+
+void DeformationRecorder::recordStamps(VkCommandBuffer cmd, std::span<const Stamp> stamps) {
+  clearOnce(cmd);
+  schedule_.stamped(window_, stamps, refill_.totalQuanta());
+  stampBeyondWindow(window_, stamps, store_, refill_.totalQuanta());
+  std::vector<Stamp> records;
+  std::vector<glm::ivec4> boxes, rects;
+  for (const Stamp& s : stamps) {
+    TexelRect box = stampBounds(s, window_);
+    if (box.empty()) continue;  // entirely outside the window: the store has it
+    records.push_back(s);
+    boxes.push_back(packRect(box));
+    rects.push_back(packRect(box.grown(1).intersect(window_.rect())));
+  }
+  if (records.empty()) return;
+  WindowConstants c = constants(0);
+  withSurfaceWritable(cmd, [&] {
+    for (std::size_t first = 0; first < records.size(); first += kBatch) {
+      std::size_t count = std::min(kBatch, records.size() - first);
+      update(cmd, stamps_, records, first, count);
+      update(cmd, stampBoxes_, boxes, first, count);
+      update(cmd, normalRects_, rects, first, count);
+      mapBarrier(cmd);
+      auto layers = static_cast<std::uint32_t>(count);
+      pass_.recordStamps(cmd, c, layers, largest(boxes, first, count));
+      mapBarrier(cmd);
+      pass_.recordNormals(cmd, c, layers, largest(rects, first, count));
+      mapBarrier(cmd);
+    }
+  });
+}
+
+void DeformationRecorder::recordMeshes(VkCommandBuffer cmd, std::span<const MeshInteractor> meshes,
+                                       const SnowLevel& level) {
+  clearOnce(cmd);
+  if (meshes.empty()) return;
+  if (!meshPass_) throw std::logic_error("mesh interactors need the device feature fragmentStoresAndAtomics");
+  std::vector<TexelRect> rects;
+  for (const MeshInteractor& m : meshes) {
+    glm::ivec2 lo = window_.texelAt(m.footprintMin), hi = window_.texelAt(m.footprintMax);
+    rects.push_back(TexelRect{lo, hi - lo + 1}.grown(1).intersect(window_.rect()));
+  }
+  withSurfaceWritable(cmd, [&] {
+    meshPass_->record(cmd, constants(0), level, meshes);
+    recordNormals(cmd, rects);
+  });
+}
+
+bool DeformationRecorder::recordRefill(VkCommandBuffer cmd, double metresPerSecond, double seconds) {
+  clearOnce(cmd);
+  refill_.advance(metresPerSecond, seconds);
+  std::vector<TileRefill> due = schedule_.due(window_, refill_.totalQuanta(), window_.settings().refillTilesPerFrame);
+  if (due.empty()) return false;
+  int n = window_.tileTexels();
+  std::vector<glm::ivec4> tiles;
+  std::vector<TexelRect> rects;
+  for (const TileRefill& t : due) {
+    tiles.push_back({t.tile.x * n, t.tile.y * n, n, static_cast<int>(t.quanta)});
+    rects.push_back(TexelRect{t.tile * n, glm::ivec2(n)}.grown(1).intersect(window_.rect()));
+  }
+  WindowConstants c = constants(0);
+  withSurfaceWritable(cmd, [&] {
+    for (std::size_t first = 0; first < tiles.size(); first += kBatch) {
+      std::size_t count = std::min(kBatch, tiles.size() - first);
+      mapBarrier(cmd);
+      update(cmd, refillTiles_, tiles, first, count);
+      mapBarrier(cmd);
+      pass_.recordRefill(cmd, c, static_cast<std::uint32_t>(count), n);
+    }
+    recordNormals(cmd, rects);
+  });
+  return true;
+}
+
+Recentring DeformationRecorder::recordFollow(VkCommandBuffer cmd, glm::vec2 camera) {
+  clearOnce(cmd);
+  if (readbackState_ == Readback::Ready) return harvestReadback(cmd, camera);
+  if (readbackState_ != Readback::Idle || window_.originFor(camera) == window_.origin()) return {};
+  mapBarrier(cmd);
+  VkBufferCopy all{0, 0, heights_.size()};
+  vkCmdCopyBuffer(cmd, heights_.handle(), readback_.handle(), 1, &all);
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                VK_ACCESS_HOST_READ_BIT);
+  readbackState_ = Readback::Copying;
+  readbackFrame_ = frame_;
+  return {};
+}
+
+Recentring DeformationRecorder::harvestReadback(VkCommandBuffer cmd, glm::vec2 camera) {
+  TexelRect before = window_.rect();
+  scratchNormals_.resize(window_.texelCount());
+  MapTexels texels{{static_cast<std::uint32_t*>(readback_.mapped()), window_.texelCount()}, scratchNormals_};
+  Recentring r = recentre(window_, texels, camera, store_, schedule_, refill_.totalQuanta());
+  readbackState_ = Readback::Idle;
+  if (!r.moved()) return r;
+  // The entering tiles' rows, from the host copy to their toroidal slots.
+  std::vector<VkBufferCopy> rows;
+  int n = window_.tileTexels();
+  TexelRect now = window_.rect();
+  for (int tz = now.min.y; tz < now.min.y + now.size.y; tz += n)
+    for (int tx = now.min.x; tx < now.min.x + now.size.x; tx += n) {
+      if (before.contains({tx, tz})) continue;
+      for (int z = 0; z < n; ++z) {
+        VkDeviceSize offset = window_.storageIndex({tx, tz + z}) * sizeof(std::uint32_t);
+        rows.push_back({offset, offset, VkDeviceSize(n) * sizeof(std::uint32_t)});
+      }
+    }
+  withSurfaceWritable(cmd, [&] {
+    vkCmdCopyBuffer(cmd, readback_.handle(), heights_.handle(), static_cast<std::uint32_t>(rows.size()), rows.data());
+    recordNormals(cmd, r.enteredRects);
+  });
+  readbackState_ = Readback::Uploading;
+  readbackFrame_ = frame_;
+  return r;
+}
+
+void DeformationRecorder::recordReadBarrier(VkCommandBuffer cmd, VkPipelineStageFlags stages, VkAccessFlags access) {
+  memoryBarrier(cmd, kMapStages, kMapWrites, stages, access);
+}
+
+}  // namespace wg::snow

@@ -1,0 +1,92 @@
+// The deformable snow's GPU work, recorded into a command buffer the caller submits:
+// stamps, mesh interactors, normals (and the surface image materials sample), refill,
+// and recentring. Nothing here submits or waits, so an engine records it into its own
+// frame; GpuDeformationMap submits and waits around the same calls for the renderer
+// and the tests. The map's buffers and the surface image are device-local.
+//
+// Recentring needs the tiles that leave on the CPU (the print store): one frame records
+// a copy of the height plane into a host buffer, and the first frame that reuses that
+// frame's index (so its commands have completed) moves the window on the CPU and
+// records the entering tiles' upload and normals. Stamps on tiles that leave in
+// between are lost; they are half a window from the camera.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "runtime/snow/deformation_pass.hpp"
+#include "runtime/snow/deformation_refill.hpp"
+#include "runtime/snow/mesh_interactor_pass.hpp"
+#include "runtime/snow/print_tile_store.hpp"
+#include "runtime/snow/refill_schedule.hpp"
+#include "runtime/snow/snow_stamp.hpp"
+#include "runtime/snow/window_recentring.hpp"
+
+namespace wg::snow {
+
+class DeformationRecorder {
+ public:
+  // `framesInFlight` frame indices guard the host readback buffer (at least 1).
+  DeformationRecorder(vk::Context& ctx, const WindowSettings& settings, glm::vec2 camera,
+                      std::uint32_t framesInFlight);
+  ~DeformationRecorder();
+  DeformationRecorder(const DeformationRecorder&) = delete;
+  DeformationRecorder& operator=(const DeformationRecorder&) = delete;
+
+  // Starts a frame. The caller guarantees that the commands recorded the last time
+  // `frameIndex` (< framesInFlight) was used have completed.
+  void beginFrame(std::uint32_t frameIndex);
+
+  // Each records into `cmd` outside a render pass. The surface image is in
+  // SHADER_READ_ONLY_OPTIMAL before and after; the first call also clears the map.
+  Recentring recordFollow(VkCommandBuffer cmd, glm::vec2 camera);
+  void recordStamps(VkCommandBuffer cmd, std::span<const Stamp> stamps);
+  void recordMeshes(VkCommandBuffer cmd, std::span<const MeshInteractor> meshes, const SnowLevel& level);
+  // Refill at `metresPerSecond` for `seconds`, over at most refillTilesPerFrame of the
+  // tiles that hold prints and are owed a quantum (refill_schedule.hpp); records only
+  // when one is.
+  bool recordRefill(VkCommandBuffer cmd, double metresPerSecond, double seconds);
+  // Makes every earlier write to the map and the surface image visible to `stages`.
+  static void recordReadBarrier(VkCommandBuffer cmd, VkPipelineStageFlags stages, VkAccessFlags access);
+
+  const SnowWindow& window() const { return window_; }
+  const PrintTileStore& store() const { return store_; }
+  bool meshInteractors() const { return static_cast<bool>(meshPass_); }
+  const vk::Buffer& heightBuffer() const { return heights_; }
+  const vk::Buffer& normalBuffer() const { return normals_; }
+  const vk::Image2D& surfaceImage() const { return surface_; }
+  std::size_t mapBytes() const { return heights_.size() + normals_.size(); }
+
+ private:
+  enum class Readback : std::uint8_t { Idle, Copying, Ready, Uploading };
+
+  WindowConstants constants(std::uint32_t refillQuanta) const;
+  // The map and the surface image start untouched: recorded by the first call.
+  void clearOnce(VkCommandBuffer cmd);
+  // Makes the surface image writable around `record`.
+  template <typename Record>
+  void withSurfaceWritable(VkCommandBuffer cmd, Record&& record);
+  // Normals (and the surface image) over `rects`, in batches the rect buffer holds.
+  void recordNormals(VkCommandBuffer cmd, const std::vector<TexelRect>& rects);
+  Recentring harvestReadback(VkCommandBuffer cmd, glm::vec2 camera);
+
+  vk::Context& ctx_;
+  SnowWindow window_;
+  DeformationPass pass_;
+  vk::Buffer heights_, normals_, stamps_, stampBoxes_, normalRects_, refillTiles_;
+  vk::Buffer readback_;  // host-visible copy of the height plane for recentring
+  std::vector<std::uint32_t> scratchNormals_;  // the CPU's normals while recentring (the GPU redoes them)
+  vk::Image2D surface_;
+  std::unique_ptr<MeshInteractorPass> meshPass_;  // null without fragmentStoresAndAtomics
+  PrintTileStore store_;
+  DeformationRefill refill_;
+  RefillSchedule schedule_;
+  std::uint32_t framesInFlight_, frame_ = 0;
+  Readback readbackState_ = Readback::Idle;
+  std::uint32_t readbackFrame_ = 0;
+  bool cleared_ = false;
+};
+
+}  // namespace wg::snow
