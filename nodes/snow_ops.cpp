@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
@@ -13,7 +14,21 @@ namespace wg {
 
 namespace {
 // The deformation map's default extent: 1024 texels of 4 cm (runtime/snow/snow_window.hpp).
-constexpr float kDefaultMapExtent = 40.96f;
+constexpr float kDefaultMapExtent = 40.96f, kDefaultMapTexels = 1024.f;
+
+// Four bilinear taps of the deformation map half a texel apart, averaged.
+std::string_view deformationTaps() {
+  static const std::string code = [] {
+    auto tap = [](const char* offset) {
+      return std::string("{@sampleFn}(sampler2D(wg_snow_deformation_map, wg_snow_deformation_sampler), "
+                         "{position}.xz / {extent} + vec2(") +
+             offset + ") / {texels}{@lodArg})";
+    };
+    return "(0.25 * (" + tap("-0.5, -0.5") + " + " + tap("0.5, -0.5") + " + " + tap("-0.5, 0.5") + " + " +
+           tap("0.5, 0.5") + "))";
+  }();
+  return code;
+}
 
 float smoothstep(float e0, float e1, float x) {
   float t = std::clamp((x - e0) / (e1 - e0), 0.f, 1.f);
@@ -25,14 +40,17 @@ void appendSnowOps(std::vector<OpDef>& ops) {
   constexpr auto V = OpPurity::Varying;
   {
     // The map is toroidal: world xz / extent wraps with the repeat sampler onto the
-    // texel that holds it (runtime/snow/snow_window.hpp).
+    // texel that holds it (runtime/snow/snow_window.hpp). Four bilinear taps half a
+    // texel apart (a 3 x 3 tent): a print's wall is steeper than one 4 cm texel, and a
+    // single tap per vertex or pixel shows the texel staircase along its edge.
     OpDef map{"snow_deformation", "snow",
-              "the deformation map at a world point: height offset (m) and the normal in tangent space of a "
-              "level layer (x along +x, y along +z)",
+              "the deformation map at a world point, smoothed over a texel: height offset (m) and the normal in "
+              "tangent space of a level layer (x along +x, y along +z)",
               {{"position", PortType::Vec3, std::nullopt},
-               {"extent", PortType::Float, Value::scalar(kDefaultMapExtent), 1e-3f, 1e5f}},
+               {"extent", PortType::Float, Value::scalar(kDefaultMapExtent), 1e-3f, 1e5f},
+               {"texels", PortType::Float, Value::scalar(kDefaultMapTexels), 1.f, 65536.f}},
               ValueRule::Fixed, ValueType::Vec4,
-              "{@sampleFn}(sampler2D(wg_snow_deformation_map, wg_snow_deformation_sampler), {position}.xz / {extent}{@lodArg})",
+              deformationTaps(),
               "",
               // Texel: (height, world normal x, y, z); a level layer's tangent frame is
               // (+x, +z, +y), so its tangent-space normal is .ywz.

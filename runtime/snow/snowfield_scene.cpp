@@ -16,6 +16,7 @@ constexpr float kGroundHeight = -0.05f;
 constexpr float kGroundSize = 160.f;   // metres: the camera's whole trip and the shadow map's reach
 constexpr int kGroundCells = 40;
 constexpr float kEyeHeight = 2.2f, kLookAhead = 7.f, kFovDegrees = 55.f;
+constexpr float kFineSquareAhead = 6.f;  // m: the frame's lower edge is 2 m ahead
 constexpr float kCameraSpeed = 3.f;  // m/s while the camera travels
 // The camera's trip (seconds): watch the prints form, travel 60 m along +x (out of the
 // 41 m window), wait, come back.
@@ -160,8 +161,11 @@ SnowfieldMoment SnowfieldAnimation::advanceTo(double seconds) {
   m.time = time_;
   glm::vec3 eye = cameraEye(time_);
   m.camera = {"follow", eye, eye + glm::vec3(0.f, -kEyeHeight, kLookAhead), kFovDegrees};
-  m.objectModels[kSnowLayerObject] =
-      glm::translate(glm::mat4(1.f), patchGridOrigin(settings_.grid, eye, 0.f));
+  // The layer's fine square is centred ahead of the camera, on the ground it looks at.
+  glm::vec3 forward = m.camera.target - eye;
+  forward.y = 0.f;
+  glm::vec3 looked = eye + glm::normalize(forward) * kFineSquareAhead;
+  m.objectModels[kSnowLayerObject] = glm::translate(glm::mat4(1.f), patchGridOrigin(settings_.grid, looked, 0.f));
   for (std::size_t i = 0; i < walkers_.size(); ++i) {
     const ScriptedPath& p = walkers_[i].path;
     float s = p.distanceAt(time_);

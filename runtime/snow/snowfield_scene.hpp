@@ -26,7 +26,10 @@ inline constexpr const char* kSnowLayerGraph = "snow_layer";
 struct SnowfieldSettings {
   WindowSettings window;      // the deformation map (default 1024² at 4 cm)
   PatchGridSettings grid;     // the layer's mesh (default: the seed's 8 x 8 patches of 8 m)
-  SnowWeatherSettings weather{0.3f};  // 30 cm at full cover: deep enough to see prints
+  // 12 cm at full cover (graphs/snow_layer.json's snowDepth): prints 8 cm deep whose
+  // floors the camera sees, and shallower than the walkers lift their feet, so every
+  // footprint stands alone.
+  SnowWeatherSettings weather{0.12f};
   double frameSeconds = 1.0 / 30.0;   // simulation step
 };
 

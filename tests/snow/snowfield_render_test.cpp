@@ -36,6 +36,7 @@ struct Snowscape {
 
   explicit Snowscape(float snowLevel) {
     settings.grid.quadsPerPatch = 8;
+    settings.grid.fineHalfWidth = 0.f;
     settings.frameSeconds = 0.1;
     weather.conditions.temperature = -6.f;
     glm::vec3 sun = snowfieldTowardsSun();
