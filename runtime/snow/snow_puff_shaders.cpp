@@ -38,7 +38,9 @@ void main() {
 )";
 
 constexpr std::string_view kView = R"(
-layout(push_constant) uniform View { mat4 viewProjection; vec4 right; vec4 up; vec4 fade; } view;
+// right.w and up.w carry the sky's and the sun's light; sun holds the direction towards
+// the sun in the billboard's frame (right, up, towards the camera): 128 bytes in all.
+layout(push_constant) uniform View { mat4 viewProjection; vec4 right; vec4 up; vec4 sun; vec4 fade; } view;
 )";
 
 // Six vertices per particle; a free slot collapses outside the clip volume. The cloud
@@ -70,7 +72,9 @@ void main() {
 
 // Seed 3.3.2: fade where the billboard's depth reaches the scene's. Both are made
 // linear (metres) from the [0, 1] depth of the projection; the scene depth is the D32
-// float itself, not the seed's two 8-bit channels (eq. 3.1-3.4).
+// float itself, not the seed's two 8-bit channels (eq. 3.1-3.4). Lit as a ball of snow:
+// the sky everywhere, the sun by a half-Lambert term on the billboard's sphere normal
+// (a cloud scatters light round to its shaded side).
 constexpr std::string_view kFragment = R"(
 layout(set = 0, binding = 1) uniform texture2D SceneDepth;
 layout(set = 0, binding = 2) uniform sampler DepthSampler;
@@ -85,7 +89,11 @@ void main() {
   float scene = metres(texelFetch(sampler2D(SceneDepth, DepthSampler), ivec2(gl_FragCoord.xy), 0).r);
   float soft = clamp((scene - metres(gl_FragCoord.z)) / view.fade.z, 0.0, 1.0);
   float a = (1.0 - r2) * v_alpha * soft * view.fade.w;
-  out_color = vec4(vec3(v_shade) * a, a);  // premultiplied
+  vec3 n = vec3(v_corner, sqrt(1.0 - r2));
+  float sun = 0.5 + 0.5 * dot(n, view.sun.xyz);
+  const vec3 kSkyTint = vec3(0.9, 0.98, 1.12), kSunTint = vec3(1.0, 0.97, 0.92);
+  vec3 lit = v_shade * (view.right.w * kSkyTint + view.up.w * sun * sun * kSunTint);
+  out_color = vec4(lit * a, a);  // premultiplied
 }
 )";
 }  // namespace

@@ -21,9 +21,8 @@ constexpr float kTwoPi = 6.2831853f;
 constexpr float kLifeSpread = 0.3f, kSizeSpread = 0.3f, kSpeedLow = 0.5f, kJitter = 0.05f;
 // Launch elevation: most snow is kicked up and forward, little sideways.
 constexpr float kMinElevation = 0.7f, kMaxElevation = 1.35f;  // radians
-// Display brightness of the puffs: sunlit dust, a touch brighter than the snow under it
-// (which the tone curve puts near 0.9), so it reads against it and blooms.
-constexpr float kLowestShade = 0.95f, kBrightestShade = 1.1f;
+// Albedo of the kicked-up snow, per particle: clumps and powder differ a little.
+constexpr float kLowestShade = 0.85f, kBrightestShade = 1.f;
 constexpr float kOpacity = 0.6f;
 
 struct StepConstants {
@@ -33,8 +32,9 @@ struct StepConstants {
 };
 struct ViewConstants {
   glm::mat4 viewProjection;
-  glm::vec4 right, up;
-  glm::vec4 fade;  // near, far, softness, opacity
+  glm::vec4 right, up;  // w: the sky's and the sun's light
+  glm::vec4 sun;        // towards the sun in (right, up, towards the camera)
+  glm::vec4 fade;       // near, far, softness, opacity
 };
 
 // Deterministic draws in [0, 1): the lattice-noise hash of (particle, draw number).
@@ -120,7 +120,12 @@ void SnowPuffs::record(const ColourPassTargets& t) {
   glm::vec3 centre = unproject({0.f, 0.f, 0.5f});
   glm::vec3 right = glm::normalize(unproject({1.f, 0.f, 0.5f}) - centre);
   glm::vec3 up = glm::normalize(unproject({0.f, -1.f, 0.5f}) - centre);  // clip y points down
-  ViewConstants c{t.viewProjection, glm::vec4(right, 0.f), glm::vec4(up, 0.f),
+  glm::vec3 back = glm::normalize(glm::cross(right, up));  // towards the camera
+  glm::vec3 sun = glm::normalize(settings_.towardsSun);
+  ViewConstants c{t.viewProjection,
+                  glm::vec4(right, settings_.skyLight),
+                  glm::vec4(up, settings_.sunLight),
+                  glm::vec4(glm::dot(sun, right), glm::dot(sun, up), glm::dot(sun, back), 0.f),
                   {t.nearPlane, t.farPlane, settings_.softness, kOpacity}};
   overlay_.begin(t);
   VkDescriptorSet set = drawSet_->set();

@@ -20,7 +20,7 @@ namespace wg::snow {
 struct Particle {
   glm::vec4 positionAge{0.f};   // xyz world position, w age (s)
   glm::vec4 velocityLife{0.f};  // xyz velocity (m/s), w lifetime (s); 0 = free slot
-  glm::vec4 sizeShade{0.f};     // x billboard radius (m), y brightness, z the surface height it left
+  glm::vec4 sizeShade{0.f};     // x billboard radius (m), y albedo, z the surface height it left
 };
 
 struct PuffSettings {
@@ -34,6 +34,12 @@ struct PuffSettings {
   // at g / drag ~ 1.2 m/s, about the fall speed of snowflakes and small clumps.
   float drag = 8.f;
   float softness = 0.25f;         // m: depth difference over which a puff fades into the snow
+  // The light on a puff, in the colour target's display terms (it is drawn after tone
+  // mapping): fully sunlit it reaches sky + sun, kept under the sunlit snow's ~0.88 so
+  // a puff never outshines the snow it was kicked from or clips to white after bloom.
+  glm::vec3 towardsSun{0.f, 1.f, 0.f};
+  float sunLight = 0.3f;
+  float skyLight = 0.52f;  // all round, a little blue
 };
 
 class SnowPuffs {

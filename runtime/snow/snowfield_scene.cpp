@@ -47,6 +47,12 @@ std::vector<Walker> scriptedWalkers() {
   return {a, b};
 }
 
+PuffSettings litPuffs() {
+  PuffSettings p;
+  p.towardsSun = glm::normalize(kTowardsSun);
+  return p;
+}
+
 Vehicle scriptedVehicle() {
   Vehicle v;
   v.path = ScriptedPath({{-12.f, 7.f}, {12.f, 5.f}}, 3.f);
@@ -99,7 +105,7 @@ SnowfieldAnimation::SnowfieldAnimation(vk::Context& ctx, const SnowfieldSettings
       map_(ctx, settings.window, {kStart.x, kStart.z}),
       walkers_(scriptedWalkers()),
       vehicle_(scriptedVehicle()),
-      puffs_(ctx),
+      puffs_(ctx, litPuffs()),
       bloom_(ctx) {}
 
 // The first moment is just after a footfall (walker 0 steps at 2.68 s), so a puff hangs.

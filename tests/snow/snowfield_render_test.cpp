@@ -2,7 +2,7 @@
 // deformation map bound (issue 5, §4, §6, §7), on lavapipe with validation on: prints
 // show as packed snow, nothing ghosts where the camera travels, the prints are back
 // after the round trip, no snow means no prints; puffs fade into the snow against its
-// depth (§5) and bloom only adds light.
+// depth (§5), lit no brighter than the snow, and bloom only adds light.
 #include "runtime/snow/snowfield_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -113,6 +113,7 @@ TEST_F(Snowfield, PuffsShowInTheAirAndFadeIntoTheSnow) {
   RenderRequest request = scape.request(scape.animation->advanceTo(0.5));
   SceneRenderer& renderer = *scape.renderer;
   RenderedFrame plain = renderer.render(request);
+  float brightest = 0.f;  // the most a puff pixel gained over the snow behind it
   auto changedBy = [&](float y) {
     SnowPuffs puffs(*snowContext());
     glm::vec3 at(0.f, y, 1.f);  // 5 m in front of the camera, clear of walkers and rocks
@@ -122,10 +123,15 @@ TEST_F(Snowfield, PuffsShowInTheAirAndFadeIntoTheSnow) {
     withPuffs.afterColourPass = [&](const ColourPassTargets& t) { puffs.record(t); };
     RenderedFrame f = renderer.render(withPuffs);
     int changed = 0;
-    for (std::size_t i = 0; i < f.rgba.size(); i += 4) changed += std::abs(f.rgba[i] - plain.rgba[i]) > 0.02f;
+    for (std::size_t i = 0; i < f.rgba.size(); i += 4) {
+      changed += std::abs(f.rgba[i] - plain.rgba[i]) > 0.02f;
+      for (int c = 0; c < 3; ++c) brightest = std::max(brightest, f.rgba[i + c] - plain.rgba[i + c]);
+    }
     return changed;
   };
-  EXPECT_GT(changedBy(0.5f), 30) << "a puff above the 0.3 m snow";
+  EXPECT_GT(changedBy(0.5f), 30) << "a puff above the snow";
+  // Lit by the sun and sky like the snow it came from, never brighter than it.
+  EXPECT_LE(brightest, 0.01f);
   EXPECT_EQ(changedBy(-0.6f), 0) << "a puff under the snow, at every point behind its surface";
 }
 
