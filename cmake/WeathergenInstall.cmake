@@ -1,6 +1,6 @@
 # `cmake --install`: the CLI in bin/, the engine library in lib/ with its header, and a
 # CMake package in lib/cmake/weathergen so that other projects can find_package(weathergen),
-# call weathergen_add_materials() and link weathergen::compiler.
+# call weathergen_add_materials() and link weathergen::compiler (and weathergen::snow).
 include(CMakePackageConfigHelpers)
 include(GNUInstallDirs)
 
@@ -16,6 +16,11 @@ install(TARGETS weathergen_shared EXPORT weathergenCompilerTargets
         LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES include/weathergen/weathergen.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/weathergen")
 install(EXPORT weathergenCompilerTargets NAMESPACE weathergen:: DESTINATION "${WG_PACKAGE_DIR}")
+# The deformable snow library: its own export set, loaded by the config only for the
+# `snow` component, since it brings a dependency (the Vulkan headers).
+install(TARGETS weathergen_snow_shared EXPORT weathergenSnowTargets LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+install(FILES include/weathergen/snow.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/weathergen")
+install(EXPORT weathergenSnowTargets NAMESPACE weathergen:: DESTINATION "${WG_PACKAGE_DIR}")
 
 configure_package_config_file(cmake/weathergenConfig.cmake.in
   "${CMAKE_CURRENT_BINARY_DIR}/weathergenConfig.cmake" INSTALL_DESTINATION "${WG_PACKAGE_DIR}")

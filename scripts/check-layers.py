@@ -23,7 +23,7 @@ ALLOWED_INCLUDES = {
     "backends": ["nodes", "compiler"],  # syntax; from compiler/ only BACKEND_VISIBLE_COMPILER
     "driver": ["backends", "compiler", "nodes", "include"],  # material_compiler, batch_compile, the API
     "import": ["compiler", "nodes"],   # glTF -> graphs; never shaders, never the renderer
-    "runtime": ["driver", "compiler", "backends", "nodes"],  # Vulkan renderer, scenes, weather
+    "runtime": ["driver", "compiler", "backends", "nodes", "include"],  # Vulkan renderer, scenes, weather, snow API
     "cli": ["runtime", "import", "driver", "compiler", "backends", "nodes"],
     "bench": ["runtime", "import", "driver", "compiler", "backends", "nodes"],
     "tests": ["cli", "runtime", "import", "driver", "compiler", "backends", "nodes", "include"],

@@ -40,6 +40,7 @@ double GpuDeformationMap::refill(double metresPerSecond, double seconds) {
 }
 
 Recentring GpuDeformationMap::follow(glm::vec2 camera) {
+  if (window().originFor(camera) == window().origin()) return {};
   // The first submit copies the heights out, the second (its copy complete) moves the
   // window and uploads the tiles that entered.
   submit([&](VkCommandBuffer cmd) { recorder_.recordFollow(cmd, camera); });

@@ -14,23 +14,8 @@ cmake=${3:-cmake}
 ninja=${4:-ninja}
 cxx=${5:-c++}
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/wg-engine-plugin.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-prefix=$tmp/prefix
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-# Runs a command quietly; on failure prints its output and fails with the message.
-quiet() {
-  local what=$1
-  shift
-  "$@" >"$tmp/step.log" 2>&1 || { cat "$tmp/step.log" >&2; fail "$what"; }
-}
-
-quiet "cmake --install" "$cmake" --install "$build_dir" --prefix "$prefix"
+# shellcheck source=package_steps.sh
+source "$(dirname "$0")/package_steps.sh" engine-plugin "$build_dir" "$cmake"
 for f in include/weathergen/weathergen.hpp lib/libweathergen.so \
          lib/cmake/weathergen/weathergenConfig.cmake lib/cmake/weathergen/weathergenCompilerTargets.cmake; do
   [[ -e "$prefix/$f" ]] || fail "cmake --install did not install $f"

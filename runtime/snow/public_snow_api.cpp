@@ -1,0 +1,138 @@
+// include/weathergen/snow.hpp over DeformationRecorder: converts the plain structs of
+// the header to the runtime's and keeps exceptions inside. The device is borrowed, so
+// nothing here submits, waits or destroys what the engine owns.
+#include <weathergen/snow.hpp>
+
+#include <cstring>
+#include <exception>
+#include <vector>
+
+#include "runtime/snow/deformation_recorder.hpp"
+#include "runtime/snow/snow_interactors.hpp"
+
+namespace weathergen::snow {
+
+namespace {
+static_assert(sizeof(Capsule) == sizeof(wg::snow::Stamp), "Capsule mirrors the runtime's Stamp");
+
+wg::snow::Stamp toStamp(const Capsule& c) {
+  wg::snow::Stamp s;
+  std::memcpy(&s, &c, sizeof s);
+  return s;
+}
+
+Capsule toCapsule(const wg::snow::Stamp& s) {
+  Capsule c;
+  std::memcpy(&c, &s, sizeof c);
+  return c;
+}
+
+wg::snow::MeshInteractor toInteractor(const Mesh& m) {
+  wg::snow::MeshInteractor i;
+  i.vertices = m.vertexBuffer;
+  i.vertexOffset = m.vertexOffset;
+  i.vertexStride = m.vertexStride;
+  i.indices = m.indexBuffer;
+  i.indexOffset = m.indexOffset;
+  i.indexType = m.indexType;
+  i.indexCount = m.indexCount;
+  std::memcpy(&i.model, m.model, sizeof m.model);
+  i.footprintMin = {m.footprintMin[0], m.footprintMin[1]};
+  i.footprintMax = {m.footprintMax[0], m.footprintMax[1]};
+  return i;
+}
+}  // namespace
+
+struct DeformableSnow::State {
+  std::unique_ptr<wg::vk::Context> device;  // borrowed: destroys nothing
+  wg::snow::DeformationRecorder recorder;
+};
+
+Capsule footprint(float x, float z, float headingX, float headingZ, float snowDepth) noexcept {
+  return toCapsule(wg::snow::footprint({x, z}, {headingX, headingZ}, wg::snow::FootShape{},
+                                       wg::snow::SnowCover{snowDepth}, wg::snow::Walker{}.sink));
+}
+
+Capsule drag(float fromX, float fromZ, float toX, float toZ, float radius, float snowDepth) noexcept {
+  return toCapsule(wg::snow::capsule({fromX, fromZ}, {toX, toZ}, radius, wg::snow::SnowCover{snowDepth},
+                                     wg::snow::Vehicle{}.sink));
+}
+
+std::unique_ptr<DeformableSnow> DeformableSnow::create(const Device& device, const Settings& settings,
+                                                       std::string& error) noexcept {
+  try {
+    if (!device.device || !device.physicalDevice) throw std::invalid_argument("no Vulkan device given");
+    if (settings.resolution == 0 || settings.tileTexels == 0 || settings.resolution % settings.tileTexels != 0 ||
+        settings.tileTexels > wg::snow::kMaxTileTexels || !(settings.texelSize > 0.f))
+      throw std::invalid_argument("Settings: resolution must be a multiple of tileTexels (at most " +
+                                  std::to_string(wg::snow::kMaxTileTexels) + ") and texelSize positive");
+    wg::snow::WindowSettings window;
+    window.resolution = settings.resolution;
+    window.texelSize = settings.texelSize;
+    window.tileTexels = settings.tileTexels;
+    window.printStoreBudget = settings.printStoreBytes;
+    window.refillTilesPerFrame = settings.refillTilesPerFrame;
+    auto ctx = wg::vk::Context::borrow(device.physicalDevice, device.device, device.queueFamily,
+                                       device.fragmentStoresAndAtomics);
+    auto& borrowed = *ctx;
+    auto state = std::unique_ptr<State>(new State{
+        std::move(ctx),
+        wg::snow::DeformationRecorder(borrowed, window, {settings.cameraX, settings.cameraZ}, settings.framesInFlight)});
+    return std::unique_ptr<DeformableSnow>(new DeformableSnow(std::move(state)));
+  } catch (const std::exception& e) {
+    error = e.what();
+  } catch (...) {
+    error = "unknown error";
+  }
+  return nullptr;
+}
+
+DeformableSnow::DeformableSnow(std::unique_ptr<State> state) : state_(std::move(state)) {}
+DeformableSnow::~DeformableSnow() = default;
+
+std::string DeformableSnow::record(VkCommandBuffer cmd, const Frame& frame) noexcept {
+  try {
+    auto& r = state_->recorder;
+    r.beginFrame(frame.frameIndex);
+    r.recordFollow(cmd, {frame.cameraX, frame.cameraZ});
+    std::vector<wg::snow::Stamp> stamps;
+    for (std::size_t i = 0; i < frame.capsuleCount; ++i) stamps.push_back(toStamp(frame.capsules[i]));
+    r.recordStamps(cmd, stamps);
+    std::vector<wg::snow::MeshInteractor> meshes;
+    for (std::size_t i = 0; i < frame.meshCount; ++i) meshes.push_back(toInteractor(frame.meshes[i]));
+    r.recordMeshes(cmd, meshes, {frame.snowSurfaceHeight, frame.snowDepth});
+    r.recordRefill(cmd, frame.refillMetresPerSecond, frame.seconds);
+    wg::snow::DeformationRecorder::recordReadBarrier(
+        cmd,
+        VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+    return "";
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
+ShadingInputs DeformableSnow::shadingInputs() const noexcept {
+  const auto& r = state_->recorder;
+  const wg::snow::SnowWindow& w = r.window();
+  ShadingInputs s;
+  s.surfaceImage = r.surfaceImage().handle();
+  s.surfaceView = r.surfaceImage().view();
+  s.surfaceFormat = r.surfaceImage().format();
+  s.heightBuffer = r.heightBuffer().handle();
+  s.normalBuffer = r.normalBuffer().handle();
+  s.originX = float(w.origin().x) * w.texelSize();
+  s.originZ = float(w.origin().y) * w.texelSize();
+  s.texelSize = w.texelSize();
+  s.extent = w.extent();
+  s.resolution = std::uint32_t(w.resolution());
+  return s;
+}
+
+std::size_t DeformableSnow::storedTiles() const noexcept { return state_->recorder.store().tileCount(); }
+std::size_t DeformableSnow::storedBytes() const noexcept { return state_->recorder.store().memoryBytes(); }
+
+}  // namespace weathergen::snow
