@@ -47,6 +47,22 @@ void update(VkCommandBuffer cmd, const vk::Buffer& buffer, const std::vector<T>&
   vkCmdUpdateBuffer(cmd, buffer.handle(), 0, count * sizeof(T), data.data() + first);
 }
 
+// The storage rows (n texels each) of the tiles of `from` that are not in `to`: what
+// leaves when the window moves from one to the other, or, swapped, what enters.
+std::vector<VkBufferCopy> rowsOfTilesOutside(const SnowWindow& window, const TexelRect& from, const TexelRect& to) {
+  std::vector<VkBufferCopy> rows;
+  int n = window.tileTexels();
+  for (int tz = from.min.y; tz < from.min.y + from.size.y; tz += n)
+    for (int tx = from.min.x; tx < from.min.x + from.size.x; tx += n) {
+      if (to.contains({tx, tz})) continue;
+      for (int z = 0; z < n; ++z) {
+        VkDeviceSize offset = window.storageIndex({tx, tz + z}) * sizeof(std::uint32_t);
+        rows.push_back({offset, offset, VkDeviceSize(n) * sizeof(std::uint32_t)});
+      }
+    }
+  return rows;
+}
+
 glm::ivec2 largest(const std::vector<glm::ivec4>& rects, std::size_t first, std::size_t count) {
   glm::ivec2 extent(0);
   for (std::size_t i = first; i < first + count; ++i) extent = glm::max(extent, glm::ivec2(rects[i].z, rects[i].w));
@@ -222,37 +238,31 @@ bool DeformationRecorder::recordRefill(VkCommandBuffer cmd, double metresPerSeco
 
 Recentring DeformationRecorder::recordFollow(VkCommandBuffer cmd, glm::vec2 camera) {
   clearOnce(cmd);
-  if (readbackState_ == Readback::Ready) return harvestReadback(cmd, camera);
-  if (readbackState_ != Readback::Idle || window_.originFor(camera) == window_.origin()) return {};
+  if (readbackState_ == Readback::Ready) return harvestReadback(cmd);
+  glm::ivec2 target = window_.originFor(camera);
+  if (readbackState_ != Readback::Idle || target == window_.origin()) return {};
+  // Only the rows of the tiles that will leave: the window moves to where the camera
+  // is now, even if it has gone further by the time the copy is read.
+  std::vector<VkBufferCopy> rows = rowsOfTilesOutside(window_, window_.rect(), {target, glm::ivec2(window_.resolution())});
   mapBarrier(cmd);
-  VkBufferCopy all{0, 0, heights_.size()};
-  vkCmdCopyBuffer(cmd, heights_.handle(), readback_.handle(), 1, &all);
+  vkCmdCopyBuffer(cmd, heights_.handle(), readback_.handle(), static_cast<std::uint32_t>(rows.size()), rows.data());
   memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                 VK_ACCESS_HOST_READ_BIT);
   readbackState_ = Readback::Copying;
   readbackFrame_ = frame_;
+  readbackCamera_ = camera;
   return {};
 }
 
-Recentring DeformationRecorder::harvestReadback(VkCommandBuffer cmd, glm::vec2 camera) {
+Recentring DeformationRecorder::harvestReadback(VkCommandBuffer cmd) {
   TexelRect before = window_.rect();
   scratchNormals_.resize(window_.texelCount());
   MapTexels texels{{static_cast<std::uint32_t*>(readback_.mapped()), window_.texelCount()}, scratchNormals_};
-  Recentring r = recentre(window_, texels, camera, store_, schedule_, refill_.totalQuanta());
+  Recentring r = recentre(window_, texels, readbackCamera_, store_, schedule_, refill_.totalQuanta());
   readbackState_ = Readback::Idle;
   if (!r.moved()) return r;
-  // The entering tiles' rows, from the host copy to their toroidal slots.
-  std::vector<VkBufferCopy> rows;
-  int n = window_.tileTexels();
-  TexelRect now = window_.rect();
-  for (int tz = now.min.y; tz < now.min.y + now.size.y; tz += n)
-    for (int tx = now.min.x; tx < now.min.x + now.size.x; tx += n) {
-      if (before.contains({tx, tz})) continue;
-      for (int z = 0; z < n; ++z) {
-        VkDeviceSize offset = window_.storageIndex({tx, tz + z}) * sizeof(std::uint32_t);
-        rows.push_back({offset, offset, VkDeviceSize(n) * sizeof(std::uint32_t)});
-      }
-    }
+  // The entering tiles took the leaving tiles' slots in the host copy.
+  std::vector<VkBufferCopy> rows = rowsOfTilesOutside(window_, window_.rect(), before);
   withSurfaceWritable(cmd, [&] {
     vkCmdCopyBuffer(cmd, readback_.handle(), heights_.handle(), static_cast<std::uint32_t>(rows.size()), rows.data());
     recordNormals(cmd, r.enteredRects);

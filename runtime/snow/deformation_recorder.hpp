@@ -5,7 +5,7 @@
 // and the tests. The map's buffers and the surface image are device-local.
 //
 // Recentring needs the tiles that leave on the CPU (the print store): one frame records
-// a copy of the height plane into a host buffer, and the first frame that reuses that
+// a copy of their rows into a host buffer, and the first frame that reuses that
 // frame's index (so its commands have completed) moves the window on the CPU and
 // records the entering tiles' upload and normals. Stamps on tiles that leave in
 // between are lost; they are half a window from the camera.
@@ -70,7 +70,7 @@ class DeformationRecorder {
   void withSurfaceWritable(VkCommandBuffer cmd, Record&& record);
   // Normals (and the surface image) over `rects`, in batches the rect buffer holds.
   void recordNormals(VkCommandBuffer cmd, const std::vector<TexelRect>& rects);
-  Recentring harvestReadback(VkCommandBuffer cmd, glm::vec2 camera);
+  Recentring harvestReadback(VkCommandBuffer cmd);
 
   vk::Context& ctx_;
   SnowWindow window_;
@@ -86,6 +86,7 @@ class DeformationRecorder {
   std::uint32_t framesInFlight_, frame_ = 0;
   Readback readbackState_ = Readback::Idle;
   std::uint32_t readbackFrame_ = 0;
+  glm::vec2 readbackCamera_{0.f};  // the window moves to centre this camera
   bool cleared_ = false;
 };
 

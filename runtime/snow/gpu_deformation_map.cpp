@@ -43,10 +43,10 @@ Recentring GpuDeformationMap::follow(glm::vec2 camera) {
   if (window().originFor(camera) == window().origin()) return {};
   // The first submit copies the heights out, the second (its copy complete) moves the
   // window and uploads the tiles that entered.
-  submit([&](VkCommandBuffer cmd) { recorder_.recordFollow(cmd, camera); });
+  double copyOut = submit([&](VkCommandBuffer cmd) { recorder_.recordFollow(cmd, camera); });
   Recentring r;
-  double ms = submit([&](VkCommandBuffer cmd) { r = recorder_.recordFollow(cmd, camera); });
-  if (r.moved()) r.gpuMilliseconds = ms;
+  double upload = submit([&](VkCommandBuffer cmd) { r = recorder_.recordFollow(cmd, camera); });
+  if (r.moved()) r.gpuMilliseconds = copyOut + upload;
   return r;
 }
 
