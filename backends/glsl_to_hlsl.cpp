@@ -37,7 +37,8 @@ constexpr std::array kComparisons = {
 // t.Sample(s, uv). An op template names the function through its {@sampleFn} symbol,
 // which the HLSL syntax resolves to the method.
 constexpr std::array kSamplingMethods = {
-    Rename{"texture", "Sample"}, Rename{"textureLod", "SampleLevel"}, Rename{"{@sampleFn}", "{@sampleFn}"},
+    Rename{"texture", "Sample"}, Rename{"textureLod", "SampleLevel"}, Rename{"textureGather", "Gather"},
+    Rename{"{@sampleFn}", "{@sampleFn}"},
 };
 
 template <std::size_t N>

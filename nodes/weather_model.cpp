@@ -1,5 +1,6 @@
 #include "nodes/weather_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "nodes/weather_noise.hpp"
@@ -7,9 +8,9 @@
 namespace wg::weather {
 
 namespace {
-// Sky exposure: an occluder within 10 cm above is the surface itself (the map's
-// bilinear error on sloped ground stays below that); one 50 cm or more above shelters
-// the point completely.
+// Sky exposure: an occluder within 10 cm above is the surface itself (a neighbouring
+// texel of 45-degree ground is 1.4 texels = 9 cm higher); one 50 cm or more above
+// shelters the point completely.
 constexpr float kShelterClearance = 0.1f;
 constexpr float kShelterFull = 0.5f;
 // Eq. 3.4 gate: faces within this much of vertical (as n.up, about 6 degrees) fade in.
@@ -173,6 +174,22 @@ float puddleMask(glm::vec3 normal, float noise, float puddleLevel) {
 
 float skyExposure(float pointHeight, float occluderHeight) {
   return 1.f - smoothStep(pointHeight + kShelterClearance, pointHeight + kShelterFull, occluderHeight);
+}
+
+float filteredSkyExposure(const std::vector<float>& heights, int resolution, glm::vec2 uv, float pointHeight) {
+  if (resolution <= 0 || heights.size() != static_cast<std::size_t>(resolution) * resolution) return 1.f;
+  float x = uv.x * resolution - 0.5f, y = uv.y * resolution - 0.5f;
+  float fx = std::floor(x), fy = std::floor(y);
+  auto open = [&](int i, int j) {
+    i = std::clamp(i, 0, resolution - 1);
+    j = std::clamp(j, 0, resolution - 1);
+    return skyExposure(pointHeight, heights[static_cast<std::size_t>(j) * resolution + i]);
+  };
+  int i = static_cast<int>(fx), j = static_cast<int>(fy);
+  float ax = x - fx, ay = y - fy;
+  float top = lerp(open(i, j), open(i + 1, j), ax);
+  float bottom = lerp(open(i, j + 1), open(i + 1, j + 1), ax);
+  return lerp(top, bottom, ay);
 }
 
 

@@ -3,6 +3,8 @@
 // evaluator and constant folding use these. docs/weather-model.md explains each
 // equation and the reading chosen where the print is ambiguous.
 #pragma once
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "nodes/op_definition.hpp"
@@ -108,7 +110,17 @@ float puddleIce(const FrameState& frame);
 float frostCoverage(const FrameState& frame, float frostMap, float noise);
 float hoarfrostCoverage(const FrameState& frame, float noise, float exposure);
 
-// Sky exposure from the shared map's occluder height above a point (1 open, 0 sheltered).
+// The sky-exposure map (docs/weather-model.md, "Sky exposure"): texels per side over the
+// scene's xz extent, about 6 cm on the 122 m rocks scene.
+inline constexpr int kSkyExposureResolution = 2048;
+// The lookup moves this many texels out along the normal's xz (normal offset), so a steep
+// face is not sheltered by its own top edge.
+inline constexpr float kSkyExposureNormalOffset = 1.5f;
+// Sky exposure from one occluder height above a point (1 open, 0 sheltered).
 float skyExposure(float pointHeight, float occluderHeight);
+// The map's percentage-closer filter: each of the 2x2 texels around uv (Vulkan's linear
+// footprint, clamped) compared with the point's height, the results weighted bilinearly,
+// so an occluder's edge blurs by at most one texel and no height is ever interpolated.
+float filteredSkyExposure(const std::vector<float>& heights, int resolution, glm::vec2 uv, float pointHeight);
 
 }  // namespace wg::weather

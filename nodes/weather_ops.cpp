@@ -195,8 +195,8 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
   {
     OpDef exposure = weatherOp("sky_exposure", "open sky above the point: 1 exposed, 0 under a roof (shared map)",
                                {vec3Required("position")}, F,
-                               "wg_exposure_from_map({position}, {@sampleFn}(sampler2D(wg_sky_exposure_map, "
-                               "wg_sky_exposure_sampler), wg_sky_exposure_uv({position}){@lodArg}).r)",
+                               "wg_exposure_from_map({position}, {@worldNormal}, textureGather(sampler2D("
+                               "wg_sky_exposure_map, wg_sky_exposure_sampler), wg_sky_exposure_uv({position}, {@worldNormal})))",
                                [](const Value*, const EvalContext& c) { return Value::scalar(c.surface->skyExposure); }, V);
     exposure.weatherMaps.push_back("skyExposure");
     ops.push_back(std::move(exposure));

@@ -156,13 +156,21 @@ vec3 wg_tangent_to_world(vec3 n, vec3 normal, vec4 tangent) {
 // The sky-exposure map holds, per texel of skyExposureRegion, the world height of the
 // highest surface seen from above. A point is open to the sky when nothing is more
 // than 10 cm above it and sheltered under anything 50 cm above; outside the region,
-// everything is open sky.
-vec2 wg_sky_exposure_uv(vec3 p) { return (vec2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw; }
-float wg_exposure_from_map(vec3 p, float occluderHeight) {
-  vec2 uv = wg_sky_exposure_uv(p);
+// everything is open sky. The lookup moves 1.5 texels out along the normal's xz, so
+// a steep face is not shadowed by its own top edge. Percentage-closer filtering: the
+// 2x2 texels of the linear footprint (textureGather's x (0,1), y (1,1), z (1,0),
+// w (0,0)) are each compared with the point, then weighted bilinearly.
+// 2048.0 is weather::kSkyExposureResolution, 1.5 kSkyExposureNormalOffset.
+vec2 wg_sky_exposure_uv(vec3 p, vec3 n) {
+  return (vec2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw + n.xz * (1.5 / 2048.0);
+}
+float wg_exposure_from_map(vec3 p, vec3 n, vec4 occluderHeights) {
+  vec2 uv = wg_sky_exposure_uv(p, n);
+  vec4 open = 1.0 - smoothstep(vec4(p.y + 0.1), vec4(p.y + 0.5), occluderHeights);
+  vec2 f = fract(uv * 2048.0 - 0.5);
+  float exposed = mix(mix(open.w, open.z, f.x), mix(open.x, open.y, f.x), f.y);
   // Inside: uv is its own clamp to [0, 1] (no short-circuit branches).
   bool inside = all(bvec3(frame_skyExposureRegion.z > 0.0, equal(uv, clamp(uv, 0.0, 1.0))));
-  float exposed = 1.0 - smoothstep(p.y + 0.1, p.y + 0.5, occluderHeight);
   return inside ? exposed : 1.0;  // a select of two values, not a branch
 }
 // Eq. 3.11: world position to height-map coordinates.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "nodes/frame_state.hpp"
+#include "nodes/weather_model.hpp"
 #include "runtime/frame_recording.hpp"
 #include "runtime/material_resources.hpp"
 #include "runtime/vulkan/gpu_timer.hpp"
@@ -92,7 +93,7 @@ class SceneRenderer {
   // 1x1 stand-in. The image must outlive the renders that use it.
   void setSnowDeformation(const vk::Image2D* map) { snowDeformation_ = map; }
 
-  static constexpr std::uint32_t kExposureResolution = 512;
+  static constexpr std::uint32_t kExposureResolution = weather::kSkyExposureResolution;
   static constexpr std::uint32_t kShadowResolution = 2048;
 
  private:

@@ -1,6 +1,7 @@
 // The sky-exposure map (docs/runtime.md, "What a frame is made of"): once per scene,
 // an orthographic depth render from above of everything that keeps rain off, turned
-// back into the height of the highest surface per texel.
+// back into the height of the highest surface per texel, then lowered where slanting
+// snow and rain reach under an overhang (runtime/sky_exposure_reach.hpp).
 #include "runtime/scene_renderer.hpp"
 
 #include <cstring>
@@ -9,6 +10,7 @@
 #include "runtime/frame_slices.hpp"
 #include "runtime/pass_cameras.hpp"
 #include "runtime/render_passes.hpp"
+#include "runtime/sky_exposure_reach.hpp"
 
 namespace wg {
 
@@ -23,6 +25,8 @@ void SceneRenderer::buildExposureMap() {
   std::vector<float> depths = drawSkyOccluders(view.viewProjection);
   exposureHeights_.resize(depths.size());
   for (std::size_t k = 0; k < depths.size(); ++k) exposureHeights_[k] = view.top - depths[k] * (view.top - view.bottom);
+  const float texelsPerMetreX = kExposureResolution * view.region.z, texelsPerMetreZ = kExposureResolution * view.region.w;
+  exposureHeights_ = reachUnderOverhangs(exposureHeights_, kExposureResolution, texelsPerMetreX, texelsPerMetreZ);
   exposureMap_ = vk::Image2D(ctx_, kExposureResolution, kExposureResolution, VK_FORMAT_R32_SFLOAT,
                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   exposureMap_.upload(ctx_, exposureHeights_.data(), exposureHeights_.size() * sizeof(float));

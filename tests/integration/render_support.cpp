@@ -84,7 +84,7 @@ std::vector<PixelSurface> surfacePixels(SceneRenderer& renderer, RenderRequest r
       s.surface.worldNormal = {n.x, n.y, n.z};
       s.surface.texcoord = {uv.x, uv.y};
       s.surface.tangent = {t.x, t.y, t.z, t.w};
-      s.surface.skyExposure = skyExposureAt(renderer, {p.x, p.y, p.z});
+      s.surface.skyExposure = skyExposureAt(renderer, {p.x, p.y, p.z}, glm::normalize(glm::vec3(n)));
       out.push_back(s);
     }
   return out;
@@ -101,14 +101,12 @@ FrameState frameStateFor(const SceneRenderer& renderer, const WeatherState& w) {
   return f;
 }
 
-float skyExposureAt(const SceneRenderer& renderer, glm::vec3 p) {
-  static std::map<const SceneRenderer*, HeightField> maps;
-  auto& map = maps[&renderer];
-  if (map.resolution == 0) map = HeightField{int(renderer.exposureResolution()), renderer.exposureHeights()};
+float skyExposureAt(const SceneRenderer& renderer, glm::vec3 p, glm::vec3 normal) {
   glm::vec4 region = renderer.exposureRegion();
-  glm::vec2 uv = (glm::vec2(p.x, p.z) - glm::vec2(region.x, region.y)) * glm::vec2(region.z, region.w);
+  glm::vec2 uv = (glm::vec2(p.x, p.z) - glm::vec2(region.x, region.y)) * glm::vec2(region.z, region.w) +
+                 glm::vec2(normal.x, normal.z) * (weather::kSkyExposureNormalOffset / weather::kSkyExposureResolution);
   if (region.z <= 0.f || uv.x < 0.f || uv.y < 0.f || uv.x > 1.f || uv.y > 1.f) return 1.f;
-  return weather::skyExposure(p.y, map.sample(uv.x, uv.y));
+  return weather::filteredSkyExposure(renderer.exposureHeights(), int(renderer.exposureResolution()), uv, p.y);
 }
 
 const CpuEvaluator& evaluatorFor(const std::string& stem) {

@@ -38,8 +38,8 @@ struct PixelSurface {
 std::vector<PixelSurface> surfacePixels(SceneRenderer& renderer, RenderRequest request, int gridStep);
 // The frame state the renderer uploaded for `weather` (for the CPU evaluator).
 FrameState frameStateFor(const SceneRenderer& renderer, const WeatherState& weather);
-// Sky exposure at a point, computed from the renderer's exposure map as the GPU does.
-float skyExposureAt(const SceneRenderer& renderer, glm::vec3 position);
+// Sky exposure at a surface point, from the renderer's exposure map as the GPU looks it up.
+float skyExposureAt(const SceneRenderer& renderer, glm::vec3 position, glm::vec3 normal);
 // The CPU evaluator for a bundled graph, compiled with its own preset.
 const CpuEvaluator& evaluatorFor(const std::string& graphStem);
 // The scene's terrain height map as the CPU samples it.
