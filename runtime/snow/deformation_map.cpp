@@ -4,6 +4,7 @@
 #include "runtime/snow/cpu_stamping.hpp"
 #include "runtime/snow/deformation_texel.hpp"
 #include "runtime/snow/map_lookup.hpp"
+#include "runtime/snow/print_store_file.hpp"
 
 namespace wg::snow {
 
@@ -30,6 +31,18 @@ void DeformationMap::refill(double metresPerSecond, double seconds) {
 
 Recentring DeformationMap::follow(glm::vec2 camera) {
   return recentre(window_, texels(), camera, store_, schedule_, refill_.totalQuanta());
+}
+
+void DeformationMap::savePrints(const std::filesystem::path& path) const {
+  savePrintsFile(path, withWindowTiles(window_, heights_, store_, schedule_, refill_.totalQuanta()), window_,
+                 refill_.totalQuanta());
+}
+
+void DeformationMap::loadPrints(const std::filesystem::path& path) {
+  PrintTileStore loaded(store_.budgetBytes());
+  loadPrintsFile(path, window_, refill_.totalQuanta(), loaded);  // throws before anything changes
+  store_ = std::move(loaded);
+  restoreAll(window_, texels(), store_, schedule_, refill_.totalQuanta());
 }
 
 float DeformationMap::heightAt(glm::vec2 world) const { return texelHeight(heightTexelAt(window_, heights_, world)); }

@@ -3,6 +3,7 @@
 // keeps the same state in mapped buffers and runs the stamps and normals as compute;
 // tests hold the two against each other.
 #pragma once
+#include <filesystem>
 #include <span>
 #include <vector>
 
@@ -28,6 +29,11 @@ class DeformationMap {
   // refillTilesPerFrame of the tiles that hold prints (refill_schedule.hpp).
   void refill(double metresPerSecond, double seconds);
   Recentring follow(glm::vec2 camera);
+
+  // Every print, in the window and in the store, to a file (print_store_file.hpp), and
+  // back: loading replaces every print with the file's. Throws PrintFileError.
+  void savePrints(const std::filesystem::path& path) const;
+  void loadPrints(const std::filesystem::path& path);
 
   // Texel values at a world point: 0 / flat outside the window.
   float heightAt(glm::vec2 world) const;  // metres, relative to the undisturbed surface

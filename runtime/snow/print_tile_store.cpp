@@ -67,6 +67,12 @@ void PrintTileStore::setBudget(std::size_t bytes) {
   enforceBudget();
 }
 
+void PrintTileStore::clear() {
+  tiles_.clear();
+  byAge_.clear();
+  bytes_ = 0;
+}
+
 void PrintTileStore::erase(std::map<glm::ivec2, Entry, TileOrder>::iterator it) {
   bytes_ -= entryBytes(it->second);
   byAge_.erase(it->second.age);

@@ -53,6 +53,7 @@ class PrintTileStore {
   std::size_t memoryBytes() const { return bytes_; }
   std::size_t budgetBytes() const { return budget_; }
   void setBudget(std::size_t bytes);
+  void clear();
   // Tiles dropped to stay within the budget, since construction.
   std::size_t tilesDropped() const { return dropped_; }
 

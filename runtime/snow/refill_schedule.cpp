@@ -37,9 +37,8 @@ void RefillSchedule::entered(glm::ivec2 tile, std::uint32_t deepest, std::uint64
 }
 
 std::uint64_t RefillSchedule::left(glm::ivec2 tile, std::uint64_t refillQuanta) {
-  Slot& slot = slots_[slotOf(tile)];
-  std::uint64_t applied = slot.deepest == 0 ? refillQuanta : slot.applied;
-  slot = {0, refillQuanta};
+  std::uint64_t applied = refilledTo(tile, refillQuanta);
+  slots_[slotOf(tile)] = {0, refillQuanta};
   return applied;
 }
 
@@ -63,6 +62,11 @@ std::vector<TileRefill> RefillSchedule::due(const SnowWindow& window, std::uint6
     cursor_ = i + 1;
   }
   return out;
+}
+
+std::uint64_t RefillSchedule::refilledTo(glm::ivec2 tile, std::uint64_t refillQuanta) const {
+  const Slot& slot = slots_[slotOf(tile)];
+  return slot.deepest == 0 ? refillQuanta : slot.applied;
 }
 
 std::size_t RefillSchedule::printedTiles() const {

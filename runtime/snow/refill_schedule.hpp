@@ -33,6 +33,8 @@ class RefillSchedule {
   std::uint64_t left(glm::ivec2 tile, std::uint64_t refillQuanta);
   // Up to `budget` tiles that hold prints and are owed refill; they count as refilled.
   std::vector<TileRefill> due(const SnowWindow& window, std::uint64_t refillQuanta, std::size_t budget);
+  // The refill counter a tile of the window is up to date with.
+  std::uint64_t refilledTo(glm::ivec2 tile, std::uint64_t refillQuanta) const;
   // Tiles that may hold a print.
   std::size_t printedTiles() const;
 

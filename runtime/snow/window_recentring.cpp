@@ -1,6 +1,7 @@
 #include "runtime/snow/window_recentring.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "runtime/snow/cpu_stamping.hpp"
 #include "runtime/snow/deformation_texel.hpp"
@@ -17,17 +18,32 @@ void forEachTile(const TexelRect& rect, int tileTexels, Visit&& visit) {
 
 // Moves a tile's texels out of the map (into the store when any is deformed) and
 // leaves the slots untouched and flat for whatever enters there.
+template <typename Visit>
+void forEachTexelOf(const SnowWindow& window, glm::ivec2 tile, Visit&& visit) {
+  int n = window.tileTexels();
+  for (int z = 0; z < n; ++z)
+    for (int x = 0; x < n; ++x) visit(std::size_t(z * n + x), window.storageIndex(tile * n + glm::ivec2(x, z)));
+}
+
+// A tile's texels, row-major, copied out of the window.
+std::vector<std::uint32_t> tileTexels(const SnowWindow& window, std::span<const std::uint32_t> heights, glm::ivec2 tile) {
+  std::vector<std::uint32_t> dense(std::size_t(window.tileTexels()) * std::size_t(window.tileTexels()));
+  forEachTexelOf(window, tile, [&](std::size_t i, std::size_t slot) { dense[i] = heights[slot]; });
+  return dense;
+}
+
+// Leaves a tile's slots untouched and flat for whatever enters there.
+void resetTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile) {
+  forEachTexelOf(window, tile, [&](std::size_t, std::size_t slot) {
+    texels.heights[slot] = 0;
+    texels.normals[slot] = 0;  // packNormal of straight up
+  });
+}
+
 bool evictTile(const SnowWindow& window, MapTexels texels, glm::ivec2 tile, PrintTileStore& store,
                RefillSchedule& schedule, std::uint64_t refillQuanta) {
-  int n = window.tileTexels();
-  std::vector<std::uint32_t> dense(std::size_t(n) * std::size_t(n));
-  for (int z = 0; z < n; ++z)
-    for (int x = 0; x < n; ++x) {
-      std::size_t slot = window.storageIndex(tile * n + glm::ivec2(x, z));
-      dense[std::size_t(z * n + x)] = std::exchange(texels.heights[slot], 0u);
-      texels.normals[slot] = 0;  // packNormal of straight up
-    }
-  StoredTile stored = packTile(dense, schedule.left(tile, refillQuanta));
+  StoredTile stored = packTile(tileTexels(window, texels.heights, tile), schedule.left(tile, refillQuanta));
+  resetTile(window, texels, tile);
   if (stored.heights.empty()) return false;
   store.put(tile, std::move(stored));
   return true;
@@ -79,6 +95,27 @@ Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, Prin
   });
   for (const auto& rect : out.restoredRects) regenerateNormals(window, texels, rect);
   return out;
+}
+
+PrintTileStore withWindowTiles(const SnowWindow& window, std::span<const std::uint32_t> heights, const PrintTileStore& store,
+                               const RefillSchedule& schedule, std::uint64_t refillQuanta) {
+  PrintTileStore out = store;
+  out.setBudget(std::numeric_limits<std::size_t>::max());  // a snapshot drops nothing
+  forEachTile(window.rect(), window.tileTexels(), [&](glm::ivec2 tile) {
+    out.put(tile, packTile(tileTexels(window, heights, tile), schedule.refilledTo(tile, refillQuanta)));
+  });
+  return out;
+}
+
+std::vector<TexelRect> restoreAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store,
+                                  RefillSchedule& schedule, std::uint64_t refillQuanta) {
+  forEachTile(window.rect(), window.tileTexels(), [&](glm::ivec2 tile) {
+    resetTile(window, texels, tile);
+    schedule.left(tile, refillQuanta);
+    restoreTile(window, texels, tile, store, schedule, refillQuanta);
+  });
+  regenerateNormals(window, texels, window.rect());
+  return {window.rect()};
 }
 
 void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store, RefillSchedule& schedule,

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "runtime/snow/map_texels.hpp"
@@ -34,5 +35,14 @@ Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, Prin
 // away, or the layer is being torn down but its prints should outlive it).
 void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store, RefillSchedule& schedule,
               std::uint64_t refillQuanta);
+
+// The store plus every deformed tile of the window, changing neither: what a save writes.
+PrintTileStore withWindowTiles(const SnowWindow& window, std::span<const std::uint32_t> heights, const PrintTileStore& store,
+                               const RefillSchedule& schedule, std::uint64_t refillQuanta);
+// The window starts over from the store: every tile of it is cleared, then taken back
+// from the store if it is there (what loading saved prints does). Returns the rectangles
+// whose normals were regenerated (the whole window).
+std::vector<TexelRect> restoreAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store,
+                                  RefillSchedule& schedule, std::uint64_t refillQuanta);
 
 }  // namespace wg::snow

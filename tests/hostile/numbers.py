@@ -66,7 +66,9 @@ class CommandLineNumbers(HostileCase):
 
     def test_bench_snow_counts(self):
         for args in (["--frames", "0"], ["--frames", "1e999"], ["--walk-minutes", "nan"], ["--walk-minutes", "-1"],
-                     ["--walk-minutes", "1e999"]):
+                     ["--walk-minutes", "1e999"], ["--profile-seconds", "0"], ["--profile-seconds", "1e999"],
+                     ["--store-budget", "-1"], ["--store-budget", "nan"], ["--refill-tiles", "0"],
+                     ["--refill-tiles", "1.5"], ["--refill-tiles", "99999"]):
             with self.subTest(" ".join(args)):
                 self.failsUnchanged(["bench-snow"] + args, 2, vulkan=True)
 
