@@ -127,7 +127,9 @@ class DeformableSnow {
   // Records the frame's snow work into `cmd` (recording, outside a render pass, on
   // Device::queueFamily): recentring, capsules, meshes, normals and refill. Afterwards
   // the surface image and the map are ready for vertex, fragment and compute shader
-  // reads later in `cmd` or in later submissions. Returns "" or what went wrong.
+  // reads later in `cmd` or in later submissions. Returns "" or what went wrong; an
+  // invalid frame (index out of range, null arrays, meshes without the feature) is
+  // refused before anything is recorded.
   std::string record(VkCommandBuffer cmd, const Frame& frame) noexcept;
 
   ShadingInputs shadingInputs() const noexcept;

@@ -3,6 +3,7 @@
 // nothing here submits, waits or destroys what the engine owns.
 #include <weathergen/snow.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <exception>
 #include <vector>
@@ -46,7 +47,25 @@ wg::snow::MeshInteractor toInteractor(const Mesh& m) {
 struct DeformableSnow::State {
   std::unique_ptr<wg::vk::Context> device;  // borrowed: destroys nothing
   wg::snow::DeformationRecorder recorder;
+  std::uint32_t framesInFlight;
 };
+
+namespace {
+// What record() refuses before recording anything, or "".
+std::string invalidFrame(const Frame& frame, std::uint32_t framesInFlight, bool meshInteractors) {
+  if (frame.frameIndex >= framesInFlight)
+    return "Frame::frameIndex " + std::to_string(frame.frameIndex) + " is not below Settings::framesInFlight (" +
+           std::to_string(framesInFlight) + ")";
+  if (frame.capsuleCount != 0 && !frame.capsules) return "Frame::capsuleCount is set but capsules is null";
+  if (frame.meshCount != 0 && !frame.meshes) return "Frame::meshCount is set but meshes is null";
+  if (frame.meshCount != 0 && !meshInteractors)
+    return "mesh interactors need the device feature fragmentStoresAndAtomics (Device::fragmentStoresAndAtomics)";
+  for (std::size_t i = 0; i < frame.meshCount; ++i)
+    if (frame.meshes[i].indexCount != 0 && (!frame.meshes[i].vertexBuffer || !frame.meshes[i].indexBuffer))
+      return "Frame::meshes[" + std::to_string(i) + "] has no vertex or index buffer";
+  return "";
+}
+}  // namespace
 
 Capsule footprint(float x, float z, float headingX, float headingZ, float snowDepth) noexcept {
   return toCapsule(wg::snow::footprint({x, z}, {headingX, headingZ}, wg::snow::FootShape{},
@@ -77,7 +96,8 @@ std::unique_ptr<DeformableSnow> DeformableSnow::create(const Device& device, con
     auto& borrowed = *ctx;
     auto state = std::unique_ptr<State>(new State{
         std::move(ctx),
-        wg::snow::DeformationRecorder(borrowed, window, {settings.cameraX, settings.cameraZ}, settings.framesInFlight)});
+        wg::snow::DeformationRecorder(borrowed, window, {settings.cameraX, settings.cameraZ}, settings.framesInFlight),
+        std::max(settings.framesInFlight, 1u)});
     return std::unique_ptr<DeformableSnow>(new DeformableSnow(std::move(state)));
   } catch (const std::exception& e) {
     error = e.what();
@@ -93,6 +113,8 @@ DeformableSnow::~DeformableSnow() = default;
 std::string DeformableSnow::record(VkCommandBuffer cmd, const Frame& frame) noexcept {
   try {
     auto& r = state_->recorder;
+    if (std::string invalid = invalidFrame(frame, state_->framesInFlight, r.meshInteractors()); !invalid.empty())
+      return invalid;
     r.beginFrame(frame.frameIndex);
     r.recordFollow(cmd, {frame.cameraX, frame.cameraZ});
     std::vector<wg::snow::Stamp> stamps;

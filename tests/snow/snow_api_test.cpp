@@ -238,5 +238,36 @@ TEST_F(SnowApi, ATorusPressedIntoTheSnowLeavesARing) {
   }
 }
 
+TEST_F(SnowApi, RefusesInvalidSettingsAndFramesWithAMessage) {
+  vk::Context& ctx = *snowContext();
+  weathergen::snow::Device device{ctx.physicalDevice(), ctx.device(), ctx.queueFamily(), false};
+  std::string error;
+  weathergen::snow::Settings uneven = smallSettings();
+  uneven.tileTexels = 24;  // does not divide 128
+  EXPECT_FALSE(weathergen::snow::DeformableSnow::create(device, uneven, error));
+  EXPECT_NE(error.find("multiple of tileTexels"), std::string::npos) << error;
+  error.clear();
+  EXPECT_FALSE(weathergen::snow::DeformableSnow::create({}, smallSettings(), error));
+  EXPECT_NE(error.find("no Vulkan device"), std::string::npos) << error;
+
+  auto snow = weathergen::snow::DeformableSnow::create(device, smallSettings(), error);
+  ASSERT_TRUE(snow) << error;
+  EngineFrames engine(ctx);
+  weathergen::snow::Frame late;
+  late.frameIndex = kFramesInFlight;
+  weathergen::snow::Mesh mesh;
+  mesh.indexCount = 3;
+  weathergen::snow::Frame withMesh;
+  withMesh.meshes = &mesh;
+  withMesh.meshCount = 1;
+  weathergen::snow::Frame nullCapsules;
+  nullCapsules.capsuleCount = 2;
+  engine.frame(0, [&](VkCommandBuffer cmd) {
+    EXPECT_NE(snow->record(cmd, late).find("not below Settings::framesInFlight"), std::string::npos);
+    EXPECT_NE(snow->record(cmd, withMesh).find("fragmentStoresAndAtomics"), std::string::npos);
+    EXPECT_NE(snow->record(cmd, nullCapsules).find("capsules is null"), std::string::npos);
+  });
+}
+
 }  // namespace
 }  // namespace wg::snow
