@@ -92,7 +92,8 @@ double measureRefill(vk::Context& ctx, const snow::WindowSettings& settings, int
   std::vector<snow::Stamp> everywhere;
   float tile = map.window().texelSize() * float(map.window().tileTexels()), half = 0.5f * map.window().extent();
   for (float z = -half + 0.5f * tile; z < half; z += tile)
-    for (float x = -half + 0.5f * tile; x < half; x += tile) everywhere.push_back(snow::capsule({x, z}, {x, z}, 0.2f, kCover, kCover.depth));
+    for (float x = -half + 0.5f * tile; x < half; x += tile)
+      everywhere.push_back(snow::capsule({x, z}, {x, z}, 0.2f, kCover, kCover.depth));
   map.apply(everywhere);
   std::vector<double> times;
   for (int f = 0; f < kWarmUpFrames + frames; ++f) {
@@ -202,9 +203,11 @@ void measureFrameProfile(vk::Context& ctx, const snow::WindowSettings& settings,
     double p99 = v.empty() ? 0.0 : v[v.size() * 99 / 100], worst = v.empty() ? 0.0 : v.back();
     std::printf("| %s | %.4f | %.4f | %.4f | %ld of %zu |\n", what, mid, p99, worst, long(over), v.size());
   };
-  std::printf("\nEvery frame's snow work over %.0f simulated seconds of the walk in heavy snowfall (refill 5 cm/h):\n\n",
-              seconds);
-  std::printf("| per frame | median ms | 99th percentile ms | worst ms | frames over 2x median |\n|---|---|---|---|---|\n");
+  std::printf(
+      "\nEvery frame's snow work over %.0f simulated seconds of the walk in heavy snowfall (refill 5 cm/h):\n\n",
+      seconds);
+  std::printf("| per frame | median ms | 99th percentile ms | worst ms | frames over 2x median |\n"
+              "|---|---|---|---|---|\n");
   row("GPU: recentring (tiles that enter)", follow);
   row("GPU: stamps and their normals", stamps);
   row("GPU: refill and its normals", refill);
@@ -246,7 +249,8 @@ OptionTable benchSnowOptionTable(BenchSnowOptions& o) {
       {"--refill-tiles", "", "N", "tiles refilled per frame at most (default 4)",
        [&o](const std::string& v) {
          std::string error = setPositive(v, "--refill-tiles", 1024.0, o.refillTiles);
-         return error.empty() && o.refillTiles != std::floor(o.refillTiles) ? "--refill-tiles takes a whole number" : error;
+         return error.empty() && o.refillTiles != std::floor(o.refillTiles) ? "--refill-tiles takes a whole number"
+                                                                            : error;
        }},
       {"--device", "", "NAME", "Vulkan device, as render takes it", storeValue(o.device)},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
@@ -255,7 +259,8 @@ OptionTable benchSnowOptionTable(BenchSnowOptions& o) {
 
 // The movers on the default map, then 256 of them on smaller and larger maps.
 void measureMoverTable(vk::Context& ctx, int frames) {
-  std::printf("| interactors | map | stamps/frame | GPU ms/frame | ms per interactor | vs 1 interactor |\n|---|---|---|---|---|---|\n");
+  std::printf("| interactors | map | stamps/frame | GPU ms/frame | ms per interactor | vs 1 interactor |\n"
+              "|---|---|---|---|---|---|\n");
   double one = 0.0;
   for (int count : {1, 16, 256, 1024}) {
     double ms = measureMovers(ctx, 1024, count, frames);

@@ -80,7 +80,8 @@ std::size_t loadPrints(std::istream& in, const SnowWindow& window, std::uint64_t
   auto texelSize = r.read<float>("the texel size");
   if (tileTexels != std::uint32_t(window.tileTexels()) || texelSize != window.texelSize())
     r.fail("saved with " + std::to_string(tileTexels) + "-texel tiles of " + std::to_string(texelSize) +
-           " m texels; this map has " + std::to_string(window.tileTexels()) + " of " + std::to_string(window.texelSize()));
+           " m texels; this map has " + std::to_string(window.tileTexels()) + " of " +
+           std::to_string(window.texelSize()));
   const std::uint32_t texelsPerTile = tileTexels * tileTexels;
   auto tiles = r.read<std::uint64_t>("the tile count");
   PrintTileStore staged(store.budgetBytes());  // the file's tiles reach `store` only if all of it reads

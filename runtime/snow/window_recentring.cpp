@@ -26,7 +26,8 @@ void forEachTexelOf(const SnowWindow& window, glm::ivec2 tile, Visit&& visit) {
 }
 
 // A tile's texels, row-major, copied out of the window.
-std::vector<std::uint32_t> tileTexels(const SnowWindow& window, std::span<const std::uint32_t> heights, glm::ivec2 tile) {
+std::vector<std::uint32_t> tileTexels(const SnowWindow& window, std::span<const std::uint32_t> heights,
+                                      glm::ivec2 tile) {
   std::vector<std::uint32_t> dense(std::size_t(window.tileTexels()) * std::size_t(window.tileTexels()));
   forEachTexelOf(window, tile, [&](std::size_t i, std::size_t slot) { dense[i] = heights[slot]; });
   return dense;
@@ -97,8 +98,9 @@ Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, Prin
   return out;
 }
 
-PrintTileStore withWindowTiles(const SnowWindow& window, std::span<const std::uint32_t> heights, const PrintTileStore& store,
-                               const RefillSchedule& schedule, std::uint64_t refillQuanta) {
+PrintTileStore withWindowTiles(const SnowWindow& window, std::span<const std::uint32_t> heights,
+                               const PrintTileStore& store, const RefillSchedule& schedule,
+                               std::uint64_t refillQuanta) {
   PrintTileStore out = store;
   out.setBudget(std::numeric_limits<std::size_t>::max());  // a snapshot drops nothing
   forEachTile(window.rect(), window.tileTexels(), [&](glm::ivec2 tile) {

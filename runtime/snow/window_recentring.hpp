@@ -37,8 +37,8 @@ void storeAll(const SnowWindow& window, MapTexels texels, PrintTileStore& store,
               std::uint64_t refillQuanta);
 
 // The store plus every deformed tile of the window, changing neither: what a save writes.
-PrintTileStore withWindowTiles(const SnowWindow& window, std::span<const std::uint32_t> heights, const PrintTileStore& store,
-                               const RefillSchedule& schedule, std::uint64_t refillQuanta);
+PrintTileStore withWindowTiles(const SnowWindow& window, std::span<const std::uint32_t> heights,
+                               const PrintTileStore& store, const RefillSchedule& schedule, std::uint64_t refillQuanta);
 // The window starts over from the store: every tile of it is cleared, then taken back
 // from the store if it is there (what loading saved prints does). Returns the rectangles
 // whose normals were regenerated (the whole window).

@@ -31,7 +31,8 @@ std::vector<std::uint32_t> windowAround(DeformationMap& map, glm::vec2 centre) {
   std::vector<std::uint32_t> out;
   TexelRect r = map.window().rect();
   for (int z = r.min.y; z < r.min.y + r.size.y; ++z)
-    for (int x = r.min.x; x < r.min.x + r.size.x; ++x) out.push_back(map.texels().heights[map.window().storageIndex({x, z})]);
+    for (int x = r.min.x; x < r.min.x + r.size.x; ++x)
+      out.push_back(map.texels().heights[map.window().storageIndex({x, z})]);
   return out;
 }
 

@@ -78,7 +78,8 @@ TEST(RefillSchedule, ATileThatLeavesBeforeItsTurnCatchesUpWhenItReturns) {
   map.refill(kOneCentimetre, 1.0);  // and 1 cm more while away
   map.follow({0.f, 0.f});
   for (int frame = 0; frame < 10; ++frame) map.refill(0.0, 1.0 / 60.0);
-  for (std::size_t i = 0; i < centres.size(); ++i) EXPECT_NEAR(map.depthAt(centres[i]), 0.08f, 1.5f * kDepthQuantum) << i;
+  for (std::size_t i = 0; i < centres.size(); ++i)
+    EXPECT_NEAR(map.depthAt(centres[i]), 0.08f, 1.5f * kDepthQuantum) << i;
 }
 
 }  // namespace
