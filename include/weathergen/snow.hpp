@@ -72,7 +72,8 @@ struct Mesh {
   VkIndexType indexType = VK_INDEX_TYPE_UINT32;
   std::uint32_t indexCount = 0;
   float model[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  // World x, z the mesh covers this frame (its bounds): where normals are redone.
+  // World x, z the mesh covers this frame (its bounds): the only texels it is drawn
+  // into (parts outside are cut) and whose normals are redone.
   float footprintMin[2] = {0.f, 0.f}, footprintMax[2] = {0.f, 0.f};
 };
 

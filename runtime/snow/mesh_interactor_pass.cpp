@@ -1,6 +1,8 @@
 #include "runtime/snow/mesh_interactor_pass.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "runtime/snow/deformation_shaders.hpp"
 #include "runtime/vulkan/graphics_pipeline.hpp"
@@ -74,15 +76,26 @@ VkPipeline MeshInteractorPass::pipelineFor(std::uint32_t stride) {
 void MeshInteractorPass::record(VkCommandBuffer cmd, const WindowConstants& window, const SnowLevel& level,
                                 std::span<const MeshInteractor> meshes) {
   if (meshes.empty()) return;
+  // Each mesh is scissored to its footprint, the pass to their union: the rasteriser
+  // only visits the texels the meshes can reach.
+  std::vector<VkRect2D> scissors;
+  glm::ivec2 lo{int(resolution_)}, hi{0};
+  for (const MeshInteractor& m : meshes) {
+    glm::ivec2 a = glm::ivec2(glm::floor(m.footprintMin / window.texelSize)) - glm::ivec2(window.origin[0], window.origin[1]);
+    glm::ivec2 b = glm::ivec2(glm::floor(m.footprintMax / window.texelSize)) - glm::ivec2(window.origin[0], window.origin[1]) + 1;
+    a = glm::clamp(a, glm::ivec2(0), glm::ivec2(int(resolution_)));
+    b = glm::clamp(b, glm::ivec2(0), glm::ivec2(int(resolution_)));
+    scissors.push_back({{a.x, a.y}, {std::uint32_t(std::max(b.x - a.x, 0)), std::uint32_t(std::max(b.y - a.y, 0))}});
+    if (m.indexCount != 0 && b.x > a.x && b.y > a.y) lo = glm::min(lo, a), hi = glm::max(hi, b);
+  }
+  if (hi.x <= lo.x || hi.y <= lo.y) return;  // every mesh outside the window
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   begin.renderPass = pass_.get();
   begin.framebuffer = framebuffer_.get();
-  begin.renderArea.extent = {resolution_, resolution_};
+  begin.renderArea = {{lo.x, lo.y}, {std::uint32_t(hi.x - lo.x), std::uint32_t(hi.y - lo.y)}};
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   VkViewport viewport{0.f, 0.f, float(resolution_), float(resolution_), 0.f, 1.f};
-  VkRect2D scissor{{0, 0}, {resolution_, resolution_}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
   VkDescriptorSet set = set_->set();
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, set_->pipelineLayout(), 0, 1, &set, 0, nullptr);
   MeshWindowConstants c{};
@@ -94,8 +107,10 @@ void MeshInteractorPass::record(VkCommandBuffer cmd, const WindowConstants& wind
   c.texelSize = window.texelSize;
   c.surfaceHeight = level.surfaceHeight;
   c.snowDepth = level.depth;
-  for (const MeshInteractor& m : meshes) {
-    if (m.indexCount == 0) continue;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const MeshInteractor& m = meshes[i];
+    if (m.indexCount == 0 || scissors[i].extent.width == 0 || scissors[i].extent.height == 0) continue;
+    vkCmdSetScissor(cmd, 0, 1, &scissors[i]);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineFor(m.vertexStride));
     c.model = m.model;
     vkCmdPushConstants(cmd, set_->pipelineLayout(), kStages, 0, sizeof(c), &c);

@@ -25,7 +25,8 @@ struct MeshInteractor {
   VkIndexType indexType = VK_INDEX_TYPE_UINT32;
   std::uint32_t indexCount = 0;
   glm::mat4 model{1.f};
-  // World xz the mesh covers this frame: whose normals are redone.
+  // World xz the mesh covers this frame: where it is drawn (a scissor) and whose normals
+  // are redone. Parts outside are cut.
   glm::vec2 footprintMin{0.f}, footprintMax{0.f};
 };
 
