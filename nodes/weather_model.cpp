@@ -48,7 +48,6 @@ constexpr float kTilePerMetre = 1.f / kNoiseTile;
 constexpr float kTilePerFlowCell = 1.f / static_cast<float>(kFlowCells);
 constexpr float kTilePerRippleCell = 1.f / static_cast<float>(kRippleCells);
 constexpr float kRippleStrength = 0.25f;
-constexpr float kRippleFold = 7.f;  // decorrelates the ripple's second slope from the first
 // Temperatures (C) over which rain turns into wetness (eq. 3.15's T > 0, made continuous).
 constexpr float kWetTemperatureRamp = 1.f;
 // Precipitation over which the flowing-water normal fades in (eq. 3.15's P > 0).
@@ -146,10 +145,10 @@ glm::vec3 wetNormal(glm::vec3 tangentNormal, glm::vec2 xz, float p, float precip
   // No rain (rain 0) or a dry point (p 0): no flowing water, the normal as it was.
   float strength = (p > 0.f ? 2.f * kRippleStrength : 0.f) * smoothStep(0.f, kRainFlowRamp, precipitation);
   glm::vec2 uv = xz * kTilePerMetre + kWetFlowSpeed * (p * time * kTilePerRippleCell);
-  // One lookup gives both slopes: the second is the noise folded by a fixed factor.
-  float n = sampleNoise(uv).z;
-  float folded = n * kRippleFold;
-  glm::vec2 pan(n - 0.5f, folded - std::floor(folded) - 0.5f);
+  // One lookup gives both slopes: the ripple and the transition noise at the panned point.
+  // A point has no footprint, so nothing fades (the shader fades by its pixel's).
+  glm::vec4 n = sampleNoise(uv);
+  glm::vec2 pan(n.z - 0.5f, n.x - 0.5f);
   return tangentNormal + glm::vec3(pan * strength, 0.f);
 }
 

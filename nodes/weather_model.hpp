@@ -71,7 +71,8 @@ float wetness(float temperature, float wetnessLevel, float exposure);
 glm::vec3 wetDiffuse(glm::vec3 diffuse, float p);  // eq. 3.16: diffuse * Lerp(1, 0.7, p)
 float wetRoughness(float roughness, float p);      // eq. 3.17: Clamp(R - p)
 // Eq. 3.18: normal + Pan((0.5 p, 0.01 p)) * (1, 1, 0), flowing only while it rains; the
-// pan reads the noise texture's b channel.
+// pan's two slopes are the noise texture's b (ripple) and r channels at the panned point.
+// The shader also fades it by its pixel's footprint; a CPU point has none.
 glm::vec3 wetNormal(glm::vec3 tangentNormal, glm::vec2 xz, float p, float precipitation, float time);
 glm::vec3 desaturate(glm::vec3 in, float p);  // eq. 3.19
 float detailMask(glm::vec3 diffuse);          // eq. 3.19 with p = 1: Clamp(d . diffuse)

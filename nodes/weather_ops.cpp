@@ -26,6 +26,7 @@ PortSpec floatRequired(std::string_view name) { return {name, PortType::Float, s
 PortSpec floatPort(std::string_view name, float dflt, float lo = -1e30f, float hi = 1e30f) {
   return {name, PortType::Float, Value::scalar(dflt), lo, hi};
 }
+PortSpec vec3Port(std::string_view name, glm::vec3 d) { return {name, PortType::Vec3, Value::vec3(d.x, d.y, d.z)}; }
 PortSpec vec4Port(std::string_view name, glm::vec4 d) { return {name, PortType::Vec4, Value::vec4(d.x, d.y, d.z, d.w)}; }
 
 SnowShape shapeFrom(const Value& weights, const Value& shape, const Value* terms) {
@@ -148,12 +149,15 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
   ops.push_back(weatherOp("weather_wet_diffuse", "eq. 3.16: diffuse * Lerp(1, 0.7, p)",
                           {vec3Required("diffuse"), floatRequired("p")}, V3, "wg_wet_diffuse({diffuse}, {p})",
                           [](const Value* in, const EvalContext&) { return out3(wetDiffuse(v3(in[0]), in[1].x())); }));
-  ops.push_back(weatherOp("weather_wet_roughness", "eq. 3.17: Clamp(roughness - p)",
-                          {floatRequired("roughness"), floatRequired("p")}, F, "wg_wet_roughness({roughness}, {p})",
+  ops.push_back(weatherOp("weather_wet_roughness",
+                          "eq. 3.17: Clamp(roughness - p), widened by the normal's variance over the pixel in lit "
+                          "frames (specular anti-aliasing; fragment stage)",
+                          {floatRequired("roughness"), floatRequired("p"), vec3Port("normal", {0.f, 0.f, 1.f})}, F,
+                          "wg_specular_aa(wg_wet_roughness({roughness}, {p}), dFdx({normal}), dFdy({normal}))",
                           [](const Value* in, const EvalContext&) { return Value::scalar(wetRoughness(in[0].x(), in[1].x())); }));
-  ops.push_back(weatherOp("weather_wet_normal", "eq. 3.18: tangent normal + panning ripple while it rains",
+  ops.push_back(weatherOp("weather_wet_normal", "eq. 3.18: tangent normal + panning ripple while it rains, faded by the pixel footprint (fragment stage)",
                           {vec3Required("normal"), vec3Required("position"), floatRequired("p")}, V3,
-                          "wg_wet_normal({normal}, {position}.xz, {p}, frame_precipitation, frame_time)",
+                          "wg_wet_normal({normal}, {position}.xz, {p}, frame_precipitation, frame_time, fwidth({position}.xz))",
                           [](const Value* in, const EvalContext& c) {
                             return out3(wetNormal(v3(in[0]), {in[1].v[0], in[1].v[2]}, in[2].x(), c.frame->precipitation, c.frame->time));
                           },

@@ -67,13 +67,27 @@ float wg_wetness(float temperature, float level, float exposure) {
 }
 vec3 wg_wet_diffuse(vec3 d, float p) { return d * wg_lerp(1.0, 0.7, p); }  // eq. 3.16
 float wg_wet_roughness(float r, float p) { return wg_clamp01(r - p); }  // eq. 3.17
-// Eq. 3.18: a panning ripple added to the tangent-space normal while it rains.
-vec3 wg_wet_normal(vec3 n, vec2 xz, float p, float precipitation, float t) {
+// Specular anti-aliasing (Kaplanyan, Hill, Patney, Lefohn 2016): water makes a surface
+// glossy, and a normal map that varies within a pixel then lights single pixels as
+// glints, so the normal's screen-space variance widens the lobe (alpha = r^2, the kernel
+// capped at 0.18). Only the lit frame: AOVs show a point's value, as the CPU does.
+float wg_specular_aa(float r, vec3 dndx, vec3 dndy) {
+  float variance = 0.25 * (dot(dndx, dndx) + dot(dndy, dndy));
+  float kernel = frame_debugView == 0u ? min(2.0 * variance, 0.18) : 0.0;
+  return kernel > 0.0 ? sqrt(sqrt(min(r * r * r * r + kernel, 1.0))) : r;
+}
+// Eq. 3.18: a panning ripple added to the tangent-space normal while it rains. Its two
+// slopes are two smooth noise fields at the panned point (the ripple b and the transition
+// r, 2 and 1.5 cells per metre), faded out where a pixel's footprint (footprint: fwidth
+// of the world xz, metres) spans more than a quarter of a ripple cell, so it never
+// breaks up into sub-pixel glints; the CPU evaluator's footprint is 0.
+vec3 wg_wet_normal(vec3 n, vec2 xz, float p, float precipitation, float t, vec2 footprint) {
   // No rain (rain 0) or a dry point (p 0): no flowing water, the normal as it was.
   float strength = (p > 0.0 ? 2.0 * 0.25 : 0.0) * smoothstep(0.0, 0.1, precipitation);
   vec2 uv = xz * 0.03125 + vec2(0.5, 0.01) * (p * t * 0.015625);  // ripple cells: 64 per tile
-  float noise = wg_weather_noise(uv).z;
-  vec2 pan = vec2(noise - 0.5, fract(noise * 7.0) - 0.5);
+  vec4 noise = wg_weather_noise(uv);
+  float cellsPerPixel = 2.0 * max(footprint.x, footprint.y);
+  vec2 pan = vec2(noise.z - 0.5, noise.x - 0.5) * (1.0 - smoothstep(0.25, 0.75, cellsPerPixel));
   return n + vec3(pan * strength, 0.0);
 }
 vec3 wg_desaturate(vec3 c, float p) { return p * dot(vec3(0.3, 0.59, 0.11), c) + (1.0 - p) * c; }  // eq. 3.19

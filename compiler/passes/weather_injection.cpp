@@ -180,7 +180,7 @@ class WeatherInjector {
     if (cfg_.effects.ice)
       p = b_.add("multiply", {{"a", p}, {"b", b_.add("one_minus", {{"in", b_.add("smoothstep", {{"edge0", k(0.f)}, {"edge1", k(kWetBank)}, {"x", frostMap()}})}})}});
     color_ = b_.add("weather_wet_diffuse", {{"diffuse", color_}, {"p", p}});
-    roughness_ = b_.add("weather_wet_roughness", {{"roughness", roughness_}, {"p", p}});
+    roughness_ = b_.add("weather_wet_roughness", {{"roughness", roughness_}, {"p", p}, {"normal", tangentNormal_}});
     tangentNormal_ = b_.add("weather_wet_normal", {{"normal", tangentNormal_}, {"position", position_}, {"p", p}});
     g_.coverage(CoverageTerm::Wet) = p;
   }

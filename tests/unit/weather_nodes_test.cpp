@@ -268,13 +268,14 @@ TEST(WeatherNodes, WetDiffuseAndRoughness) {
   // Fully wet: 70 %.
   expectValue(eval("weather_wet_diffuse", {v3(1, 0.5f, 0), s(1)}), v3(0.7f, 0.35f, 0));
   expectValue(eval("weather_wet_diffuse", {kDiffuse, s(0)}), kDiffuse);
-  expectValue(eval("weather_wet_roughness", {s(0.8f), s(0.3f)}), s(0.5f));  // 0.8 - 0.3
-  expectValue(eval("weather_wet_roughness", {s(0.2f), s(0.5f)}), s(0));     // -0.3 -> 0
+  // A point has no footprint: no specular anti-aliasing, whatever the normal.
+  expectValue(eval("weather_wet_roughness", {s(0.8f), s(0.3f), v3(0, 0, 1)}), s(0.5f));  // 0.8 - 0.3
+  expectValue(eval("weather_wet_roughness", {s(0.2f), s(0.5f), v3(0.3f, 0, 0.95f)}), s(0));  // -0.3 -> 0
 }
 
 // Eq. 3.18 as read: N + pan * 2 * 0.25 * rain with one lookup n of the noise texture's
 // ripple channel (b) at xz / 32 + (0.5, 0.01) * p * time / 64 (64 ripple cells per tile)
-// giving both slopes, pan = (n - 0.5, fract(7 n) - 0.5), and rain = smoothstep(0, 0.1,
+// giving both slopes, pan = (n.b - 0.5, n.r - 0.5), and rain = smoothstep(0, 0.1,
 // precipitation).
 TEST(WeatherNodes, WetNormal) {
   Env env;
@@ -288,14 +289,14 @@ TEST(WeatherNodes, WetNormal) {
   // Precipitation 0.05 -> rain = smoothstep(0, 0.1, 0.05) = 0.5; scale 2 * 0.25 * 0.5 = 0.25.
   // At xz = 0, time 0 the lookup is at (0, 0).
   env.frame.precipitation = 0.05f;
-  const float n0 = weather::sampleNoise({0.f, 0.f}).z;
+  const glm::vec4 n0 = weather::sampleNoise({0.f, 0.f});
   expectValue(eval("weather_wet_normal", {flat, kOrigin, s(1)}, env),
-              v3(0.25f * (n0 - 0.5f), 0.25f * (7 * n0 - std::floor(7 * n0) - 0.5f), 1), 1e-4f);
+              v3(0.25f * (n0.z - 0.5f), 0.25f * (n0.x - 0.5f), 1), 1e-4f);
   // Full rain (scale 0.5), p = 0.5, time 4: uv = (0.5, 0.01) * 0.5 * 4 / 64 = (0.015625, 0.0003125).
   env.frame.precipitation = 1;
   env.frame.time = 4;
-  float n = weather::sampleNoise({0.015625f, 0.0003125f}).z;
-  float px = n - 0.5f, py = (7 * n - std::floor(7 * n)) - 0.5f;
+  glm::vec4 n = weather::sampleNoise({0.015625f, 0.0003125f});
+  float px = n.z - 0.5f, py = n.x - 0.5f;  // the ripple and transition channels
   expectValue(eval("weather_wet_normal", {v3(0.1f, 0.2f, 0.9f), kOrigin, s(0.5f)}, env),
               v3(0.1f + px * 0.5f, 0.2f + py * 0.5f, 0.9f), 1e-4f);
 }
