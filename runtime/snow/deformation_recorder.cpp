@@ -254,6 +254,27 @@ Recentring DeformationRecorder::recordFollow(VkCommandBuffer cmd, glm::vec2 came
   return {};
 }
 
+void DeformationRecorder::recordLoadPrints(VkCommandBuffer cmd, PrintTileStore prints) {
+  if (readbackState_ != Readback::Idle)
+    throw std::logic_error("snow prints can only be loaded on a frame where the window is not moving");
+  clearOnce(cmd);
+  store_ = std::move(prints);
+  scratchNormals_.resize(window_.texelCount());
+  MapTexels host{{static_cast<std::uint32_t*>(readback_.mapped()), window_.texelCount()}, scratchNormals_};
+  restoreAll(window_, host, store_, schedule_, refill_.totalQuanta());
+  withSurfaceWritable(cmd, [&] {
+    VkBufferCopy all{0, 0, heights_.size()};
+    vkCmdCopyBuffer(cmd, readback_.handle(), heights_.handle(), 1, &all);
+    recordNormals(cmd, {window_.rect()});
+  });
+  readbackState_ = Readback::Uploading;  // the host copy is read until this frame's commands complete
+  readbackFrame_ = frame_;
+}
+
+PrintTileStore DeformationRecorder::prints(std::span<const std::uint32_t> heights) const {
+  return withWindowTiles(window_, heights, store_, schedule_, refill_.totalQuanta());
+}
+
 Recentring DeformationRecorder::harvestReadback(VkCommandBuffer cmd) {
   TexelRect before = window_.rect();
   scratchNormals_.resize(window_.texelCount());

@@ -48,6 +48,14 @@ class DeformationRecorder {
   // tiles that hold prints and are owed a quantum (refill_schedule.hpp); records only
   // when one is.
   bool recordRefill(VkCommandBuffer cmd, double metresPerSecond, double seconds);
+  // Replaces every print with `prints` (what loading a prints file read): the window's
+  // tiles are rebuilt from it on the host, uploaded and re-normalled; the rest stays in
+  // the store. Not while the window is moving (a readback in flight).
+  void recordLoadPrints(VkCommandBuffer cmd, PrintTileStore prints);
+  // Every print, in the window (`heights`: a host copy of the height plane) and in the
+  // store, as saving writes them (print_store_file.hpp).
+  PrintTileStore prints(std::span<const std::uint32_t> heights) const;
+  std::uint64_t refillQuanta() const { return refill_.totalQuanta(); }
   // Makes every earlier write to the map and the surface image visible to `stages`.
   static void recordReadBarrier(VkCommandBuffer cmd, VkPipelineStageFlags stages, VkAccessFlags access);
 

@@ -2,6 +2,7 @@
 
 #include "runtime/snow/deformation_texel.hpp"
 #include "runtime/snow/map_lookup.hpp"
+#include "runtime/snow/print_store_file.hpp"
 
 namespace wg::snow {
 
@@ -35,7 +36,10 @@ double GpuDeformationMap::applyMeshes(std::span<const MeshInteractor> meshes, co
 
 double GpuDeformationMap::refill(double metresPerSecond, double seconds) {
   bool ran = false;
-  double ms = submit([&](VkCommandBuffer cmd) { ran = recorder_.recordRefill(cmd, metresPerSecond, seconds); });
+  double ms = submit([&](VkCommandBuffer cmd) {
+    ran = recorder_.recordRefill(cmd, metresPerSecond, seconds);
+    ran = recorder_.recordDeferredNormals(cmd) || ran;
+  });
   return ran ? ms : 0.0;
 }
 
@@ -50,8 +54,20 @@ Recentring GpuDeformationMap::follow(glm::vec2 camera) {
   return r;
 }
 
+void GpuDeformationMap::savePrints(const std::filesystem::path& path) {
+  savePrintsFile(path, recorder_.prints(texels().heights), window(), recorder_.refillQuanta());
+}
+
+void GpuDeformationMap::loadPrints(const std::filesystem::path& path) {
+  PrintTileStore loaded(store().budgetBytes());
+  loadPrintsFile(path, window(), recorder_.refillQuanta(), loaded);  // throws before anything changes
+  submit([&](VkCommandBuffer cmd) { recorder_.recordLoadPrints(cmd, std::move(loaded)); });
+}
+
 MapTexels GpuDeformationMap::texels() {
   std::size_t count = window().texelCount();
+  if (recorder_.deferredNormals() != 0)  // a complete map: the last entered tiles' normals too
+    submit([&](VkCommandBuffer cmd) { recorder_.recordDeferredNormals(cmd, recorder_.deferredNormals()); });
   if (!hostCurrent_) {
     VkDeviceSize bytes = count * sizeof(std::uint32_t);
     if (!hostHeights_.handle()) {
