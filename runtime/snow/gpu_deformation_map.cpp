@@ -36,10 +36,7 @@ double GpuDeformationMap::applyMeshes(std::span<const MeshInteractor> meshes, co
 
 double GpuDeformationMap::refill(double metresPerSecond, double seconds) {
   bool ran = false;
-  double ms = submit([&](VkCommandBuffer cmd) {
-    ran = recorder_.recordRefill(cmd, metresPerSecond, seconds);
-    ran = recorder_.recordDeferredNormals(cmd) || ran;
-  });
+  double ms = submit([&](VkCommandBuffer cmd) { ran = recorder_.recordRefill(cmd, metresPerSecond, seconds); });
   return ran ? ms : 0.0;
 }
 
@@ -66,8 +63,6 @@ void GpuDeformationMap::loadPrints(const std::filesystem::path& path) {
 
 MapTexels GpuDeformationMap::texels() {
   std::size_t count = window().texelCount();
-  if (recorder_.deferredNormals() != 0)  // a complete map: the last entered tiles' normals too
-    submit([&](VkCommandBuffer cmd) { recorder_.recordDeferredNormals(cmd, recorder_.deferredNormals()); });
   if (!hostCurrent_) {
     VkDeviceSize bytes = count * sizeof(std::uint32_t);
     if (!hostHeights_.handle()) {
