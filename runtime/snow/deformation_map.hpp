@@ -1,7 +1,8 @@
 // The CPU model of the deformation height map: the sliding window, its two texel
-// planes, the print store and the refill counter. The GPU map (gpu_deformation_map.hpp)
-// keeps the same state in mapped buffers and runs the stamps and normals as compute;
-// tests hold the two against each other.
+// planes, the print store, the refill counter and schedule. The GPU map
+// (gpu_deformation_map.hpp, deformation_recorder.hpp) keeps the same state in
+// device-local buffers and runs stamps, normals and refill as compute; tests hold the
+// two against each other.
 #pragma once
 #include <filesystem>
 #include <span>
