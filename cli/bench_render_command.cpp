@@ -13,6 +13,7 @@
 #include "cli/bench_options.hpp"
 #include "cli/number_text.hpp"
 #include "cli/model_scene.hpp"
+#include "cli/sample_count.hpp"
 #include "compiler/literal.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
@@ -23,7 +24,7 @@ namespace wg {
 namespace {
 
 constexpr const char* kUsage = R"(Usage: weathergen bench-render [--scene NAME|all | --model MODEL.gltf [--model-scale S]]
-                              [--frames N] [--size WxH] [--device NAME]
+                              [--frames N] [--size WxH] [--samples N] [--device NAME]
 
 Renders each scene (or the glTF model on its stage, as 'render --model' draws it) N times (default 30, after 3 warm-up frames) per configuration and
 prints the median GPU time of the colour pass, from Vulkan timestamp queries:
@@ -45,6 +46,7 @@ struct BenchRenderOptions {
   std::string sceneArg = "all", device, size = "1920x1080", modelPath;
   float modelScale = 1.f;
   int frames = 30;
+  unsigned samples = kDefaultColourSamples;
   bool help = false;
 };
 
@@ -64,6 +66,8 @@ OptionTable benchRenderOptionTable(BenchRenderOptions& o) {
       {"--frames", "", "N", "frames measured per configuration (default 30)",
        [&o](const std::string& v) { return setFrameCount(v, o.frames); }},
       {"--size", "", "WxH", "image size (default 1920x1080)", storeValue(o.size)},
+      {"--samples", "", "N", "MSAA samples per pixel of the lit pass, 1 for none (default 4)",
+       [&o](const std::string& v) { return setSampleCount(v, o.samples); }},
       {"--device", "", "NAME", "Vulkan device, as render takes it", storeValue(o.device)},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
   }};
@@ -104,13 +108,13 @@ BenchRequests benchRequests(glm::vec3 sun, unsigned width, unsigned height) {
 
 // Measures one scene and prints its row; returns its device allocations in bytes.
 std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string& graphsDir, unsigned width,
-                         unsigned height, int frames) {
+                         unsigned height, const BenchRenderOptions& o) {
   const BenchRequests requests = benchRequests(scene.towardsSun, width, height);
   std::string name = scene.name;
-  SceneRenderer renderer(ctx, std::move(scene), graphsDir);
+  SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(o.samples));
   auto measure = [&](const RenderRequest& request) {
     std::vector<double> times;
-    for (int i = 0; i < kWarmUpFrames + frames; ++i) {
+    for (int i = 0; i < kWarmUpFrames + o.frames; ++i) {
       double ms = renderer.render(request).gpuMilliseconds;
       if (i >= kWarmUpFrames) times.push_back(ms);
     }
@@ -129,13 +133,13 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   std::string error;
   auto ctx = vk::Context::create({o.device, false}, error);
   if (!ctx) return deviceUnavailable(error, o.device);
-  std::printf("Device: %s. %ux%u, median of %d frames (after %d warm-up frames), colour pass only.\n\n",
-              ctx->deviceName().c_str(), width, height, o.frames, kWarmUpFrames);
+  std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames (after %d warm-up frames), colour pass only.\n\n",
+              ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpFrames);
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | active / none |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   std::size_t gpuBytes = 0;
   for (auto& scene : scenes)
-    gpuBytes = std::max(gpuBytes, measureScene(*ctx, std::move(scene), graphsDir, width, height, o.frames));
+    gpuBytes = std::max(gpuBytes, measureScene(*ctx, std::move(scene), graphsDir, width, height, o));
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   std::printf("\nPeak resident memory of the process: %.1f MiB (ru_maxrss). Largest scene's device allocations "

@@ -39,7 +39,7 @@ int renderSnowfieldScene(const RenderOptions& o) {
   if (std::string e = applyAovAndWeather(o.aov, o.weatherLists, inputs, request); !e.empty()) return usageError(e);
   request.weatherPreset = o.weatherPreset;
   SnowfieldRenderOptions options{o.output,  o.framesDir,  o.device, o.graphsDir,
-                                 request,   o.validation, !o.quiet && ::isatty(STDERR_FILENO)};
+                                 request,   o.validation, !o.quiet && ::isatty(STDERR_FILENO), o.samples};
   try {
     return renderSnowfield(options);
   } catch (const std::exception& e) {

@@ -138,6 +138,8 @@ std::vector<Option> outputOptions(RenderOptions& o) {
       {"--backend", "", "glsl|hlsl", "which emitted SPIR-V to draw with (default glsl)",
        [&o](const std::string& v) { return setBackend(v, o.request); }},
       {"--size", "", "WxH", "image size (default 960x540)", [&o](const std::string& v) { return parseSize(v, o.request); }},
+      {"--samples", "", "N", "MSAA samples per pixel of lit frames: 1 (none), 2, 4\nor 8 (default 4; fewer where the device has fewer)",
+       [&o](const std::string& v) { return setSampleCount(v, o.samples); }},
       {"--aov", "", "NAME",
        "lit, albedo, roughness, normal, snow, wet, moss, frost,\nice, puddle or density (default lit)",
        storeValue(o.aov)},

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/sample_count.hpp"
 #include "runtime/scene/orbit_camera.hpp"
 #include "runtime/scene_renderer.hpp"
 
@@ -23,6 +24,7 @@ struct RenderOptions {
   std::optional<std::string> weatherPreset;
   std::vector<std::string> weatherLists;
   RenderRequest request;  // size, backend, shadows, precipitation
+  unsigned samples = kDefaultColourSamples;  // --samples: the lit pass's MSAA, 1 for none
   double step = 300.0;    // --timeline's simulation step, seconds
   bool validation = false, quiet = false;
   bool watch = false;

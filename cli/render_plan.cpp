@@ -78,6 +78,7 @@ std::string applyAovAndWeather(const std::string& aov, const std::vector<std::st
 
 std::string makeRenderPlan(const RenderOptions& o, const scene::Scene& scene, RenderPlan& plan) {
   plan.request = o.request;
+  plan.samples = o.samples;
   plan.request.weatherPreset = o.weatherPreset;
   plan.step = o.step;
   plan.output = o.output;

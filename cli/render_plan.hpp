@@ -14,6 +14,7 @@ namespace wg {
 
 struct RenderPlan {
   RenderRequest request;
+  unsigned samples = kDefaultColourSamples;  // the lit pass's MSAA
   std::optional<WeatherTimeline> timeline;
   double step = 300.0;
   std::string output, framesDir, aov;

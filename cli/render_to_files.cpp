@@ -97,7 +97,7 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
 RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPlan& plan, const std::string& graphsDir) {
   RenderedFiles result;
   try {
-    SceneRenderer renderer(ctx, std::move(scene), graphsDir);
+    SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(plan.samples));
     result.exitCode = plan.timeline ? renderTimelineSheet(renderer, ctx, plan) : renderOneFrame(renderer, ctx, plan);
     if (result.exitCode == kExitOk) result.materialInputs = renderer.materialInputFiles();
   } catch (const MaterialCompileError& e) {

@@ -17,7 +17,8 @@ int renderSnowfield(const SnowfieldRenderOptions& o) {
   auto ctx = vk::Context::create({o.device, o.validation}, error);
   if (!ctx) return deviceUnavailable(error, o.device);
   snow::SnowfieldSettings settings;
-  SceneRenderer renderer(*ctx, snow::makeSnowfieldScene(settings), o.graphsDir);
+  SceneRenderer renderer(*ctx, snow::makeSnowfieldScene(settings), o.graphsDir,
+                         static_cast<VkSampleCountFlagBits>(o.samples));
   snow::SnowfieldAnimation animation(*ctx, settings, o.request.weather);
   renderer.setSnowDeformation(&animation.deformationImage());
   std::vector<image::LabelledFrame> frames;

@@ -11,6 +11,7 @@ struct SnowfieldRenderOptions {
   std::string output, framesDir, device, graphsDir;
   RenderRequest request;  // size, backend, AOV, weather, shadows
   bool validation = false, progress = false;
+  unsigned samples = 4;  // the lit pass's MSAA
 };
 
 int renderSnowfield(const SnowfieldRenderOptions& options);

@@ -46,9 +46,8 @@ vk::UniqueRenderPass createColourPass(VkDevice device) {
   return createRenderPass(device, info);
 }
 
-VkSampleCountFlagBits colourPassSamples(const vk::Context& ctx) {
-  constexpr VkSampleCountFlagBits kWanted = VK_SAMPLE_COUNT_4_BIT;
-  if (!ctx.depthStencilResolve()) return VK_SAMPLE_COUNT_1_BIT;
+VkSampleCountFlagBits colourPassSamples(const vk::Context& ctx, VkSampleCountFlagBits wanted) {
+  if (wanted == VK_SAMPLE_COUNT_1_BIT || !ctx.depthStencilResolve()) return VK_SAMPLE_COUNT_1_BIT;
   const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
   VkSampleCountFlags counts = limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts;
   VkImageFormatProperties colour{}, depth{};
@@ -60,7 +59,9 @@ VkSampleCountFlagBits colourPassSamples(const vk::Context& ctx) {
                                                &depth) != VK_SUCCESS)
     return VK_SAMPLE_COUNT_1_BIT;
   counts &= colour.sampleCounts & depth.sampleCounts;
-  return (counts & kWanted) ? kWanted : VK_SAMPLE_COUNT_1_BIT;
+  for (auto count = static_cast<unsigned>(wanted); count > 1; count >>= 1)  // the most the device has, up to `wanted`
+    if (counts & count) return static_cast<VkSampleCountFlagBits>(count);
+  return VK_SAMPLE_COUNT_1_BIT;
 }
 
 vk::UniqueRenderPass createMultisampledColourPass(const vk::Context& ctx, VkSampleCountFlagBits samples) {

@@ -14,7 +14,7 @@ vk::UniqueRenderPass createColourPass(VkDevice device);
 // The lit colour pass's samples per pixel on this device: 4 where the colour and depth
 // formats take 4 samples as attachments and the depth can be resolved
 // (Context::depthStencilResolve); 1 otherwise.
-VkSampleCountFlagBits colourPassSamples(const vk::Context& ctx);
+VkSampleCountFlagBits colourPassSamples(const vk::Context& ctx, VkSampleCountFlagBits wanted);
 // The colour pass drawn with `samples` samples per pixel: multisampled colour and depth
 // (attachments 0 and 1, cleared, not stored) resolved at its end into single-sample
 // colour (attachment 2: the average of the samples) and depth (attachment 3: sample 0),

@@ -64,9 +64,10 @@ struct SceneRenderer::Frame {
   std::size_t slot(std::size_t pass, std::size_t object) const { return pass * materials.size() + object; }
 };
 
-SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory)
+SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory,
+                             VkSampleCountFlagBits colourSamples)
     : ctx_(ctx), scene_(std::move(scene)), graphsDirectory_(std::move(graphsDirectory)), timer_(ctx) {
-  colourSamples_ = colourPassSamples(ctx_);
+  colourSamples_ = colourPassSamples(ctx_, colourSamples);
   colourPass_ = colourSamples_ == VK_SAMPLE_COUNT_1_BIT ? createColourPass(ctx_.device())
                                                        : createMultisampledColourPass(ctx_, colourSamples_);
   aovPass_ = createColourPass(ctx_.device());

@@ -67,7 +67,10 @@ struct RenderedFrame {
 
 class SceneRenderer {
  public:
-  SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory);
+  // Lit frames draw with up to `colourSamples` samples per pixel (4x MSAA by default;
+  // fewer where the device lacks them, 1 for none).
+  SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string graphsDirectory,
+                VkSampleCountFlagBits colourSamples = VK_SAMPLE_COUNT_4_BIT);
   ~SceneRenderer();
   SceneRenderer(const SceneRenderer&) = delete;
   SceneRenderer& operator=(const SceneRenderer&) = delete;

@@ -34,6 +34,13 @@ class CommandLineNumbers(HostileCase):
             with self.subTest(frames):
                 self.failsUnchanged(["bench-render", "--size", "16x16", "--frames", frames], 2, vulkan=True)
 
+    def test_sample_counts(self):
+        for samples in BAD_COUNTS + ["3", "16", "5"]:
+            with self.subTest(samples):
+                self.failsUnchanged(["render", "--scene", "valley", "--samples", samples, "-o", self.path("x.png")], 2,
+                                    "--samples", vulkan=True)
+                self.failsUnchanged(["bench-render", "--size", "16x16", "--samples", samples], 2, vulkan=True)
+
     def test_eval_weather_surface_and_parameters(self):
         for value in BAD_REALS:
             with self.subTest(value):

@@ -59,6 +59,28 @@ TEST(AntiAliasing, LitFramesAreCloseToTheSupersampledView) {
   }
 }
 
+// render --samples 1 and bench-render --samples 1 (the MSAA cost): a renderer asked for
+// one sample draws without multisampling, and its lit frame is further from the
+// supersampled view than the 4x frame.
+TEST(AntiAliasing, OneSampleDrawsWithoutMultisampling) {
+  REQUIRE_VULKAN();
+  SceneRenderer& fourSamples = sceneRenderer("rocks");
+  SceneRenderer oneSample(*renderContext(), fourSamples.scene(), std::string(WG_SOURCE_DIR) + "/graphs",
+                          VK_SAMPLE_COUNT_1_BIT);
+  EXPECT_EQ(oneSample.colourSamples(), 1u);
+  RenderRequest request;
+  request.weather = weatherFor(fourSamples.scene());
+  request.width = 640;
+  request.height = 360;
+  const RenderedFrame large = fourSamples.render(request);
+  request.width = 160;
+  request.height = 90;
+  const double withMsaa = aliasingFigure(fourSamples.render(request), large);
+  const double without = aliasingFigure(oneSample.render(request), large);
+  expectNoValidationMessages();
+  EXPECT_GT(without, 1.3 * withMsaa) << "1 sample " << without << ", 4 samples " << withMsaa;
+}
+
 // An AOV pixel is one surface at its centre: coverage (alpha) is 0 or 1, never a
 // resolve's blend of a rock and the background.
 TEST(AntiAliasing, AovsAreNotBlendedAtEdges) {
