@@ -175,6 +175,15 @@ float skyExposure(float pointHeight, float occluderHeight) {
   return 1.f - smoothStep(pointHeight + kShelterClearance, pointHeight + kShelterFull, occluderHeight);
 }
 
+glm::vec3 snowRelief(glm::vec3 position, float height, glm::vec3 normal, glm::vec4 tangent) {
+  float hx = noiseAt(position + glm::vec3(kSnowReliefStep, 0.f, 0.f)).x;
+  float hz = noiseAt(position + glm::vec3(0.f, 0.f, kSnowReliefStep)).x;
+  glm::vec3 slope = glm::vec3(hx - height, 0.f, hz - height) * (kSnowReliefAmplitude / kSnowReliefStep);
+  glm::vec3 t(tangent);
+  glm::vec3 b = glm::cross(normal, t) * tangent.w;
+  return {-glm::dot(slope, t), -glm::dot(slope, b), 1.f};
+}
+
 float filteredSkyExposure(const std::vector<float>& heights, int resolution, glm::vec2 uv, float pointHeight) {
   if (resolution <= 0 || heights.size() != static_cast<std::size_t>(resolution) * resolution) return 1.f;
   float x = uv.x * resolution - 0.5f, y = uv.y * resolution - 0.5f;

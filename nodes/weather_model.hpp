@@ -111,6 +111,14 @@ float puddleIce(const FrameState& frame);
 float frostCoverage(const FrameState& frame, float frostMap, float noise);
 float hoarfrostCoverage(const FrameState& frame, float noise, float exposure);
 
+// Snow's micro-relief: the transition noise read as a height field of
+// kSnowReliefAmplitude metres over world xz (height: its value at the point), sloped by
+// forward differences kSnowReliefStep along x and z and tilted into the tangent frame
+// (normal, tangent xyz and bitangent sign w): the tangent-space normal snow takes on.
+inline constexpr float kSnowReliefAmplitude = 0.25f;  // metres per unit of noise
+inline constexpr float kSnowReliefStep = 0.125f;      // metres: two noise texels
+glm::vec3 snowRelief(glm::vec3 position, float height, glm::vec3 normal, glm::vec4 tangent);
+
 // The sky-exposure map (docs/weather-model.md, "Sky exposure"): texels per side over the
 // scene's xz extent, about 6 cm on the 122 m rocks scene.
 inline constexpr int kSkyExposureResolution = 2048;

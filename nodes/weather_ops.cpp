@@ -196,6 +196,19 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                             return out3(ml > 1e-6f ? m / ml : glm::vec3(0.f));
                           },
                           V));
+  ops.push_back(weatherOp("weather_snow_relief",
+                          "snow's micro-relief: the tangent-space normal of the transition noise read as a 25 cm height field",
+                          {vec3Required("position"), floatRequired("height")}, V3,
+                          "wg_snow_relief({position}, {height}, {@worldNormal}, {@worldTangent})",
+                          [](const Value* in, const EvalContext& c) {
+                            glm::vec3 n = glm::normalize(arr3(c.surface->worldNormal));
+                            glm::vec3 t(c.surface->tangent[0], c.surface->tangent[1], c.surface->tangent[2]);
+                            glm::vec3 tangent = t - n * glm::dot(n, t);
+                            float len = glm::length(tangent);
+                            tangent = len > 1e-6f ? tangent / len : glm::vec3(0.f);
+                            return out3(snowRelief(v3(in[0]), in[1].x(), n, glm::vec4(tangent, c.surface->tangent[3])));
+                          },
+                          V));
   {
     OpDef exposure = weatherOp("sky_exposure", "open sky above the point: 1 exposed, 0 under a roof (shared map)",
                                {vec3Required("position")}, F,

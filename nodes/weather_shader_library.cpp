@@ -162,6 +162,17 @@ float wg_hoarfrost_coverage(float noise, float exposure) {
   float level = wg_clamp01(frame_frostLevel) * wg_clamp01(exposure);
   return wg_transition(noise, level);
 }
+// Snow's micro-relief: the transition noise (r, the shared lookup's `height`) read as a
+// height field of kSnowReliefAmplitude metres over world xz, its slope by forward
+// differences two noise texels (12.5 cm) along x and z, tilted into the tangent frame
+// (n the geometric normal, tangent its tangent): a tangent-space normal for cover().
+vec3 wg_snow_relief(vec3 p, float height, vec3 n, vec4 tangent) {
+  float hx = wg_weather_noise_at(p + vec3(0.125, 0.0, 0.0)).x;
+  float hz = wg_weather_noise_at(p + vec3(0.0, 0.0, 0.125)).x;
+  vec3 slope = vec3(hx - height, 0.0, hz - height) * (0.25 / 0.125);  // metres per metre
+  vec3 b = cross(n, tangent.xyz) * tangent.w;
+  return vec3(-dot(slope, tangent.xyz), -dot(slope, b), 1.0);
+}
 // Tangent-space normal to world space; the fragment stage's frame is already orthonormal.
 vec3 wg_tangent_to_world(vec3 n, vec3 normal, vec4 tangent) {
   vec3 b = cross(normal, tangent.xyz) * tangent.w;

@@ -109,14 +109,15 @@ class WeatherInjector {
   void cover(const Operand& coverage, const Operand& albedo, float roughness, float specular, float normalFlattening) {
     cover(coverage, albedo, k(roughness), k(specular), normalFlattening);
   }
+  // The normal moves towards the layer's own (flat unless given) by normalFlattening.
   void cover(const Operand& coverage, const Operand& albedo, const Operand& roughness, const Operand& specular,
-             float normalFlattening) {
+             float normalFlattening, const Operand& layerNormal = flatNormal()) {
     color_ = lerp(color_, albedo, coverage);
     roughness_ = lerp(roughness_, roughness, coverage);
     specular_ = lerp(specular_, specular, coverage);
     metallic_ = lerp(metallic_, k(0.f), coverage);
     if (normalFlattening > 0.f)
-      tangentNormal_ = lerp(tangentNormal_, flatNormal(), b_.add("multiply", {{"a", coverage}, {"b", k(normalFlattening)}}));
+      tangentNormal_ = lerp(tangentNormal_, layerNormal, b_.add("multiply", {{"a", coverage}, {"b", k(normalFlattening)}}));
   }
 
   // The shared noise lookup at the point (nodes/weather_noise.hpp), made once: snow,
@@ -147,7 +148,9 @@ class WeatherInjector {
                                                         {"position", position_}, {"diffuse", diffuse_}, {"terrain", terrain},
                                                         {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
                                                         {"terms", terms_}, {"noise", noise("transition")}});
-    cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), weather::kSnowRoughness, 0.5f, 0.7f);
+    // Snow's own lit micro-relief replaces the surface's detail under it.
+    Operand relief = b_.add("weather_snow_relief", {{"position", position_}, {"height", noise("transition")}});
+    cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), k(weather::kSnowRoughness), k(0.5f), 0.7f, relief);
     g_.coverage(CoverageTerm::Snow) = coverage;
     if (cfg_.effects.displacement) {
       Operand offset = b_.add("weather_snow_offset", {{"normal", normal_}, {"position", position_}, {"exposure", exposure_},

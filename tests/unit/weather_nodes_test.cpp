@@ -70,7 +70,8 @@ TEST(WeatherNodes, EveryWeatherOpIsRegistered) {
         "weather_wet_normal", "weather_detail_mask", "weather_snow_albedo", "weather_moss_albedo", "weather_ice_albedo",
         "weather_frost_mask", "weather_puddle_mask", "tangent_to_world", "sky_exposure", "weather_levels",
         "weather_conditions", "weather_snow_coverage", "weather_snow_offset", "weather_moss_coverage",
-        "weather_puddle_coverage", "weather_frost_coverage", "weather_hoarfrost_coverage", "weather_noise"}) {
+        "weather_puddle_coverage", "weather_frost_coverage", "weather_hoarfrost_coverage", "weather_noise",
+        "weather_snow_relief"}) {
     const OpDef* op = findOp(name);
     ASSERT_NE(op, nullptr) << name;
     EXPECT_NE(op->eval, nullptr) << name;
@@ -299,6 +300,20 @@ TEST(WeatherNodes, WetNormal) {
   float px = n.z - 0.5f, py = n.x - 0.5f;  // the ripple and transition channels
   expectValue(eval("weather_wet_normal", {v3(0.1f, 0.2f, 0.9f), kOrigin, s(0.5f)}, env),
               v3(0.1f + px * 0.5f, 0.2f + py * 0.5f, 0.9f), 1e-4f);
+}
+
+// Snow's relief: the transition noise as a 25 cm height field, sloped by forward
+// differences 12.5 cm along x and z, in the tangent frame. On level ground with the
+// tangent along +x the bitangent is -z, so the normal leans against the slope in x and
+// with it in z.
+TEST(WeatherNodes, SnowReliefIsTheNoiseHeightsNormalInTangentSpace) {
+  Env env;
+  env.surface.worldNormal = {0.f, 1.f, 0.f};
+  env.surface.tangent = {1.f, 0.f, 0.f, 1.f};
+  const glm::vec3 p(3.f, 0.f, 5.f);
+  float h = weather::noiseAt(p).x;
+  float hx = weather::noiseAt(p + glm::vec3(0.125f, 0.f, 0.f)).x, hz = weather::noiseAt(p + glm::vec3(0.f, 0.f, 0.125f)).x;
+  expectValue(eval("weather_snow_relief", {v3(p.x, p.y, p.z), s(h)}, env), v3(-2.f * (hx - h), 2.f * (hz - h), 1.f), 1e-5f);
 }
 
 // Eq. 3.19 with p = 1: Clamp((0.3, 0.59, 0.11) . diffuse).
