@@ -279,6 +279,7 @@ Recentring DeformationRecorder::harvestReadback(VkCommandBuffer cmd) {
   TexelRect before = window_.rect();
   scratchNormals_.resize(window_.texelCount());
   MapTexels texels{{static_cast<std::uint32_t*>(readback_.mapped()), window_.texelCount()}, scratchNormals_};
+  recordDeferredNormals(cmd, deferredNormals_.size());  // the last ring, before the window moves on
   Recentring r = recentre(window_, texels, readbackCamera_, store_, schedule_, refill_.totalQuanta());
   readbackState_ = Readback::Idle;
   if (!r.moved()) return r;
@@ -286,11 +287,20 @@ Recentring DeformationRecorder::harvestReadback(VkCommandBuffer cmd) {
   std::vector<VkBufferCopy> rows = rowsOfTilesOutside(window_, window_.rect(), before);
   withSurfaceWritable(cmd, [&] {
     vkCmdCopyBuffer(cmd, readback_.handle(), heights_.handle(), static_cast<std::uint32_t>(rows.size()), rows.data());
-    recordNormals(cmd, r.enteredRects);
   });
+  deferredNormals_.insert(deferredNormals_.end(), r.enteredRects.begin(), r.enteredRects.end());
   readbackState_ = Readback::Uploading;
   readbackFrame_ = frame_;
   return r;
+}
+
+bool DeformationRecorder::recordDeferredNormals(VkCommandBuffer cmd, std::size_t most) {
+  std::size_t count = std::min(most, deferredNormals_.size());
+  if (count == 0) return false;
+  std::vector<TexelRect> rects(deferredNormals_.begin(), deferredNormals_.begin() + std::ptrdiff_t(count));
+  deferredNormals_.erase(deferredNormals_.begin(), deferredNormals_.begin() + std::ptrdiff_t(count));
+  withSurfaceWritable(cmd, [&] { recordNormals(cmd, rects); });
+  return true;
 }
 
 void DeformationRecorder::recordReadBarrier(VkCommandBuffer cmd, VkPipelineStageFlags stages, VkAccessFlags access) {

@@ -7,11 +7,13 @@
 // Recentring needs the tiles that leave on the CPU (the print store): one frame records
 // a copy of their rows into a host buffer, and the first frame that reuses that
 // frame's index (so its commands have completed) moves the window on the CPU and
-// records the entering tiles' upload and normals. Stamps on tiles that leave in
-// between are lost; they are half a window from the camera.
+// records the entering tiles' upload; their normals follow over the next frames.
+// Stamps on tiles that leave in between are lost; they are half a window from the
+// camera.
 #pragma once
 #include <glm/glm.hpp>
 
+#include <deque>
 #include <memory>
 #include <span>
 #include <vector>
@@ -56,6 +58,13 @@ class DeformationRecorder {
   // store, as saving writes them (print_store_file.hpp).
   PrintTileStore prints(std::span<const std::uint32_t> heights) const;
   std::uint64_t refillQuanta() const { return refill_.totalQuanta(); }
+  // Normals and surface texels of the tiles that entered with the last recentring, at
+  // most `most` tiles: recentring leaves them to the following frames (they lie past
+  // the snow layer's border fade), so the frame that moves the window only uploads.
+  // The remainder is flushed before the window moves again.
+  bool recordDeferredNormals(VkCommandBuffer cmd, std::size_t most = kDeferredNormalTilesPerFrame);
+  std::size_t deferredNormals() const { return deferredNormals_.size(); }
+  static constexpr std::size_t kDeferredNormalTilesPerFrame = 8;
   // Makes every earlier write to the map and the surface image visible to `stages`.
   static void recordReadBarrier(VkCommandBuffer cmd, VkPipelineStageFlags stages, VkAccessFlags access);
 
@@ -86,6 +95,7 @@ class DeformationRecorder {
   vk::Buffer heights_, normals_, stamps_, stampBoxes_, normalRects_, refillTiles_;
   vk::Buffer readback_;  // host-visible copy of the height plane for recentring
   std::vector<std::uint32_t> scratchNormals_;  // the CPU's normals while recentring (the GPU redoes them)
+  std::deque<TexelRect> deferredNormals_;      // entered tiles (grown by one texel) still to renormal
   vk::Image2D surface_;
   std::unique_ptr<MeshInteractorPass> meshPass_;  // null without fragmentStoresAndAtomics
   PrintTileStore store_;

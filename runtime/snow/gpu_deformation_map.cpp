@@ -36,7 +36,10 @@ double GpuDeformationMap::applyMeshes(std::span<const MeshInteractor> meshes, co
 
 double GpuDeformationMap::refill(double metresPerSecond, double seconds) {
   bool ran = false;
-  double ms = submit([&](VkCommandBuffer cmd) { ran = recorder_.recordRefill(cmd, metresPerSecond, seconds); });
+  double ms = submit([&](VkCommandBuffer cmd) {
+    ran = recorder_.recordRefill(cmd, metresPerSecond, seconds);
+    ran = recorder_.recordDeferredNormals(cmd) || ran;
+  });
   return ran ? ms : 0.0;
 }
 
@@ -63,6 +66,8 @@ void GpuDeformationMap::loadPrints(const std::filesystem::path& path) {
 
 MapTexels GpuDeformationMap::texels() {
   std::size_t count = window().texelCount();
+  if (recorder_.deferredNormals() != 0)  // a complete map: the last entered tiles' normals too
+    submit([&](VkCommandBuffer cmd) { recorder_.recordDeferredNormals(cmd, recorder_.deferredNormals()); });
   if (!hostCurrent_) {
     VkDeviceSize bytes = count * sizeof(std::uint32_t);
     if (!hostHeights_.handle()) {

@@ -28,7 +28,9 @@ class GpuDeformationMap {
   // Meshes drawn from below into the map (mesh_interactor_pass.hpp); GPU milliseconds.
   double applyMeshes(std::span<const MeshInteractor> meshes, const SnowLevel& level);
   // Refill at `metresPerSecond` for `seconds`; dispatches only when a quantum is due.
-  // Returns the GPU milliseconds of the refill and its normals (0 when none ran).
+  // Also the normals of the tiles the last follow() brought in, a few a call
+  // (DeformationRecorder::recordDeferredNormals). Returns the GPU milliseconds of
+  // both (0 when neither ran).
   double refill(double metresPerSecond, double seconds);
   Recentring follow(glm::vec2 camera);
   // Every print, in the window and in the store, to a file (print_store_file.hpp), and
@@ -38,7 +40,8 @@ class GpuDeformationMap {
 
   const SnowWindow& window() const { return recorder_.window(); }
   const PrintTileStore& store() const { return recorder_.store(); }
-  // Both planes read back from the device (once per change), in toroidal order.
+  // Both planes read back from the device (once per change), in toroidal order, after
+  // finishing any deferred normals (and surface texels).
   MapTexels texels();
   float depthAt(glm::vec2 world);
   float heightAt(glm::vec2 world);

@@ -124,6 +124,7 @@ std::string DeformableSnow::record(VkCommandBuffer cmd, const Frame& frame) noex
     for (std::size_t i = 0; i < frame.meshCount; ++i) meshes.push_back(toInteractor(frame.meshes[i]));
     r.recordMeshes(cmd, meshes, {frame.snowSurfaceHeight, frame.snowDepth});
     r.recordRefill(cmd, frame.refillMetresPerSecond, frame.seconds);
+    r.recordDeferredNormals(cmd);
     wg::snow::DeformationRecorder::recordReadBarrier(
         cmd,
         VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |

@@ -173,11 +173,11 @@ TEST_F(GpuDeformation, PrintsSurviveRecentringAndARoundTrip) {
 TEST_F(GpuDeformation, SurfaceImageFollowsTheMap) {
   GpuDeformationMap gpu(*snowContext(), kSmall);
   auto expectSurfaceMatches = [&](const char* when) {
+    auto t = gpu.texels();  // first: it finishes the normals recentring deferred
     // download() only reads the image (it is not const-qualified).
     auto& image = const_cast<vk::Image2D&>(gpu.surfaceImage());
     auto raw = image.download(*snowContext(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     const auto* halves = reinterpret_cast<const std::uint16_t*>(raw.data());
-    auto t = gpu.texels();
     int deformed = 0, wrong = 0;
     for (std::size_t i = 0; i < t.heights.size(); ++i) {
       glm::vec4 s(glm::unpackHalf1x16(halves[4 * i]), glm::unpackHalf1x16(halves[4 * i + 1]),
