@@ -58,6 +58,9 @@ constexpr float kSnowBandSpread = 2.f, kMossBandSpread = 1.5f, kIceBandSpread = 
 constexpr glm::vec3 kSnowTint{0.97f, 0.985f, 1.f};
 constexpr glm::vec3 kMossTint{0.45f, 0.75f, 0.2f};
 constexpr glm::vec3 kIceTint{0.85f, 0.95f, 1.f};
+// Ice cracks and bubbles: the frozen surface's tangent-normal bend (|xy|) over which ice
+// goes from its detail-mask shade to the band's top.
+constexpr Band kIceCrackBend{0.3f, 0.6f};
 // Height differences below this (metres) would divide by zero in eq. 3.8.
 constexpr float kMinHeightRange = 1e-3f;
 // Eq. 3.20 raises 1 - F to a power that may be 0; pow(0, 0) is undefined in shaders.
@@ -158,7 +161,11 @@ float detailMask(glm::vec3 diffuse) { return clamp01(desaturate(diffuse, 1.f).x)
 
 glm::vec3 snowAlbedo(glm::vec3 diffuse) { return bandAlbedo(diffuse, kSnowTint, kSnowBand, kSnowBandSpread); }
 glm::vec3 mossAlbedo(glm::vec3 diffuse) { return bandAlbedo(diffuse, kMossTint, kGrassBand, kMossBandSpread); }
-glm::vec3 iceAlbedo(glm::vec3 diffuse) { return bandAlbedo(diffuse, kIceTint, kOceanIceBand, kIceBandSpread); }
+glm::vec3 iceAlbedo(glm::vec3 diffuse, glm::vec3 tangentNormal) {
+  float cracks = smoothStep(kIceCrackBend.low, kIceCrackBend.high, glm::length(glm::vec2(tangentNormal)));
+  float value = lerp(kOceanIceBand.low, kOceanIceBand.high, clamp01(detailMask(diffuse) * kIceBandSpread + cracks));
+  return kIceTint / reflectance(kIceTint) * value;
+}
 
 float frostMask(float frostMap, float frostLevel) {
   float exponent = lerp(0.f, kFrostExponentMax, 1.f - clamp01(frostLevel));
@@ -175,10 +182,10 @@ float skyExposure(float pointHeight, float occluderHeight) {
   return 1.f - smoothStep(pointHeight + kShelterClearance, pointHeight + kShelterFull, occluderHeight);
 }
 
-glm::vec3 snowRelief(glm::vec3 position, float height, glm::vec3 normal, glm::vec4 tangent) {
-  float hx = noiseAt(position + glm::vec3(kSnowReliefStep, 0.f, 0.f)).x;
-  float hz = noiseAt(position + glm::vec3(0.f, 0.f, kSnowReliefStep)).x;
-  glm::vec3 slope = glm::vec3(hx - height, 0.f, hz - height) * (kSnowReliefAmplitude / kSnowReliefStep);
+glm::vec3 noiseRelief(glm::vec3 position, float height, float amplitude, glm::vec3 normal, glm::vec4 tangent) {
+  float hx = noiseAt(position + glm::vec3(kReliefStep, 0.f, 0.f)).x;
+  float hz = noiseAt(position + glm::vec3(0.f, 0.f, kReliefStep)).x;
+  glm::vec3 slope = glm::vec3(hx - height, 0.f, hz - height) * (amplitude / kReliefStep);
   glm::vec3 t(tangent);
   glm::vec3 b = glm::cross(normal, t) * tangent.w;
   return {-glm::dot(slope, t), -glm::dot(slope, b), 1.f};

@@ -78,7 +78,9 @@ glm::vec3 desaturate(glm::vec3 in, float p);  // eq. 3.19
 float detailMask(glm::vec3 diffuse);          // eq. 3.19 with p = 1: Clamp(d . diffuse)
 glm::vec3 snowAlbedo(glm::vec3 diffuse);      // eq. 3.19 + Table 4.1 snow band
 glm::vec3 mossAlbedo(glm::vec3 diffuse);      // detail mask * green, grass band
-glm::vec3 iceAlbedo(glm::vec3 diffuse);       // ocean-ice band
+// Ocean-ice band: darker diffuse fills first (spread 3), and cracks and trapped bubbles,
+// where the frozen surface's tangent normal bends (|xy| 0.3-0.6), go to the band's top.
+glm::vec3 iceAlbedo(glm::vec3 diffuse, glm::vec3 tangentNormal = {0.f, 0.f, 1.f});
 // Eq. 3.20: (1 - F)^Lerp(0, 5, 1 - frost), faded in over the first tenth of freezing.
 float frostMask(float frostMap, float frostLevel);
 // Section 5.1.2: flat (within 8 degrees of up) and where high-contrast noise allows.
@@ -111,13 +113,14 @@ float puddleIce(const FrameState& frame);
 float frostCoverage(const FrameState& frame, float frostMap, float noise);
 float hoarfrostCoverage(const FrameState& frame, float noise, float exposure);
 
-// Snow's micro-relief: the transition noise read as a height field of
-// kSnowReliefAmplitude metres over world xz (height: its value at the point), sloped by
-// forward differences kSnowReliefStep along x and z and tilted into the tangent frame
-// (normal, tangent xyz and bitangent sign w): the tangent-space normal snow takes on.
-inline constexpr float kSnowReliefAmplitude = 0.25f;  // metres per unit of noise
-inline constexpr float kSnowReliefStep = 0.125f;      // metres: two noise texels
-glm::vec3 snowRelief(glm::vec3 position, float height, glm::vec3 normal, glm::vec4 tangent);
+// A layer's own relief: the transition noise read as a height field of `amplitude`
+// metres per unit of noise over world xz (height: its value at the point), sloped by
+// forward differences kReliefStep along x and z and tilted into the tangent frame
+// (normal, tangent xyz and bitangent sign w): the tangent-space normal the layer takes on.
+inline constexpr float kSnowReliefAmplitude = 0.25f;  // metres per unit of noise: wind-drifted bumps
+inline constexpr float kIceReliefAmplitude = 0.04f;   // a frozen surface's slight undulation
+inline constexpr float kReliefStep = 0.125f;          // metres: two noise texels
+glm::vec3 noiseRelief(glm::vec3 position, float height, float amplitude, glm::vec3 normal, glm::vec4 tangent);
 
 // The sky-exposure map (docs/weather-model.md, "Sky exposure"): texels per side over the
 // scene's xz extent, about 6 cm on the 122 m rocks scene.

@@ -39,6 +39,16 @@ SnowShape shapeFrom(const Value& weights, const Value& shape, const Value* terms
   return s;
 }
 
+// The fragment stage's frame at a surface point: the unit normal, and the tangent made
+// orthogonal to it (w: the bitangent's sign).
+std::pair<glm::vec3, glm::vec4> tangentFrame(const SurfacePoint& s) {
+  glm::vec3 n = glm::normalize(arr3(s.worldNormal));
+  glm::vec3 t(s.tangent[0], s.tangent[1], s.tangent[2]);
+  glm::vec3 tangent = t - n * glm::dot(n, t);
+  float len = glm::length(tangent);
+  return {n, glm::vec4(len > 1e-6f ? tangent / len : glm::vec3(0.f), s.tangent[3])};
+}
+
 OpDef weatherOp(std::string_view name, std::string_view summary, std::vector<PortSpec> inputs, ValueType type,
                 std::string_view glsl, CpuEval eval, OpPurity purity = OpPurity::Pure) {
   // The library text is shared; only vector type names differ, and templates use none.
@@ -171,9 +181,11 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
   ops.push_back(weatherOp("weather_moss_albedo", "detail mask * green, Table 4.1 grass band 0.25-0.53",
                           {vec3Required("diffuse")}, V3, "wg_moss_albedo({diffuse})",
                           [](const Value* in, const EvalContext&) { return out3(mossAlbedo(v3(in[0]))); }));
-  ops.push_back(weatherOp("weather_ice_albedo", "Table 4.1 ocean-ice band 0.5-0.7", {vec3Required("diffuse")}, V3,
-                          "wg_ice_albedo({diffuse})",
-                          [](const Value* in, const EvalContext&) { return out3(iceAlbedo(v3(in[0]))); }));
+  ops.push_back(weatherOp("weather_ice_albedo",
+                          "Table 4.1 ocean-ice band 0.5-0.7: darker diffuse fills first, cracks and bubbles (where the "
+                          "frozen surface's tangent normal bends) at the band's top",
+                          {vec3Required("diffuse"), vec3Port("normal", {0.f, 0.f, 1.f})}, V3, "wg_ice_albedo({diffuse}, {normal})",
+                          [](const Value* in, const EvalContext&) { return out3(iceAlbedo(v3(in[0]), v3(in[1]))); }));
   ops.push_back(weatherOp("weather_frost_mask", "eq. 3.20: (1 - frostMap)^Lerp(0, 5, 1 - frost)",
                           {floatRequired("frostMap"), floatRequired("frost")}, F, "wg_frost_mask({frostMap}, {frost})",
                           [](const Value* in, const EvalContext&) { return Value::scalar(frostMask(in[0].x(), in[1].x())); }));
@@ -185,28 +197,22 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
   ops.push_back(weatherOp("tangent_to_world", "tangent-space normal to world space", {vec3Required("normal")}, V3,
                           "wg_tangent_to_world({normal}, {@worldNormal}, {@worldTangent})",
                           [](const Value* in, const EvalContext& c) {
-                            glm::vec3 n = glm::normalize(arr3(c.surface->worldNormal));
-                            glm::vec3 t(c.surface->tangent[0], c.surface->tangent[1], c.surface->tangent[2]);
-                            glm::vec3 tangent = t - n * glm::dot(n, t);
-                            float len = glm::length(tangent);
-                            tangent = len > 1e-6f ? tangent / len : glm::vec3(0.f);
-                            glm::vec3 b = glm::cross(n, tangent) * c.surface->tangent[3];
+                            auto [n, t] = tangentFrame(*c.surface);
+                            glm::vec3 tangent(t);
+                            glm::vec3 b = glm::cross(n, tangent) * t.w;
                             glm::vec3 m = tangent * in[0].v[0] + b * in[0].v[1] + n * in[0].v[2];
                             float ml = glm::length(m);
                             return out3(ml > 1e-6f ? m / ml : glm::vec3(0.f));
                           },
                           V));
-  ops.push_back(weatherOp("weather_snow_relief",
-                          "snow's micro-relief: the tangent-space normal of the transition noise read as a 25 cm height field",
-                          {vec3Required("position"), floatRequired("height")}, V3,
-                          "wg_snow_relief({position}, {height}, {@worldNormal}, {@worldTangent})",
+  ops.push_back(weatherOp("weather_noise_relief",
+                          "a layer's own relief: the tangent-space normal of the transition noise read as a height field "
+                          "of `amplitude` metres (snow 0.25, ice 0.04)",
+                          {vec3Required("position"), floatRequired("height"), floatPort("amplitude", 0.25f, 0.f, 4.f)}, V3,
+                          "wg_noise_relief({position}, {height}, {amplitude}, {@worldNormal}, {@worldTangent})",
                           [](const Value* in, const EvalContext& c) {
-                            glm::vec3 n = glm::normalize(arr3(c.surface->worldNormal));
-                            glm::vec3 t(c.surface->tangent[0], c.surface->tangent[1], c.surface->tangent[2]);
-                            glm::vec3 tangent = t - n * glm::dot(n, t);
-                            float len = glm::length(tangent);
-                            tangent = len > 1e-6f ? tangent / len : glm::vec3(0.f);
-                            return out3(snowRelief(v3(in[0]), in[1].x(), n, glm::vec4(tangent, c.surface->tangent[3])));
+                            auto [n, tangent] = tangentFrame(*c.surface);
+                            return out3(noiseRelief(v3(in[0]), in[1].x(), in[2].x(), n, tangent));
                           },
                           V));
   {

@@ -99,7 +99,13 @@ vec3 wg_band_albedo(vec3 d, vec3 tint, float lo, float hi, float spread) {
 }
 vec3 wg_snow_albedo(vec3 d) { return wg_band_albedo(d, vec3(0.97, 0.985, 1.0), 0.9, 0.95, 2.0); }
 vec3 wg_moss_albedo(vec3 d) { return wg_band_albedo(d, vec3(0.45, 0.75, 0.2), 0.25, 0.53, 1.5); }
-vec3 wg_ice_albedo(vec3 d) { return wg_band_albedo(d, vec3(0.85, 0.95, 1.0), 0.5, 0.7, 3.0); }
+// Cracks and trapped bubbles, where the frozen surface's tangent normal bends, go to the
+// band's top.
+vec3 wg_ice_albedo(vec3 d, vec3 tn) {
+  float cracks = smoothstep(0.3, 0.6, length(tn.xy));
+  vec3 tint = vec3(0.85, 0.95, 1.0);
+  return tint / wg_reflectance(tint) * wg_lerp(0.5, 0.7, wg_clamp01(wg_detail_mask(d) * 3.0 + cracks));
+}
 // Eq. 3.20, faded in over the first tenth of freezing.
 float wg_frost_mask(float frostMap, float frost) {
   float e = wg_lerp(0.0, 5.0, 1.0 - wg_clamp01(frost));
@@ -162,14 +168,14 @@ float wg_hoarfrost_coverage(float noise, float exposure) {
   float level = wg_clamp01(frame_frostLevel) * wg_clamp01(exposure);
   return wg_transition(noise, level);
 }
-// Snow's micro-relief: the transition noise (r, the shared lookup's `height`) read as a
-// height field of kSnowReliefAmplitude metres over world xz, its slope by forward
-// differences two noise texels (12.5 cm) along x and z, tilted into the tangent frame
-// (n the geometric normal, tangent its tangent): a tangent-space normal for cover().
-vec3 wg_snow_relief(vec3 p, float height, vec3 n, vec4 tangent) {
+// A layer's own relief: the transition noise (r, the shared lookup's `height`) read as a
+// height field of `amplitude` metres, its slope by forward differences two noise texels
+// (12.5 cm, kReliefStep) along x and z, tilted into the tangent frame (n the geometric
+// normal, tangent its tangent): a tangent-space normal for cover().
+vec3 wg_noise_relief(vec3 p, float height, float amplitude, vec3 n, vec4 tangent) {
   float hx = wg_weather_noise_at(p + vec3(0.125, 0.0, 0.0)).x;
   float hz = wg_weather_noise_at(p + vec3(0.0, 0.0, 0.125)).x;
-  vec3 slope = vec3(hx - height, 0.0, hz - height) * (0.25 / 0.125);  // metres per metre
+  vec3 slope = vec3(hx - height, 0.0, hz - height) * (amplitude / 0.125);  // metres per metre
   vec3 b = cross(n, tangent.xyz) * tangent.w;
   return vec3(-dot(slope, tangent.xyz), -dot(slope, b), 1.0);
 }

@@ -149,7 +149,8 @@ class WeatherInjector {
                                                         {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
                                                         {"terms", terms_}, {"noise", noise("transition")}});
     // Snow's own lit micro-relief replaces the surface's detail under it.
-    Operand relief = b_.add("weather_snow_relief", {{"position", position_}, {"height", noise("transition")}});
+    Operand relief = b_.add("weather_noise_relief", {{"position", position_}, {"height", noise("transition")},
+                                                     {"amplitude", k(weather::kSnowReliefAmplitude)}});
     cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), k(weather::kSnowRoughness), k(0.5f), 0.7f, relief);
     g_.coverage(CoverageTerm::Snow) = coverage;
     if (cfg_.effects.displacement) {
@@ -203,7 +204,12 @@ class WeatherInjector {
 
   void addIce() {
     Operand coverage = b_.add("weather_frost_coverage", {{"frostMap", frostMap()}, {"noise", noise("transition")}});
-    cover(coverage, b_.add("weather_ice_albedo", {{"diffuse", diffuse_}}), weather::kIceRoughness, weather::kIceSpecular, 1.f);
+    // Ice keeps the frozen surface's bends (its normal map) as cracks and bubbles, and 40 %
+    // of its relief; the rest is ice's own slight undulation.
+    Operand albedo = b_.add("weather_ice_albedo", {{"diffuse", diffuse_}, {"normal", tangentNormal_}});
+    Operand relief = b_.add("weather_noise_relief", {{"position", position_}, {"height", noise("transition")},
+                                                     {"amplitude", k(weather::kIceReliefAmplitude)}});
+    cover(coverage, albedo, k(weather::kIceRoughness), k(weather::kIceSpecular), kIceFlattening, relief);
     g_.coverage(CoverageTerm::Frost) = coverage;
     g_.coverage(CoverageTerm::Ice) = coverage;
   }
@@ -227,6 +233,8 @@ class WeatherInjector {
 
   // Puddle water darkens what it floods (Lagarde: porous surfaces under water).
   static constexpr float kPuddleDarkening = 0.55f;
+  // How far ice's normal moves from the frozen surface's towards its own relief.
+  static constexpr float kIceFlattening = 0.6f;
   // Hoarfrost is a thin, partial crystal layer, never full snow cover.
   static constexpr float kHoarfrostOpacity = 0.6f;
   // On a water surface, the outer tenth of the frost map on each side (F < 0.2, 1 m of a

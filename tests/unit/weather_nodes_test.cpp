@@ -71,7 +71,7 @@ TEST(WeatherNodes, EveryWeatherOpIsRegistered) {
         "weather_frost_mask", "weather_puddle_mask", "tangent_to_world", "sky_exposure", "weather_levels",
         "weather_conditions", "weather_snow_coverage", "weather_snow_offset", "weather_moss_coverage",
         "weather_puddle_coverage", "weather_frost_coverage", "weather_hoarfrost_coverage", "weather_noise",
-        "weather_snow_relief"}) {
+        "weather_noise_relief"}) {
     const OpDef* op = findOp(name);
     ASSERT_NE(op, nullptr) << name;
     EXPECT_NE(op->eval, nullptr) << name;
@@ -302,18 +302,19 @@ TEST(WeatherNodes, WetNormal) {
               v3(0.1f + px * 0.5f, 0.2f + py * 0.5f, 0.9f), 1e-4f);
 }
 
-// Snow's relief: the transition noise as a 25 cm height field, sloped by forward
+// A layer's relief (snow's amplitude): the transition noise as a 25 cm height field, sloped by forward
 // differences 12.5 cm along x and z, in the tangent frame. On level ground with the
 // tangent along +x the bitangent is -z, so the normal leans against the slope in x and
 // with it in z.
-TEST(WeatherNodes, SnowReliefIsTheNoiseHeightsNormalInTangentSpace) {
+TEST(WeatherNodes, NoiseReliefIsTheNoiseHeightsNormalInTangentSpace) {
   Env env;
   env.surface.worldNormal = {0.f, 1.f, 0.f};
   env.surface.tangent = {1.f, 0.f, 0.f, 1.f};
   const glm::vec3 p(3.f, 0.f, 5.f);
   float h = weather::noiseAt(p).x;
   float hx = weather::noiseAt(p + glm::vec3(0.125f, 0.f, 0.f)).x, hz = weather::noiseAt(p + glm::vec3(0.f, 0.f, 0.125f)).x;
-  expectValue(eval("weather_snow_relief", {v3(p.x, p.y, p.z), s(h)}, env), v3(-2.f * (hx - h), 2.f * (hz - h), 1.f), 1e-5f);
+  expectValue(eval("weather_noise_relief", {v3(p.x, p.y, p.z), s(h), s(0.25f)}, env), v3(-2.f * (hx - h), 2.f * (hz - h), 1.f),
+              1e-5f);
 }
 
 // Eq. 3.19 with p = 1: Clamp((0.3, 0.59, 0.11) . diffuse).
@@ -342,15 +343,19 @@ TEST(WeatherNodes, SnowMossIceAlbedo) {
   EXPECT_NEAR(reflectance(eval("weather_moss_albedo", {v3(1, 1, 1)})), 0.53f, 1e-5f);
   // Ice, spread 3: 0.408 * 3 = 1.224 -> 1 -> 0.7. Tint (0.85, 0.95, 1), reflectance
   // 0.255 + 0.5605 + 0.11 = 0.9255: (0.6428957, 0.7185305, 0.7563479).
-  expectValue(eval("weather_ice_albedo", {kDiffuse}), v3(0.6428957f, 0.7185305f, 0.7563479f));
+  expectValue(eval("weather_ice_albedo", {kDiffuse, v3(0, 0, 1)}), v3(0.6428957f, 0.7185305f, 0.7563479f));
   // Dark grey 0.1: 0.1 * 3 = 0.3; 0.5 + 0.2 * 0.3 = 0.56.
-  EXPECT_NEAR(reflectance(eval("weather_ice_albedo", {v3(0.1f, 0.1f, 0.1f)})), 0.56f, 1e-5f);
-  EXPECT_NEAR(reflectance(eval("weather_ice_albedo", {v3(0, 0, 0)})), 0.5f, 1e-5f);
+  EXPECT_NEAR(reflectance(eval("weather_ice_albedo", {v3(0.1f, 0.1f, 0.1f), v3(0, 0, 1)})), 0.56f, 1e-5f);
+  EXPECT_NEAR(reflectance(eval("weather_ice_albedo", {v3(0, 0, 0), v3(0, 0, 1)})), 0.5f, 1e-5f);
+  // Cracks: a bend of the frozen surface's normal (|xy| 0.6 or more) goes to the band's
+  // top; half way (|xy| 0.45, smoothstep 0.5) adds 0.5 to the mask: 0.3 + 0.5 -> 0.66.
+  EXPECT_NEAR(reflectance(eval("weather_ice_albedo", {v3(0, 0, 0), v3(0.7f, 0, 0.7f)})), 0.7f, 1e-5f);
+  EXPECT_NEAR(reflectance(eval("weather_ice_albedo", {v3(0.1f, 0.1f, 0.1f), v3(0, 0.45f, 0.9f)})), 0.66f, 1e-5f);
   // Whatever the input, the result stays in the measured band.
   for (float g : {0.f, 0.05f, 0.2f, 0.5f, 0.9f, 1.f, 3.f}) {
     float snow = reflectance(eval("weather_snow_albedo", {v3(g, g, g)}));
     float moss = reflectance(eval("weather_moss_albedo", {v3(g, g, g)}));
-    float ice = reflectance(eval("weather_ice_albedo", {v3(g, g, g)}));
+    float ice = reflectance(eval("weather_ice_albedo", {v3(g, g, g), v3(0, 0, 1)}));
     EXPECT_TRUE(snow >= 0.9f - 1e-5f && snow <= 0.95f + 1e-5f) << g << ": " << snow;
     EXPECT_TRUE(moss >= 0.25f - 1e-5f && moss <= 0.53f + 1e-5f) << g << ": " << moss;
     EXPECT_TRUE(ice >= 0.5f - 1e-5f && ice <= 0.7f + 1e-5f) << g << ": " << ice;
