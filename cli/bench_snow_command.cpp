@@ -208,9 +208,9 @@ void measureFrameProfile(vk::Context& ctx, const snow::WindowSettings& settings,
       seconds);
   std::printf("| per frame | median ms | 99th percentile ms | worst ms | frames over 2x median |\n"
               "|---|---|---|---|---|\n");
-  row("GPU: recentring (tiles that enter)", follow);
+  row("GPU: recentring (leaving rows out, entering rows in)", follow);
   row("GPU: stamps and their normals", stamps);
-  row("GPU: refill and its normals", refill);
+  row("GPU: refill, and the deferred normals of entered tiles", refill);
   row("GPU: all snow work", gpu);
   row("wall time of the calls (submits and waits included)", wall);
 }
