@@ -94,6 +94,12 @@ struct Frame {
   // Fresh snow filling the prints in, metres per second, over `seconds` of game time.
   double refillMetresPerSecond = 0.0;
   double seconds = 0.0;
+  // Saved prints to start this frame from (a file savePrints() wrote): every print is
+  // replaced by the file's. Refused while the window is moving (try the next frame).
+  const char* loadPrintsFrom = nullptr;
+  // Copy the map's heights to the host at the end of this frame, so that savePrints()
+  // can write them once the engine knows this frame's commands completed.
+  bool readBackPrints = false;
 };
 
 // What the snow material samples. The surface image (RGBA16F: height offset in metres,
@@ -133,6 +139,11 @@ class DeformableSnow {
   // refused before anything is recorded.
   std::string record(VkCommandBuffer cmd, const Frame& frame) noexcept;
 
+  // Writes every print (the window's and the print store's) to `path`, for games that
+  // keep the world's state. Valid after a record() with Frame::readBackPrints once its
+  // commands have completed, and before the next record(). Returns "" or the error.
+  std::string savePrints(const std::string& path) noexcept;
+
   ShadingInputs shadingInputs() const noexcept;
   // Tiles of prints kept outside the window, and their bytes.
   std::size_t storedTiles() const noexcept;
@@ -141,6 +152,7 @@ class DeformableSnow {
  private:
   struct State;
   explicit DeformableSnow(std::unique_ptr<State> state);
+  void recordSaveCopy(VkCommandBuffer cmd);
   std::unique_ptr<State> state_;
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "runtime/snow/deformation_recorder.hpp"
+#include "runtime/snow/print_store_file.hpp"
 #include "runtime/snow/snow_interactors.hpp"
 
 namespace weathergen::snow {
@@ -48,6 +49,8 @@ struct DeformableSnow::State {
   std::unique_ptr<wg::vk::Context> device;  // borrowed: destroys nothing
   wg::snow::DeformationRecorder recorder;
   std::uint32_t framesInFlight;
+  wg::vk::Buffer savedHeights;  // host copy for savePrints(), made on request
+  bool saveReady = false;       // the last record() copied the heights into it
 };
 
 namespace {
@@ -107,6 +110,38 @@ std::unique_ptr<DeformableSnow> DeformableSnow::create(const Device& device, con
   return nullptr;
 }
 
+// The height plane into the host buffer savePrints() reads, after the frame's work.
+void DeformableSnow::recordSaveCopy(VkCommandBuffer cmd) {
+  State& state = *state_;
+  const wg::vk::Buffer& heights = state.recorder.heightBuffer();
+  if (!state.savedHeights.handle())
+    state.savedHeights = wg::vk::Buffer(*state.device, heights.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  VkBufferCopy all{0, 0, heights.size()};
+  vkCmdCopyBuffer(cmd, heights.handle(), state.savedHeights.handle(), 1, &all);
+  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
+                       nullptr);
+  state.saveReady = true;
+}
+
+std::string DeformableSnow::savePrints(const std::string& path) noexcept {
+  try {
+    if (!state_->saveReady)
+      return "savePrints needs the heights of the last record(): set Frame::readBackPrints and wait for that frame";
+    const auto& r = state_->recorder;
+    std::span<const std::uint32_t> heights(static_cast<const std::uint32_t*>(state_->savedHeights.mapped()),
+                                           r.window().texelCount());
+    wg::snow::savePrintsFile(path, r.prints(heights), r.window(), r.refillQuanta());
+    return "";
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
 DeformableSnow::DeformableSnow(std::unique_ptr<State> state) : state_(std::move(state)) {}
 DeformableSnow::~DeformableSnow() = default;
 
@@ -116,6 +151,13 @@ std::string DeformableSnow::record(VkCommandBuffer cmd, const Frame& frame) noex
     if (std::string invalid = invalidFrame(frame, state_->framesInFlight, r.meshInteractors()); !invalid.empty())
       return invalid;
     r.beginFrame(frame.frameIndex);
+    state_->saveReady = false;
+    if (frame.loadPrintsFrom) {
+      // The file is read and checked whole before anything changes or is recorded.
+      wg::snow::PrintTileStore loaded(r.store().budgetBytes());
+      wg::snow::loadPrintsFile(frame.loadPrintsFrom, r.window(), r.refillQuanta(), loaded);
+      r.recordLoadPrints(cmd, std::move(loaded));
+    }
     r.recordFollow(cmd, {frame.cameraX, frame.cameraZ});
     std::vector<wg::snow::Stamp> stamps;
     for (std::size_t i = 0; i < frame.capsuleCount; ++i) stamps.push_back(toStamp(frame.capsules[i]));
@@ -130,6 +172,7 @@ std::string DeformableSnow::record(VkCommandBuffer cmd, const Frame& frame) noex
         VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+    if (frame.readBackPrints) recordSaveCopy(cmd);
     return "";
   } catch (const std::exception& e) {
     return e.what();

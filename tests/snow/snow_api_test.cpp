@@ -10,7 +10,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <vector>
 
@@ -236,6 +238,35 @@ TEST_F(SnowApi, ATorusPressedIntoTheSnowLeavesARing) {
     EXPECT_GT(depth(outer - slack), 0.f) << "the ring's outer edge, direction " << a;
     EXPECT_EQ(depth(outer + slack), 0.f) << "outside the ring, direction " << a;
   }
+}
+
+TEST_F(SnowApi, SavedPrintsLoadIntoAnotherField) {
+  auto saved = createSnow(smallSettings()), loaded = createSnow(smallSettings());
+  ASSERT_TRUE(saved && loaded);
+  EngineFrames engine(*snowContext());
+  std::vector<weathergen::snow::Capsule> capsules = {weathergen::snow::footprint(0.5f, 0.2f, 1.f, 0.f, 0.2f),
+                                                     weathergen::snow::drag(-1.f, -1.f, 1.f, -0.5f, 0.15f, 0.2f)};
+  weathergen::snow::Frame frame;
+  frame.capsules = capsules.data();
+  frame.capsuleCount = capsules.size();
+  frame.readBackPrints = true;
+  EXPECT_NE(saved->savePrints("/nonexistent"), "") << "nothing read back yet";
+  engine.frame(0, [&](VkCommandBuffer cmd) { ASSERT_EQ(saved->record(cmd, frame), ""); });
+  vkDeviceWaitIdle(snowContext()->device());
+  std::string path = ::testing::TempDir() + "snow_api_prints.wgprints";
+  ASSERT_EQ(saved->savePrints(path), "");
+
+  weathergen::snow::Frame bad;
+  bad.loadPrintsFrom = WG_SOURCE_DIR "/README.md";
+  engine.frame(0, [&](VkCommandBuffer cmd) { EXPECT_NE(loaded->record(cmd, bad), ""); });
+  weathergen::snow::Frame load;
+  load.frameIndex = 1;
+  load.loadPrintsFrom = path.c_str();
+  engine.frame(1, [&](VkCommandBuffer cmd) { ASSERT_EQ(loaded->record(cmd, load), ""); });
+  auto expected = engine.heights(saved->shadingInputs()), got = engine.heights(loaded->shadingInputs());
+  EXPECT_GT(std::count_if(expected.begin(), expected.end(), [](std::uint32_t t) { return t != 0; }), 100);
+  EXPECT_EQ(got, expected);
+  std::remove(path.c_str());
 }
 
 TEST_F(SnowApi, RefusesInvalidSettingsAndFramesWithAMessage) {
