@@ -8,6 +8,19 @@
 
 namespace wg::snow {
 
+namespace {
+// Whether the stamp can reach any texel of the tile: a long diagonal capsule (a mover
+// that jumped far in one frame) has a bounding box of many tiles it never touches.
+bool reachesTile(const Stamp& s, glm::ivec2 tile, const SnowWindow& window) {
+  float size = window.texelSize() * float(window.tileTexels());
+  glm::vec2 centre = (glm::vec2(tile) + 0.5f) * size, axis = s.b - s.a;
+  float length2 = glm::dot(axis, axis);
+  float t = length2 > 0.f ? std::clamp(glm::dot(centre - s.a, axis) / length2, 0.f, 1.f) : 0.f;
+  float reach = std::max(s.radiusA, s.radiusB) + s.rimWidth + window.texelSize();
+  return glm::length(centre - (s.a + t * axis)) <= reach + 0.7072f * size;  // half the tile's diagonal
+}
+}  // namespace
+
 std::size_t stampBeyondWindow(const SnowWindow& window, std::span<const Stamp> stamps, PrintTileStore& store,
                               std::uint64_t refillQuanta) {
   const int n = window.tileTexels();
@@ -20,7 +33,7 @@ std::size_t stampBeyondWindow(const SnowWindow& window, std::span<const Stamp> s
     for (int tz = tiles.first.y; tz <= tiles.last.y; ++tz)
       for (int tx = tiles.first.x; tx <= tiles.last.x; ++tx) {
         glm::ivec2 tile(tx, tz);
-        if (window.contains(tile * n)) continue;
+        if (window.contains(tile * n) || !reachesTile(stamp, tile, window)) continue;
         auto it = open.find(tile);
         if (it == open.end()) {
           std::vector<std::uint32_t> texels(std::size_t(n) * std::size_t(n), 0u);

@@ -14,7 +14,7 @@ namespace wg::snow {
 
 // Merges the parts of `stamps` outside the window into the store's tiles with max, as
 // the map merges them; a stored tile first catches up on the refill it missed.
-// Returns the number of tiles written.
+// Returns the number of tiles written (only tiles the stamp can reach).
 std::size_t stampBeyondWindow(const SnowWindow& window, std::span<const Stamp> stamps, PrintTileStore& store,
                               std::uint64_t refillQuanta);
 

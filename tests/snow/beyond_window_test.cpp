@@ -78,5 +78,16 @@ TEST(BeyondWindow, PrintsMadeAwayCatchUpOnRefillAndMergeWithStoredOnes) {
   EXPECT_NEAR(map.depthAt(kFar + glm::vec2(0.3f, 0.f)), 0.04f, 1.5f * kDepthQuantum);
 }
 
+TEST(BeyondWindow, ALongDiagonalJumpWritesOnlyTheTilesItCrosses) {
+  SnowWindow window(kSmall);
+  PrintTileStore store;
+  // 280 m in one frame: its bounding box holds ~96,000 tiles of 0.64 m, its path ~1,300.
+  Stamp jump = capsule({100.f, 100.f}, {300.f, 300.f}, 0.1f, kCover, 0.1f);
+  std::size_t written = stampBeyondWindow(window, std::span(&jump, 1), store, 0);
+  EXPECT_GT(written, 400u);
+  EXPECT_LT(written, 2000u);
+  EXPECT_GE(store.tileCount(), written * 9 / 10) << "nearly every tile written holds part of the rut";
+}
+
 }  // namespace
 }  // namespace wg::snow
