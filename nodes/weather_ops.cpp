@@ -1,6 +1,9 @@
 // Weather ops (seed 000, chapter 3): one per equation, plus the per-effect coverage
 // ops the weather injection pass composes. CPU semantics live in nodes/weather_model.cpp
 // and shader code in nodes/weather_shader_library.cpp; each op names its equation.
+#include <algorithm>
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "nodes/height_field.hpp"
@@ -42,7 +45,8 @@ SnowShape shapeFrom(const Value& weights, const Value& shape, const Value* terms
 // The fragment stage's frame at a surface point: the unit normal, and the tangent made
 // orthogonal to it (w: the bitangent's sign).
 std::pair<glm::vec3, glm::vec4> tangentFrame(const SurfacePoint& s) {
-  glm::vec3 n = glm::normalize(arr3(s.worldNormal));
+  glm::vec3 n = arr3(s.worldNormal);
+  n *= 1.f / std::sqrt(std::max(glm::dot(n, n), 1e-12f));  // wg_safe_normalize: a zero normal stays zero
   glm::vec3 t(s.tangent[0], s.tangent[1], s.tangent[2]);
   glm::vec3 tangent = t - n * glm::dot(n, t);
   float len = glm::length(tangent);
