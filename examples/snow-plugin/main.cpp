@@ -2,10 +2,11 @@
 // Vulkan device (validation layers on), owns two frames in flight (command buffer and
 // fence each) and records DeformableSnow's work into each frame's command buffer before
 // its own. A walker crosses the snow with a sled box dragged behind it (a mesh
-// interactor), the camera follows, and each frame the "renderer" copies the surface
-// image the snow material would sample. At the end it prints the prints it saw and
-// writes the height channel as a PGM. Any Vulkan error, any validation message or a
-// walk that left no prints makes it exit 1.
+// interactor), the camera follows, and on the last frame the "renderer" copies the
+// surface image the snow material would sample. At the end it saves the prints (as a
+// game keeping its world's state would), reports the prints it saw and writes the
+// height channel as a PGM. Any Vulkan error, any validation message or a walk that
+// left no prints makes it exit 1.
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
@@ -232,6 +233,7 @@ int run() {
     work.snowDepth = kSnowDepth;
     work.refillMetresPerSecond = 0.01 / 3600.0;  // 1 cm an hour of fresh snow
     work.seconds = kFrameSeconds;
+    work.readBackPrints = frame == kFrames - 1;  // the game saves its world after the walk
 
     VkCommandBuffer cmd = cmds[index];
     vkResetCommandBuffer(cmd, 0);
@@ -278,6 +280,8 @@ int run() {
     check(vkQueueSubmit(gpu.queue, 1, &submit, fences[index]), "vkQueueSubmit");
   }
   check(vkDeviceWaitIdle(gpu.device), "vkDeviceWaitIdle");
+  std::string saved = snow->savePrints("snow_prints.wgprints");  // the last frame read the heights back
+  if (!saved.empty()) throw std::runtime_error("DeformableSnow::savePrints: " + saved);
 
   // What the material would sample: height offsets below the surface are prints.
   weathergen::snow::ShadingInputs in = snow->shadingInputs();

@@ -39,5 +39,6 @@ quiet "building examples/snow-plugin" "$ninja" -C "$tmp/example"
 cat "$tmp/run.log"
 grep -q ' 0 validation messages$' "$tmp/run.log" || fail "snow_plugin saw validation messages"
 [[ -s "$tmp/example/snow_surface.pgm" ]] || fail "snow_plugin wrote no snow_surface.pgm"
+[[ $(head -c 8 "$tmp/example/snow_prints.wgprints") == WGPRINTS ]] || fail "snow_plugin saved no prints file"
 
 echo "snow_plugin: library, header and config installed; a scripted walk recorded into the engine's frames"
