@@ -1,6 +1,7 @@
 #include "runtime/snow/beyond_window_stamping.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -19,6 +20,21 @@ bool reachesTile(const Stamp& s, glm::ivec2 tile, const SnowWindow& window) {
   float reach = std::max(s.radiusA, s.radiusB) + s.rimWidth + window.texelSize();
   return glm::length(centre - (s.a + t * axis)) <= reach + 0.7072f * size;  // half the tile's diagonal
 }
+
+// A stamp longer than this is a teleport, not a move, and leaves no rut in the store;
+// non-finite or out-of-range coordinates (beyond what 32-bit texel indices hold) none
+// at all. Either would otherwise walk a bounding box of billions of tiles.
+constexpr float kLongestStoredStamp = 1000.f;
+constexpr float kFarthestStoredPoint = 1e7f;  // metres: 2.5e8 texels of 4 cm, within int
+
+bool storable(const Stamp& s) {
+  for (glm::vec2 p : {s.a, s.b})
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > kFarthestStoredPoint ||
+        std::abs(p.y) > kFarthestStoredPoint)
+      return false;
+  return glm::length(s.b - s.a) <= kLongestStoredStamp && std::isfinite(s.radiusA + s.radiusB + s.rimWidth) &&
+         std::max(s.radiusA, s.radiusB) + s.rimWidth <= kLongestStoredStamp;
+}
 }  // namespace
 
 std::size_t stampBeyondWindow(const SnowWindow& window, std::span<const Stamp> stamps, PrintTileStore& store,
@@ -27,6 +43,7 @@ std::size_t stampBeyondWindow(const SnowWindow& window, std::span<const Stamp> s
   // Tiles this call writes, unpacked once however many stamps reach them.
   std::map<glm::ivec2, std::vector<std::uint32_t>, TileOrder> open;
   for (const Stamp& stamp : stamps) {
+    if (!storable(stamp)) continue;
     TexelRect reach = stampReach(stamp, window);
     if (window.rect().intersect(reach).size == reach.size) continue;  // all inside: the map's
     TileSpan tiles = tilesReached(reach, n);

@@ -1,7 +1,9 @@
 // Stamps made outside the window go straight into the print store, so nothing the
 // movers do is lost however far from the camera it happens; when the window reaches
 // those tiles, recentring restores them like any tile that left. A stamp across the
-// window's edge is split: the map takes the part inside, the store the rest.
+// window's edge is split: the map takes the part inside, the store the rest. A stamp
+// longer than 1 km (a teleport, not a move) or with non-finite coordinates is not
+// stored.
 #pragma once
 #include <cstdint>
 #include <span>

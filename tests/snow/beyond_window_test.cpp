@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "runtime/snow/deformation_map.hpp"
 #include "runtime/snow/deformation_texel.hpp"
 #include "runtime/snow/snow_interactors.hpp"
@@ -87,6 +89,18 @@ TEST(BeyondWindow, ALongDiagonalJumpWritesOnlyTheTilesItCrosses) {
   EXPECT_GT(written, 400u);
   EXPECT_LT(written, 2000u);
   EXPECT_GE(store.tileCount(), written * 9 / 10) << "nearly every tile written holds part of the rut";
+}
+
+TEST(BeyondWindow, TeleportsAndNonFiniteStampsAreNotStored) {
+  SnowWindow window(kSmall);
+  PrintTileStore store;
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  std::vector<Stamp> stamps{capsule({100.f, 100.f}, {5000.f, 9000.f}, 0.1f, kCover, 0.1f),
+                            capsule({nan, 100.f}, {100.f, 100.f}, 0.1f, kCover, 0.1f),
+                            capsule({inf, 0.f}, {inf, 0.f}, 0.1f, kCover, 0.1f),
+                            capsule({3e9f, 0.f}, {3e9f, 0.f}, 0.1f, kCover, 0.1f)};
+  EXPECT_EQ(stampBeyondWindow(window, stamps, store, 0), 0u);
+  EXPECT_EQ(store.tileCount(), 0u);
 }
 
 }  // namespace
