@@ -7,6 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include "nodes/core_library.hpp"
+#include "nodes/height_field.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
 
@@ -16,18 +18,60 @@ namespace {
 // The deformation map's default extent: 1024 texels of 4 cm (runtime/snow/snow_window.hpp).
 constexpr float kDefaultMapExtent = 40.96f, kDefaultMapTexels = 1024.f;
 
-// Four bilinear taps of the deformation map half a texel apart, averaged.
+// Four bilinear taps of the deformation map half a texel apart, averaged. Both maps
+// are single-level and read at level 0 in every stage: no derivatives, no anisotropic
+// footprint (which lavapipe filters with many more taps).
 std::string_view deformationTaps() {
   static const std::string code = [] {
     auto tap = [](const char* offset) {
-      return std::string("{@sampleFn}(sampler2D(wg_snow_deformation_map, wg_snow_deformation_sampler), "
+      return std::string("textureLod(sampler2D(wg_snow_deformation_map, wg_snow_deformation_sampler), "
                          "{position}.xz / {extent} + vec2(") +
-             offset + ") / {texels}{@lodArg})";
+             offset + ") / {texels}, 0.0)";
     };
     return "(0.25 * (" + tap("-0.5, -0.5") + " + " + tap("0.5, -0.5") + " + " + tap("-0.5, 0.5") + " + " +
            tap("0.5, 0.5") + "))";
   }();
   return code;
+}
+
+// The terrain under the layer: its height map read at the point and half a metre
+// east, west, north and south of it (central differences for the normal). The map's
+// zero is world y = 0 (the snowfield lays its terrain out so), frame_terrainHeightScale
+// metres per unit.
+constexpr float kGroundStep = 0.5f;  // m; wg_snow_ground's kStep
+std::string_view groundTaps() {
+  static const std::string code = [] {
+    auto tap = [](const char* offset) {
+      return std::string("textureLod(sampler2D(wg_terrain_height_map, wg_terrain_height_sampler), ({position}.xz + vec2(") +
+             offset + ") - frame_terrainRegion.xy) * frame_terrainRegion.zw, 0.0).r";
+    };
+    return "wg_snow_ground(" + tap("0.0, 0.0") + ", " + tap("0.5, 0.0") + ", " + tap("-0.5, 0.0") + ", " +
+           tap("0.0, 0.5") + ", " + tap("0.0, -0.5") + ")";
+  }();
+  return code;
+}
+
+const ShaderLibrary kSnowGroundLibrary = {
+    "snow_ground",
+    R"(// Height (m) and the level layer's tangent-space normal (x along +x, y along +z) of
+// the terrain, from its map at the point and kStep east, west, north and south.
+vec4 wg_snow_ground(float h, float east, float west, float north, float south) {
+  const float kStep = 0.5;
+  float s = frame_terrainHeightScale;
+  return vec4(h * s, wg_safe_normalize(vec3((west - east) * s, (south - north) * s, 2.0 * kStep)));
+}
+)",
+    {&kCoreLibrary}};
+
+glm::vec4 snowGround(const EvalContext& c, glm::vec3 p) {
+  auto height = [&](float dx, float dz) {
+    if (!c.terrainHeight) return 0.f;
+    const auto& r = c.frame->terrainRegion;
+    return c.terrainHeight->sample((p.x + dx - r[0]) * r[2], (p.z + dz - r[1]) * r[3]) * c.frame->terrainHeightScale;
+  };
+  float e = kGroundStep;
+  glm::vec3 n(height(-e, 0.f) - height(e, 0.f), height(0.f, -e) - height(0.f, e), 2.f * e);
+  return {height(0.f, 0.f), glm::normalize(n)};
 }
 
 float smoothstep(float e0, float e1, float x) {
@@ -62,6 +106,21 @@ void appendSnowOps(std::vector<OpDef>& ops) {
               V};
     map.weatherMaps = {"snowDeformation"};
     ops.push_back(std::move(map));
+  }
+  {
+    OpDef ground{"snow_ground", "snow",
+                 "the terrain under a point: its height (m, the terrain map times frame terrainHeightScale) and "
+                 "normal in the tangent space of a level layer (x along +x, y along +z, z up)",
+                 {{"position", PortType::Vec3, std::nullopt}},
+                 ValueRule::Fixed, ValueType::Vec4, groundTaps(), "",
+                 {{"height", ".x"}, {"normal", ".yzw"}, {"flatness", ".w"}},
+                 [](const Value* in, const EvalContext& c) {
+                   glm::vec4 g = snowGround(c, {in[0].v[0], in[0].v[1], in[0].v[2]});
+                   return Value::vec4(g.x, g.y, g.z, g.w);
+                 },
+                 V, {&kSnowGroundLibrary}};
+    ground.weatherMaps = {"terrainHeight"};
+    ops.push_back(std::move(ground));
   }
   ops.push_back({"snow_border_fade", "snow",
                  "eq. 3.10-3.11: 1 - smoothstep(near, far, distance(position.xz, camera.xz))",

@@ -2,19 +2,33 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "runtime/scene/shapes.hpp"
 
 namespace wg::snow {
 
 namespace {
-// The base terrain the layer fades into sits just under the layer's border, so the
-// two never fight for depth.
-constexpr float kGroundHeight = -0.05f;
+// The base terrain the layer fades into sits just under the layer's border (which lies
+// on the terrain's height map), so the two never fight for depth.
+constexpr float kGroundClearance = 0.05f;
 constexpr float kGroundSize = 160.f;   // metres: the camera's whole trip and the shadow map's reach
-constexpr int kGroundCells = 40;
+constexpr int kGroundCells = 80;       // 2 m: the hills' height map, texel centres on the vertices
+// Beyond the ground a flat ring reaches past the far plane; distance haze blends it into
+// the sky, so no frame shows the world's edge.
+constexpr float kHorizonReach = 3000.f;
+constexpr float kHorizonUvTile = 20.f;  // m: the ground's texture tiling (8 tiles over 160 m)
+// Hills: round bumps (height m, centre, radius m) on a plain at y = 0. The walkers
+// cross a low rise; the camera's trip passes larger ones.
+struct Hill {
+  float height, x, z, radius;
+};
+constexpr Hill kHills[] = {{0.9f, 0.f, 5.f, 5.f},    {3.5f, -14.f, 22.f, 8.f}, {2.2f, 12.f, 18.f, 9.f},
+                           {2.8f, 38.f, 14.f, 10.f}, {4.f, 62.f, 28.f, 11.f},  {2.f, 26.f, -14.f, 12.f},
+                           {6.f, -34.f, 46.f, 16.f}, {1.5f, 50.f, -6.f, 7.f}};
 constexpr float kEyeHeight = 2.2f, kLookAhead = 7.f, kFovDegrees = 55.f;
 constexpr float kFineSquareAhead = 6.f;  // m: the frame's lower edge is 2 m ahead
 constexpr float kCameraSpeed = 3.f;  // m/s while the camera travels
@@ -22,12 +36,18 @@ constexpr float kCameraSpeed = 3.f;  // m/s while the camera travels
 // 41 m window), wait, come back.
 constexpr double kLeaveAt = 12.0, kFarAt = 32.0, kReturnAt = 36.0, kBackAt = 56.0;
 constexpr float kTripLength = 60.f;
-const glm::vec3 kStart(0.f, kEyeHeight, -4.f);
+const glm::vec3 kStart(0.f, kEyeHeight, -4.f);  // y: above the ground there
 const glm::vec3 kTowardsSun(0.25f, 0.5f, 0.85f);
 // Wind speed at windIntensity 1: the NWS blizzard threshold (docs/weather-simulation.md).
 constexpr float kWindAtFullIntensity = 15.6f;
 // Walkers are thin posts: their feet (9 cm either side) and the puffs stay in view.
 const glm::vec3 kWalkerSize(0.14f, 1.75f, 0.14f), kVehicleSize(1.8f, 1.4f, 4.2f);
+
+// Looking ahead along +z at the ground kLookAhead away.
+scene::CameraPreset followCamera(glm::vec3 eye) {
+  glm::vec2 ahead(eye.x, eye.z + kLookAhead);
+  return {"follow", eye, {ahead.x, snowfieldGround(ahead.x, ahead.y), ahead.y}, kFovDegrees};
+}
 
 std::string fixed(double x, int decimals) {
   char buf[32];
@@ -37,7 +57,49 @@ std::string fixed(double x, int decimals) {
 
 glm::mat4 placed(glm::vec2 at, glm::vec2 heading) {
   float angle = std::atan2(heading.x, heading.y);  // +z forward
-  return glm::rotate(glm::translate(glm::mat4(1.f), glm::vec3(at.x, 0.f, at.y)), angle, glm::vec3(0.f, 1.f, 0.f));
+  glm::vec3 on(at.x, snowfieldGround(at.x, at.y), at.y);
+  return glm::rotate(glm::translate(glm::mat4(1.f), on), angle, glm::vec3(0.f, 1.f, 0.f));
+}
+
+// The flat ring from the ground's edge out to kHorizonReach, a little under the ground.
+scene::Mesh horizonRing() {
+  scene::Mesh m;
+  const float in = 0.5f * kGroundSize, out = kHorizonReach, y = -kGroundClearance - 0.01f;
+  const glm::vec2 corners[4] = {{-1.f, -1.f}, {1.f, -1.f}, {1.f, 1.f}, {-1.f, 1.f}};
+  std::uint32_t inner[4], outer[4];
+  for (int i = 0; i < 4; ++i) {
+    for (auto [index, reach] : {std::pair{inner + i, in}, std::pair{outer + i, out}}) {
+      glm::vec3 p(corners[i].x * reach, y, corners[i].y * reach);
+      *index = scene::addVertex(m, p, {0.f, 1.f, 0.f}, glm::vec2(p.x, p.z) / kHorizonUvTile);
+    }
+  }
+  for (int i = 0; i < 4; ++i) {
+    int j = (i + 1) % 4;
+    scene::addQuadFacing(m, inner[i], outer[i], outer[j], inner[j], {0.f, 1.f, 0.f});
+  }
+  return m;
+}
+
+// The terrain height map the snow layer samples (snow_ground): heights over the
+// ground's vertices, its zero at y = 0, as scene.cpp lays out the valley's.
+void addTerrainMap(scene::Scene& s) {
+  const int n = kGroundCells + 1;
+  const float cell = kGroundSize / float(kGroundCells);
+  float highest = 0.f;
+  std::vector<float> heights(std::size_t(n) * n);
+  for (int z = 0; z < n; ++z)
+    for (int x = 0; x < n; ++x) {
+      float h = snowfieldGround(-0.5f * kGroundSize + float(x) * cell, -0.5f * kGroundSize + float(z) * cell);
+      heights[std::size_t(z) * n + x] = h;
+      highest = std::max(highest, h);
+    }
+  s.terrainHeightResolution = n;
+  s.terrainHeightOffset = 0.f;
+  s.terrainHeightScale = std::max(highest, 1e-3f);
+  for (float& h : heights) h /= s.terrainHeightScale;
+  s.terrainHeights = std::move(heights);
+  float origin = -0.5f * kGroundSize - 0.5f * cell, extent = kGroundSize + cell;
+  s.terrainRegion = glm::vec4(origin, origin, 1.f / extent, 1.f / extent);
 }
 
 std::vector<Walker> scriptedWalkers() {
@@ -63,6 +125,15 @@ Vehicle scriptedVehicle() {
 
 glm::vec3 snowfieldTowardsSun() { return glm::normalize(kTowardsSun); }
 
+float snowfieldGround(float x, float z) {
+  float h = 0.f;
+  for (const Hill& hill : kHills) {
+    float d2 = (x - hill.x) * (x - hill.x) + (z - hill.z) * (z - hill.z);
+    h += hill.height * std::exp(-d2 / (hill.radius * hill.radius));
+  }
+  return h;
+}
+
 scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings) {
   scene::Scene s;
   s.name = kSnowfieldScene;
@@ -75,11 +146,18 @@ scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings) {
     o.occludesSky = occludesSky;
     s.objects.push_back(std::move(o));
   };
-  add("ground", "snowfield", scene::heightFieldTerrain(kGroundSize, kGroundCells, [](float, float) { return kGroundHeight; }),
+  add("ground", "snowfield",
+      scene::heightFieldTerrain(kGroundSize, kGroundCells,
+                                [](float x, float z) { return snowfieldGround(x, z) - kGroundClearance; }),
       true);
-  add("rockNear", "rock", scene::transformed(scene::rock(11, 1.1f), glm::translate(glm::mat4(1.f), {3.5f, 0.3f, 10.f})), true);
-  add("rockLeft", "rock", scene::transformed(scene::rock(23, 1.6f), glm::translate(glm::mat4(1.f), {-7.f, 0.4f, 14.f})), true);
-  add("rockFar", "rock", scene::transformed(scene::rock(37, 1.4f), glm::translate(glm::mat4(1.f), {62.f, 0.3f, 8.f})), true);
+  addTerrainMap(s);
+  auto rock = [](std::uint32_t seed, float radius, float x, float sink, float z) {
+    return scene::transformed(scene::rock(seed, radius),
+                              glm::translate(glm::mat4(1.f), {x, snowfieldGround(x, z) + sink, z}));
+  };
+  add("rockNear", "rock", rock(11, 1.1f, 3.5f, 0.3f, 10.f), true);
+  add("rockLeft", "rock", rock(23, 1.6f, -7.f, 0.4f, 14.f), true);
+  add("rockFar", "rock", rock(37, 1.4f, 62.f, 0.3f, 8.f), true);
   // Movers and the layer get their model matrix per frame (RenderRequest::objectModels).
   for (std::size_t i = 0; i < scriptedWalkers().size(); ++i)
     add("walker" + std::to_string(i), "rock",
@@ -89,9 +167,11 @@ scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings) {
       scene::box({-0.5f * kVehicleSize.x, 0.f, -0.5f * kVehicleSize.z}, {0.5f * kVehicleSize.x, kVehicleSize.y, 0.5f * kVehicleSize.z}),
       false);
   add(kSnowLayerObject, kSnowLayerGraph, patchGridMesh(settings.grid), false);
-  s.cameras.push_back({"follow", kStart, kStart + glm::vec3(0.f, -kEyeHeight, kLookAhead), kFovDegrees});
+  s.cameras.push_back(followCamera({kStart.x, snowfieldGround(kStart.x, kStart.z) + kEyeHeight, kStart.z}));
+  // The horizon ring stays out of the bounds, which the shadow and sky-exposure maps cover.
   scene::Bounds all;
   for (const auto& o : s.objects) all.include(scene::bounds(o.mesh));
+  add("horizon", "snowfield", horizonRing(), false);
   // The layer moves with the camera: its reach over the whole trip.
   all.include(glm::vec3(kTripLength + 0.5f * settings.grid.extent(), 1.f, 0.f));
   s.boundsMin = all.min;
@@ -106,6 +186,7 @@ SnowfieldAnimation::SnowfieldAnimation(vk::Context& ctx, const SnowfieldSettings
       walkers_(scriptedWalkers()),
       vehicle_(scriptedVehicle()),
       puffs_(ctx, litPuffs()),
+      haze_(ctx),
       bloom_(ctx) {}
 
 // The first moment is just after a footfall (walker 0 steps at 2.68 s), so a puff hangs.
@@ -116,7 +197,9 @@ glm::vec3 SnowfieldAnimation::cameraEye(double t) const {
   if (t >= kLeaveAt && t < kFarAt) x = kCameraSpeed * (t - kLeaveAt);
   else if (t >= kFarAt && t < kReturnAt) x = kTripLength;
   else if (t >= kReturnAt && t < kBackAt) x = kTripLength - kCameraSpeed * (t - kReturnAt);
-  return kStart + glm::vec3(float(x), 0.f, 0.f);
+  glm::vec3 eye = kStart + glm::vec3(float(x), 0.f, 0.f);
+  eye.y = snowfieldGround(eye.x, eye.z) + kEyeHeight;
+  return eye;
 }
 
 void SnowfieldAnimation::step(double t0, double t1) {
@@ -124,14 +207,13 @@ void SnowfieldAnimation::step(double t0, double t1) {
   std::vector<Stamp> stamps;
   std::vector<glm::vec3> footfalls;
   // Puffs start where the foot breaks the snow surface (seed 3.3.1: at the impact): the
-  // snow_layer graph raises the layer by the snow depth.
-  float surface = cover.depth;
+  // snow_layer graph raises the layer by the snow depth over the terrain.
   for (const auto& w : walkers_) {
     walkerStamps(w, t0, t1, cover, stamps);
     FootfallRange range = footfallsBetween(w, t0, t1);
     for (int k = range.first; k <= range.last; ++k) {
       glm::vec2 at = footfall(w, k);
-      footfalls.push_back({at.x, surface, at.y});
+      footfalls.push_back({at.x, snowfieldGround(at.x, at.y) + cover.depth, at.y});
     }
   }
   if (cover.depth > 0.f) puffs_.emit(footfalls);
@@ -150,6 +232,7 @@ void SnowfieldAnimation::step(double t0, double t1) {
 
 std::function<void(const ColourPassTargets&)> SnowfieldAnimation::postPasses() {
   return [this](const ColourPassTargets& t) {
+    haze_.record(t);
     puffs_.record(t);
     bloom_.record(t.cmd, *t.colour);
   };
@@ -166,7 +249,7 @@ SnowfieldMoment SnowfieldAnimation::advanceTo(double seconds) {
   SnowfieldMoment m;
   m.time = time_;
   glm::vec3 eye = cameraEye(time_);
-  m.camera = {"follow", eye, eye + glm::vec3(0.f, -kEyeHeight, kLookAhead), kFovDegrees};
+  m.camera = followCamera(eye);
   // The layer's fine square is centred ahead of the camera, on the ground it looks at.
   glm::vec3 forward = m.camera.target - eye;
   forward.y = 0.f;

@@ -1,5 +1,5 @@
-// The `snowfield` scene of the interactive snow (issue 5, §6): a snowy plain with a few
-// rocks, the camera-following snow layer, two walkers and a vehicle on scripted paths,
+// The `snowfield` scene of the interactive snow (issue 5, §6): snowy hills with a few
+// rocks running out to a hazy horizon, the camera-following snow layer on the terrain, two walkers and a vehicle on scripted paths,
 // and a camera that leaves the deformation window and comes back. SnowfieldAnimation
 // advances it in simulated time; the renderer draws it with the deformation map bound.
 #pragma once
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "runtime/bloom_pass.hpp"
+#include "runtime/distance_haze_pass.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/snow/gpu_deformation_map.hpp"
 #include "runtime/snow/snow_interactors.hpp"
@@ -35,6 +36,9 @@ struct SnowfieldSettings {
 
 scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings = {});
 glm::vec3 snowfieldTowardsSun();  // unit: low and ahead of the camera, so glitter faces it
+// The snowfield's terrain (the snow layer's base) at world (x, z): hills on a plain at
+// y = 0. The scene's terrain height map holds it; the ground mesh lies 5 cm under it.
+float snowfieldGround(float x, float z);
 
 // One moment of the animation, ready to render.
 struct SnowfieldMoment {
@@ -52,7 +56,8 @@ class SnowfieldAnimation {
   SnowfieldMoment advanceTo(double seconds);
   // What the snow layer samples as snowDeformation (kept current by the map's passes).
   const vk::Image2D& deformationImage() const { return map_.surfaceImage(); }
-  // Snow puffs and bloom, to record after the colour pass (RenderRequest::afterColourPass).
+  // Distance haze, snow puffs and bloom, to record after the colour pass
+  // (RenderRequest::afterColourPass).
   std::function<void(const ColourPassTargets&)> postPasses();
   const SnowPuffs& puffs() const { return puffs_; }
   GpuDeformationMap& map() { return map_; }
@@ -70,6 +75,7 @@ class SnowfieldAnimation {
   std::vector<Walker> walkers_;
   Vehicle vehicle_;
   SnowPuffs puffs_;
+  DistanceHazePass haze_;
   BloomPass bloom_;
   double time_ = 0.0;
   std::size_t stamps_ = 0;

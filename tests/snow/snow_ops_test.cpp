@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "nodes/height_field.hpp"
 #include "nodes/op_registry.hpp"
 
 namespace wg {
@@ -63,6 +64,39 @@ TEST(SnowOps, DeformationReadsTheMapTexelAsHeightAndNormals) {
   EXPECT_FLOAT_EQ(tangent.v[2], 0.9f);
   Value world = applyAccessor(v, def->outputs[def->findOutput("worldNormal")].accessor);
   EXPECT_FLOAT_EQ(world.v[1], 0.9f);
+}
+
+// The terrain under the layer: the height map in metres, and the normal of its slope
+// in the level layer's tangent frame (x along +x, y along +z, z up).
+TEST(SnowOps, GroundIsTheTerrainMapInMetresWithItsSlope) {
+  // A 3 x 3 map over 30 m rising 0.5 per unit along +x: 0, 0.5, 1, times 4 m.
+  HeightField ramp{3, {0.f, 0.5f, 1.f, 0.f, 0.5f, 1.f, 0.f, 0.5f, 1.f}};
+  FrameState f;
+  f.terrainRegion = {-15.f, -15.f, 1.f / 30.f, 1.f / 30.f};
+  f.terrainHeightScale = 4.f;
+  EvalContext c;
+  SurfacePoint surface;
+  c.surface = &surface;
+  c.frame = &f;
+  c.terrainHeight = &ramp;
+  const OpDef* def = findOp("snow_ground");
+  ASSERT_NE(def, nullptr);
+  Value at = Value::vec3(0.f, 7.f, 3.f);  // y does not matter
+  Value v = def->eval(&at, c);
+  auto output = [&](const char* name) { return applyAccessor(v, def->outputs[def->findOutput(name)].accessor); };
+  EXPECT_NEAR(output("height").x(), 2.f, 1e-5f);  // the middle texel: 0.5 x 4 m
+  // 2 m per 10 m along +x: the normal leans back against the slope, none along z.
+  Value n = output("normal");
+  float k = 1.f / std::sqrt(1.f + 0.04f);
+  EXPECT_NEAR(n.v[0], -0.2f * k, 1e-4f);
+  EXPECT_NEAR(n.v[1], 0.f, 1e-6f);
+  EXPECT_NEAR(n.v[2], k, 1e-4f);
+  EXPECT_NEAR(output("flatness").x(), k, 1e-4f);
+  // No terrain bound: flat ground at 0.
+  c.terrainHeight = nullptr;
+  v = def->eval(&at, c);
+  EXPECT_EQ(output("height").x(), 0.f);
+  EXPECT_EQ(output("flatness").x(), 1.f);
 }
 
 }  // namespace

@@ -8,9 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <memory>
+#include <sstream>
 
+#include "compiler/cpu_evaluator.hpp"
 #include "compiler/debug_views.hpp"
+#include "driver/material_compiler.hpp"
+#include "runtime/pass_cameras.hpp"
 #include "runtime/scene_renderer.hpp"
 
 #include "tests/snow/snow_gpu_support.hpp"
@@ -116,7 +121,8 @@ TEST_F(Snowfield, PuffsShowInTheAirAndFadeIntoTheSnow) {
   float brightest = 0.f;  // the most a puff pixel gained over the snow behind it
   auto changedBy = [&](float y) {
     SnowPuffs puffs(*snowContext());
-    glm::vec3 at(0.f, y, 1.f);  // 5 m in front of the camera, clear of walkers and rocks
+    // 5 m in front of the camera, clear of walkers and rocks; y from the snow surface.
+    glm::vec3 at(0.f, snowfieldGround(0.f, 1.f) + scape.settings.weather.fullCoverDepth + y, 1.f);
     puffs.emit(std::span(&at, 1));
     puffs.simulate(0.05, glm::vec2(0.f));
     RenderRequest withPuffs = request;
@@ -129,10 +135,10 @@ TEST_F(Snowfield, PuffsShowInTheAirAndFadeIntoTheSnow) {
     }
     return changed;
   };
-  EXPECT_GT(changedBy(0.5f), 30) << "a puff above the snow";
+  EXPECT_GT(changedBy(0.4f), 30) << "a puff above the snow";
   // Lit by the sun and sky like the snow it came from, never brighter than it.
   EXPECT_LE(brightest, 0.01f);
-  EXPECT_EQ(changedBy(-0.6f), 0) << "a puff under the snow, at every point behind its surface";
+  EXPECT_EQ(changedBy(-0.7f), 0) << "a puff under the snow, at every point behind its surface";
 }
 
 // Bloom (seed 3.5.1): sunlit snow glows, so the frame gets brighter, never darker.
@@ -150,6 +156,71 @@ TEST_F(Snowfield, BloomOnlyAddsLight) {
     added += bloomed.rgba[i] - plain.rgba[i];
   }
   EXPECT_GT(added / double(plain.rgba.size()), 0.01) << "sunlit snow is above the threshold";
+}
+
+// No frame shows the world's edge: 60 m from its start the camera sees the ground run
+// out to a level horizon at eye height, where the world's edge would be a tilted line
+// below it (as it was before the horizon ring). Left quarter of the frame, clear of
+// the hills.
+TEST_F(Snowfield, TheGroundRunsOutToALevelHorizon) {
+  Snowscape scape(1.f);
+  SnowfieldMoment moment = scape.animation->advanceTo(34.0);  // the camera 60 m out
+  RenderRequest request = scape.request(moment);
+  request.afterColourPass = scape.animation->postPasses();
+  RenderedFrame f = scape.renderer->render(request);
+  // Where a point far ahead at eye height projects.
+  glm::mat4 vp = cameraViewProjection(moment.camera, clipRange(scape.renderer->scene(), moment.camera.eye), f.width, f.height);
+  glm::vec4 far = vp * glm::vec4(moment.camera.eye + glm::vec3(0.f, 0.f, 5000.f), 1.f);
+  float horizonRow = (far.y / far.w * 0.5f + 0.5f) * float(f.height);
+  const float* sky = &f.rgba[0];
+  for (std::uint32_t x = 0; x < f.width / 4; x += 4) {
+    std::uint32_t y = 0;
+    auto isSky = [&](std::uint32_t row) {
+      const float* p = &f.rgba[4 * (row * f.width + x)];
+      return std::abs(p[0] - sky[0]) + std::abs(p[1] - sky[1]) + std::abs(p[2] - sky[2]) < 0.03f;
+    };
+    while (y < f.height && isSky(y)) ++y;
+    EXPECT_NEAR(float(y), horizonRow, 3.f) << "column " << x;
+  }
+}
+
+// Terrain-following snow: on a hill the layer lies on the terrain's height field,
+// raised by the snow depth (graphs/snow_layer.json evaluated on the CPU with the
+// scene's terrain map, as the vertex stage computes it).
+TEST(SnowfieldTerrain, LayerLiesOnTheHillsRaisedByTheSnowDepth) {
+  SnowfieldSettings settings;
+  settings.grid = {2, 4.f, 4, 0.f, 0.04f, 1.f};
+  scene::Scene scene = makeSnowfieldScene(settings);
+  HeightField terrain{scene.terrainHeightResolution, scene.terrainHeights};
+  std::string path = std::string(WG_SOURCE_DIR) + "/graphs/snow_layer.json";
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  DiagnosticList diagnostics;
+  auto ir = buildOptimizedIr(path, text.str(), diagnostics);
+  ASSERT_TRUE(ir.has_value());
+  CpuEvaluator layer(std::move(*ir));
+  EvalInputs in;
+  in.terrainHeight = &terrain;
+  in.frame.terrainRegion = {scene.terrainRegion.x, scene.terrainRegion.y, scene.terrainRegion.z, scene.terrainRegion.w};
+  in.frame.terrainHeightScale = scene.terrainHeightScale;
+  in.frame.snowLevel = 1.f;
+  in.parameters["noiseHeight"] = Value::scalar(0.f);
+  auto layerHeight = [&](float x, float z) {
+    in.surface.worldPosition = {x, 0.f, z};
+    in.frame.cameraPosition = {x, 2.f, z - 4.f};  // well inside the border fade
+    return layer.evaluate(in).outputs.at("worldPositionOffset").v[1];
+  };
+  // The graph's snow depth is the scene's, which prints and puffs assume.
+  float depth = settings.weather.fullCoverDepth;
+  const glm::vec4& r = scene.terrainRegion;
+  // On the flank of the walkers' rise, on the plain, and near the top of a 3.5 m hill.
+  for (glm::vec2 p : {glm::vec2(0.f, 3.f), glm::vec2(-30.f, -30.f), glm::vec2(-13.f, 20.f)}) {
+    float ground = terrain.sample((p.x - r.x) * r.z, (p.y - r.y) * r.w) * scene.terrainHeightScale;
+    EXPECT_NEAR(ground, snowfieldGround(p.x, p.y), 0.06f) << "the 2 m map follows the hills";
+    EXPECT_NEAR(layerHeight(p.x, p.y), ground + depth, 1e-3f) << p.x << ", " << p.y << ": ground " << ground;
+  }
+  EXPECT_GT(snowfieldGround(-13.f, 20.f), 2.5f) << "a hill, not the plain";
 }
 
 }  // namespace
