@@ -11,7 +11,8 @@ function(weathergen_add_cli_options_case target)
     ${PROJECT_SOURCE_DIR}/cli/number_text.cpp
     ${PROJECT_SOURCE_DIR}/cli/option_table.cpp
     ${PROJECT_SOURCE_DIR}/cli/orbit_camera_option.cpp
-    ${PROJECT_SOURCE_DIR}/cli/render_options.cpp)
+    ${PROJECT_SOURCE_DIR}/cli/render_options.cpp
+    ${PROJECT_SOURCE_DIR}/cli/sample_count.cpp)
   # render_options.hpp holds a RenderRequest: runtime headers, Vulkan's included.
   target_link_libraries(${target} PRIVATE weathergen_compiler weathergen_weather glm::glm Vulkan::Headers)
   target_compile_definitions(${target} PRIVATE GLM_FORCE_DEPTH_ZERO_TO_ONE GLM_FORCE_RADIANS
