@@ -73,7 +73,7 @@ float wg_wet_roughness(float r, float p) { return wg_clamp01(r - p); }  // eq. 3
 // capped at 0.18). Only the lit frame: AOVs show a point's value, as the CPU does.
 float wg_specular_aa(float r, vec3 dndx, vec3 dndy) {
   float variance = 0.25 * (dot(dndx, dndx) + dot(dndy, dndy));
-  float kernel = frame_debugView == 0u ? min(2.0 * variance, 0.18) : 0.0;
+  float kernel = frame_debugView != 0u ? 0.0 : min(2.0 * variance, 0.18);
   return kernel > 0.0 ? sqrt(sqrt(min(r * r * r * r + kernel, 1.0))) : r;
 }
 // Eq. 3.18: a panning ripple added to the tangent-space normal while it rains. Its two
