@@ -40,8 +40,6 @@ const glm::vec3 kStart(0.f, kEyeHeight, -4.f);  // y: above the ground there
 const glm::vec3 kTowardsSun(0.25f, 0.5f, 0.85f);
 // Wind speed at windIntensity 1: the NWS blizzard threshold (docs/weather-simulation.md).
 constexpr float kWindAtFullIntensity = 15.6f;
-// Walkers are thin posts: their feet (9 cm either side) and the puffs stay in view.
-const glm::vec3 kWalkerSize(0.14f, 1.75f, 0.14f), kVehicleSize(1.8f, 1.4f, 4.2f);
 
 // Looking ahead along +z at the ground kLookAhead away.
 scene::CameraPreset followCamera(glm::vec3 eye) {
@@ -53,12 +51,6 @@ std::string fixed(double x, int decimals) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
   return buf;
-}
-
-glm::mat4 placed(glm::vec2 at, glm::vec2 heading) {
-  float angle = std::atan2(heading.x, heading.y);  // +z forward
-  glm::vec3 on(at.x, snowfieldGround(at.x, at.y), at.y);
-  return glm::rotate(glm::translate(glm::mat4(1.f), on), angle, glm::vec3(0.f, 1.f, 0.f));
 }
 
 // The flat ring from the ground's edge out to kHorizonReach, a little under the ground.
@@ -158,14 +150,10 @@ scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings) {
   add("rockNear", "rock", rock(11, 1.1f, 3.5f, 0.3f, 10.f), true);
   add("rockLeft", "rock", rock(23, 1.6f, -7.f, 0.4f, 14.f), true);
   add("rockFar", "rock", rock(37, 1.4f, 62.f, 0.3f, 8.f), true);
-  // Movers and the layer get their model matrix per frame (RenderRequest::objectModels).
+  // Movers' parts and the layer get their model matrix per frame (RenderRequest::objectModels).
   for (std::size_t i = 0; i < scriptedWalkers().size(); ++i)
-    add("walker" + std::to_string(i), "rock",
-        scene::box({-0.5f * kWalkerSize.x, 0.f, -0.5f * kWalkerSize.z}, {0.5f * kWalkerSize.x, kWalkerSize.y, 0.5f * kWalkerSize.z}),
-        false);
-  add("vehicle", "rock",
-      scene::box({-0.5f * kVehicleSize.x, 0.f, -0.5f * kVehicleSize.z}, {0.5f * kVehicleSize.x, kVehicleSize.y, 0.5f * kVehicleSize.z}),
-      false);
+    for (FigurePart& part : walkerParts("walker" + std::to_string(i))) add(part.name, "rock", std::move(part.mesh), false);
+  for (FigurePart& part : vehicleParts("vehicle", scriptedVehicle())) add(part.name, "rock", std::move(part.mesh), false);
   add(kSnowLayerObject, kSnowLayerGraph, patchGridMesh(settings.grid), false);
   s.cameras.push_back(followCamera({kStart.x, snowfieldGround(kStart.x, kStart.z) + kEyeHeight, kStart.z}));
   // The horizon ring stays out of the bounds, which the shadow and sky-exposure maps cover.
@@ -255,13 +243,15 @@ SnowfieldMoment SnowfieldAnimation::advanceTo(double seconds) {
   forward.y = 0.f;
   glm::vec3 looked = eye + glm::normalize(forward) * kFineSquareAhead;
   m.objectModels[kSnowLayerObject] = glm::translate(glm::mat4(1.f), patchGridOrigin(settings_.grid, looked, 0.f));
+  SnowCover cover{snowDepth(weather_, settings_.weather)};
+  auto groundUnder = [&](float sink) {
+    return FigureGround{snowfieldGround, cover.depth - std::min(sink, deepestPrint(cover))};
+  };
   for (std::size_t i = 0; i < walkers_.size(); ++i) {
-    const ScriptedPath& p = walkers_[i].path;
-    float s = p.distanceAt(time_);
-    m.objectModels["walker" + std::to_string(i)] = placed(p.pointAt(s), p.headingAt(s));
+    const Walker& w = walkers_[i];
+    poseWalker(w, "walker" + std::to_string(i), w.path.distanceAt(time_), groundUnder(w.sink), m.objectModels);
   }
-  float s = vehicle_.path.distanceAt(time_);
-  m.objectModels["vehicle"] = placed(vehicle_.path.pointAt(s), vehicle_.path.headingAt(s));
+  poseVehicle(vehicle_, "vehicle", vehicle_.path.distanceAt(time_), groundUnder(vehicle_.sink), m.objectModels);
   m.caption = {"t = " + fixed(time_, 1) + " s   camera x = " + fixed(eye.x, 0) + " m",
                std::to_string(map_.store().tileCount()) + " tiles in the print store, " + std::to_string(stamps_) +
                    " stamps so far"};

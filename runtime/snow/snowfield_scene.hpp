@@ -15,6 +15,7 @@
 #include "runtime/snow/snow_interactors.hpp"
 #include "runtime/snow/snow_patch_grid.hpp"
 #include "runtime/snow/snow_puffs.hpp"
+#include "runtime/snow/snowfield_figures.hpp"
 #include "runtime/snow/snow_weather.hpp"
 #include "runtime/vulkan/gpu_image.hpp"
 
