@@ -60,6 +60,14 @@ vec4 wg_snow_ground(float h, float east, float west, float north, float south) {
   float s = frame_terrainHeightScale;
   return vec4(h * s, wg_safe_normalize(vec3((west - east) * s, (south - north) * s, 2.0 * kStep)));
 }
+// Open sky over p from the sky-exposure map's occluder height there, by the rule of the
+// weather library's exposure (open when nothing is 10 cm above, sheltered under 50 cm),
+// one tap without its filtering, so the layer carries no weather code; outside the
+// map's region, open.
+float wg_snow_sky_open(vec3 p, float occluder, vec2 uv) {
+  bool inside = frame_skyExposureRegion.z > 0.0 && all(equal(uv, clamp(uv, 0.0, 1.0)));
+  return inside ? 1.0 - smoothstep(p.y + 0.1, p.y + 0.5, occluder) : 1.0;
+}
 )",
     {&kCoreLibrary}};
 
@@ -121,6 +129,20 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                  V, {&kSnowGroundLibrary}};
     ground.weatherMaps = {"terrainHeight"};
     ops.push_back(std::move(ground));
+  }
+  {
+    OpDef open{"snow_sky_open", "snow",
+               "open sky over a point (1) or an overhang above it (0), from the sky-exposure map's occluder height",
+               {{"position", PortType::Vec3, std::nullopt}},
+               ValueRule::Fixed, ValueType::Float,
+               "wg_snow_sky_open({position}, textureLod(sampler2D(wg_sky_exposure_map, wg_sky_exposure_sampler), "
+               "({position}.xz - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw, 0.0).r, "
+               "({position}.xz - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw)",
+               "", singleOutput(),
+               [](const Value*, const EvalContext& c) { return Value::scalar(c.surface->skyExposure); },
+               V, {&kSnowGroundLibrary}};
+    open.weatherMaps = {"skyExposure"};
+    ops.push_back(std::move(open));
   }
   ops.push_back({"snow_border_fade", "snow",
                  "eq. 3.10-3.11: 1 - smoothstep(near, far, distance(position.xz, camera.xz))",
