@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Regenerates docs/images/*.png: a few small gallery frames the README shows, so a
+# visitor sees the result without building. Each is one lit frame on lavapipe with
+# fixed weather (no timeline), so the same build gives the same files.
+# Look at every image (and git diff --stat docs/images) before committing.
+# WG_SKIP_BUILD=1 uses the existing build/weathergen.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -n "${WG_SKIP_BUILD:-}" ] || scripts/build.sh
+out=docs/images
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+size=480x270
+render() {  # NAME, then render's arguments
+  local name=$1
+  shift
+  build/weathergen render "$@" --size "$size" --device cpu -q -o "$tmp/$name.png"
+}
+render valley-snowfall --scene valley --camera orbit:210,22,45 --weather precipitation=0.7,temperature=-6,snowLevel=0.7,windIntensity=0.3,frostLevel=0.4
+render rocks-moss --scene rocks --camera orbit:130,28,22 --weather temperature=11,mossLevel=0.6,wetnessLevel=0.5
+render river-frozen --scene river --weather temperature=-12,snowLevel=0.35,frostLevel=0.9
+render road-rain --scene road --camera orbit:150,18,30 --weather precipitation=0.8,temperature=7,wetnessLevel=0.8,puddleLevel=0.8,windIntensity=0.3
+render stand-rock-snow --material graphs/rock.json --camera sun-side --weather temperature=-4,snowLevel=0.6,frostLevel=0.5
+render model-engine-snow --model /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb \
+  --model-scale 0.01 --weather temperature=-3,snowLevel=0.6,frostLevel=0.4
+# The snowfield writes a contact sheet of its key moments; keep the second: trails and ruts.
+build/weathergen render --scene snowfield --size "$size" --device cpu -q --frames "$tmp/snowfield" -o "$tmp/sheet.png"
+cp "$(ls "$tmp"/snowfield/*.png | sed -n 2p)" "$tmp/snowfield-prints.png"
+rm -rf "$tmp/snowfield" "$tmp"/sheet*.png
+mkdir -p "$out"
+cp "$tmp"/*.png "$out/"
+git --no-pager diff --stat -- "$out" || true
+echo "update-readme-images: $(ls "$out"/*.png | wc -l) images in $out"
