@@ -71,6 +71,24 @@ float wg_snow_sky_open(vec3 p, float occluder, vec2 uv) {
 )",
     {&kCoreLibrary}};
 
+// Seed 3.5.2's sparkle, kept stable as the camera moves. Where a pixel spans more than
+// one sparkle cell, the cell its centre hits would change from frame to frame (flicker):
+// there the sparkle comes from coarser cells, each at least a pixel wide and fixed in
+// the world, lit with the same density. The CPU evaluator's point has no footprint, so
+// it always takes the graph's own sparkle.
+const ShaderLibrary kSnowGlitterLibrary = {
+    "snow_glitter",
+    R"(float wg_snow_sparkle(float sparkle, float density, vec2 xz, float cellsPerMetre) {
+  float cellsPerPixel = cellsPerMetre * max(fwidth(xz.x), fwidth(xz.y));
+  if (!(cellsPerPixel > 1.0)) return sparkle;
+  float lod = min(ceil(log2(cellsPerPixel)), 16.0);
+  vec2 cell = floor(xz * (cellsPerMetre / exp2(lod)));
+  float h = fract(sin(dot(cell, vec2(12.9898, 78.233)) + lod * 7.13) * 43758.5453);
+  return step(1.0 - density, h);
+}
+)",
+    {}};
+
 glm::vec4 snowGround(const EvalContext& c, glm::vec3 p) {
   auto height = [&](float dx, float dz) {
     if (!c.terrainHeight) return 0.f;
@@ -160,15 +178,19 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                  V});
   // Seed 3.5.2: sparkles only inside the specular highlight (eq. 3.9, Blinn-Phong
   // with the sun's half vector), so never in shadow: the sun shadow map's visibility
-  // multiplies it (fragment stage only).
+  // multiplies it (fragment stage only); the sparkle is kept stable (kSnowGlitterLibrary).
   ops.push_back({"snow_glitter", "snow",
-                 "eq. 3.9: sparkle * pow(max(N.H, 0), shininess) * sun * shadow; emissive glints of snow crystals",
+                 "eq. 3.9: sparkle * pow(max(N.H, 0), shininess) * sun * shadow; emissive glints of snow crystals, "
+                 "sparkle cells at least a pixel wide, fixed in the world (fragment stage)",
                  {{"normal", PortType::Vec3, std::nullopt},
                   {"position", PortType::Vec3, std::nullopt},
                   {"sparkle", PortType::Float, std::nullopt},
-                  {"shininess", PortType::Float, Value::scalar(64.f), 1.f, 4096.f}},
+                  {"shininess", PortType::Float, Value::scalar(64.f), 1.f, 4096.f},
+                  {"density", PortType::Float, Value::scalar(0.03f), 0.f, 1.f},
+                  {"cellsPerMetre", PortType::Float, Value::scalar(60.f), 0.f, 1e5f}},
                  ValueRule::Fixed, ValueType::Float,
-                 "({sparkle} * pow(max(dot({normal}, wg_safe_normalize(frame_sunDirection + wg_safe_normalize("
+                 "(wg_snow_sparkle({sparkle}, {density}, {position}.xz, {cellsPerMetre}) * pow(max(dot({normal}, "
+                 "wg_safe_normalize(frame_sunDirection + wg_safe_normalize("
                  "frame_cameraPosition - {position}))), 0.0), {shininess}) * frame_sunIntensity * "
                  "wg_sun_shadow({position}, {normal}))",
                  "",
@@ -185,7 +207,7 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                    float highlight = std::pow(std::max(glm::dot(n, h), 0.f), in[3].x());
                    return Value::scalar(in[2].x() * highlight * f.sunIntensity * c.surface->sunVisibility);
                  },
-                 V, {&kPbrShadingLibrary}});
+                 V, {&kPbrShadingLibrary, &kSnowGlitterLibrary}});
 }
 
 }  // namespace wg
