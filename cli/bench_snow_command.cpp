@@ -24,7 +24,8 @@ namespace wg {
 namespace {
 
 constexpr const char* kUsage = R"(Usage: weathergen bench-snow [--frames N] [--walk-minutes M] [--profile-seconds S]
-                            [--store-budget MIB] [--refill-tiles N] [--device NAME]
+                            [--store-budget MIB] [--refill-tiles N] [--work-per-frame N]
+                            [--device NAME]
 
 Moves N interactors (1, 16, 256, 1024) through the default 1024² deformation map (4 cm
 texels); each presses a 0.15 m-radius capsule from its previous to its current position
@@ -36,7 +37,8 @@ seconds (default 60) of a player with 16 companions and a vehicle in heavy snowf
 median and worst frame; then the same walk for M simulated minutes (default 10) in calm
 weather with the window following, and the memory of the map and of the print store
 (whose budget --store-budget sets, default 16 MiB). --refill-tiles sets how many tiles
-with prints a frame refills at most (default 4).
+with prints a frame refills at most (default 4), --work-per-frame the profile's budget
+of shader invocations a frame (default 8192): stamps beyond it wait for the next frames.
 )";
 
 constexpr int kWarmUpFrames = 10;
@@ -173,46 +175,54 @@ int runSnowWalk(vk::Context& ctx, const snow::WindowSettings& settings, double m
   return kExitOk;
 }
 
-// Every frame's snow work (recentring, stamps, refill) in heavy snowfall, as GPU
-// milliseconds and as wall time of the calls (on lavapipe the GPU is the CPU).
+// Every frame's snow work in heavy snowfall, recorded as an engine records it (one
+// submit a frame within the work budget: recentring, stamps, refill, entered tiles'
+// normals), as GPU milliseconds, wall time, and shader invocations (the work itself,
+// free of timing noise; on lavapipe the GPU is the CPU).
 void measureFrameProfile(vk::Context& ctx, const snow::WindowSettings& settings, double seconds) {
   snow::GpuDeformationMap map(ctx, settings);
   SnowWalk walk(seconds);
   std::vector<snow::Stamp> frame;
-  std::vector<double> follow, stamps, refill, gpu, wall;
+  std::vector<double> gpu, wall, work;
+  std::size_t mostQueued = 0;
   const auto frames = static_cast<long>(seconds / kFrameSeconds);
   for (long f = 0; f < frames; ++f) {
     double t0 = double(f - 1) * kFrameSeconds, t1 = double(f) * kFrameSeconds;
     walk.stamps(t0, t1, frame);
+    std::uint64_t before = map.invocations();
     auto start = std::chrono::steady_clock::now();
-    double a = map.follow(walk.player(t1)).gpuMilliseconds;
-    double b = map.apply(frame);
-    double c = map.refill(kHeavySnowRefill, kFrameSeconds);
+    double ms = map.frame({.camera = walk.player(t1),
+                           .stamps = frame,
+                           .refillMetresPerSecond = kHeavySnowRefill,
+                           .seconds = kFrameSeconds});
     double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    mostQueued = std::max(mostQueued, map.queuedStamps());
     if (f < kWarmUpFrames) continue;
-    follow.push_back(a);
-    stamps.push_back(b);
-    refill.push_back(c);
-    gpu.push_back(a + b + c);
+    gpu.push_back(ms);
     wall.push_back(elapsed);
+    work.push_back(double(map.invocations() - before));
   }
-  auto row = [](const char* what, std::vector<double> v) {
+  auto row = [](const char* what, std::vector<double> v, const char* format) {
     double mid = median(v);
-    auto over = std::count_if(v.begin(), v.end(), [&](double ms) { return ms > 2.0 * mid; });
+    auto over = std::count_if(v.begin(), v.end(), [&](double x) { return x > 2.0 * mid; });
     std::sort(v.begin(), v.end());
     double p99 = v.empty() ? 0.0 : v[v.size() * 99 / 100], worst = v.empty() ? 0.0 : v.back();
-    std::printf("| %s | %.4f | %.4f | %.4f | %ld of %zu |\n", what, mid, p99, worst, long(over), v.size());
+    std::printf("| %s | ", what);
+    for (double x : {mid, p99, worst, mid > 0.0 ? worst / mid : 0.0}) {
+      std::printf(format, x);
+      std::printf(" | ");
+    }
+    std::printf("%ld of %zu |\n", long(over), v.size());
   };
-  std::printf(
-      "\nEvery frame's snow work over %.0f simulated seconds of the walk in heavy snowfall (refill 5 cm/h):\n\n",
-      seconds);
-  std::printf("| per frame | median ms | 99th percentile ms | worst ms | frames over 2x median |\n"
-              "|---|---|---|---|---|\n");
-  row("GPU: recentring (leaving rows out, entering rows in)", follow);
-  row("GPU: stamps and their normals", stamps);
-  row("GPU: refill, and the deferred normals of entered tiles", refill);
-  row("GPU: all snow work", gpu);
-  row("wall time of the calls (submits and waits included)", wall);
+  std::printf("\nEvery frame's snow work over %.0f simulated seconds of the walk in heavy snowfall (refill 5 cm/h), "
+              "one submit a frame, a budget of %u invocations and at most %u refilled tiles a frame:\n\n",
+              seconds, settings.workPerFrame, settings.refillTilesPerFrame);
+  std::printf("| per frame | median | 99th percentile | worst | worst / median | frames over 2x median |\n"
+              "|---|---|---|---|---|---|\n");
+  row("shader invocations (the work)", work, "%.0f");
+  row("GPU ms (timestamps)", gpu, "%.4f");
+  row("wall ms of the submit and wait", wall, "%.4f");
+  std::printf("\nStamps waiting for a later frame: at most %zu.\n", mostQueued);
 }
 
 struct BenchSnowOptions {
@@ -222,6 +232,7 @@ struct BenchSnowOptions {
   double profileSeconds = 60.0;
   double storeBudgetMiB = double(snow::WindowSettings{}.printStoreBudget) / (1024.0 * 1024.0);
   double refillTiles = snow::WindowSettings{}.refillTilesPerFrame;
+  double workPerFrame = snow::WindowSettings{}.workPerFrame;
   bool help = false;
 };
 
@@ -236,6 +247,12 @@ std::string setPositive(const std::string& v, const char* option, double most, d
   return "";
 }
 
+// "" or the usage message; `out` is a whole number from 1 to `most`.
+std::string setWholeNumber(const std::string& v, const char* option, double most, double& out) {
+  std::string error = setPositive(v, option, most, out);
+  return error.empty() && out != std::floor(out) ? std::string(option) + " takes a whole number" : error;
+}
+
 OptionTable benchSnowOptionTable(BenchSnowOptions& o) {
   return {.options = {
       {"--frames", "", "N", "frames measured per load (default 120)",
@@ -247,11 +264,9 @@ OptionTable benchSnowOptionTable(BenchSnowOptions& o) {
       {"--store-budget", "", "MIB", "print store budget in MiB (default 16)",
        [&o](const std::string& v) { return setPositive(v, "--store-budget", 1e6, o.storeBudgetMiB); }},
       {"--refill-tiles", "", "N", "tiles refilled per frame at most (default 4)",
-       [&o](const std::string& v) {
-         std::string error = setPositive(v, "--refill-tiles", 1024.0, o.refillTiles);
-         return error.empty() && o.refillTiles != std::floor(o.refillTiles) ? "--refill-tiles takes a whole number"
-                                                                            : error;
-       }},
+       [&o](const std::string& v) { return setWholeNumber(v, "--refill-tiles", 1024, o.refillTiles); }},
+      {"--work-per-frame", "", "N", "shader invocations a frame's snow work may take (default 8192)",
+       [&o](const std::string& v) { return setWholeNumber(v, "--work-per-frame", 1 << 24, o.workPerFrame); }},
       {"--device", "", "NAME", "Vulkan device, as render takes it", storeValue(o.device)},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
   }};
@@ -289,6 +304,7 @@ int runBenchSnowCommand(int argc, char** argv) {
   snow::WindowSettings settings;
   settings.printStoreBudget = std::size_t(o.storeBudgetMiB * 1024.0 * 1024.0);
   settings.refillTilesPerFrame = std::uint32_t(o.refillTiles);
+  settings.workPerFrame = std::uint32_t(o.workPerFrame);
   std::printf("\nRefill on a map with prints in every tile (%u tiles a frame and their normals): %.4f ms\n",
               settings.refillTilesPerFrame, measureRefill(*ctx, settings, o.frames));
   measureFrameProfile(*ctx, settings, o.profileSeconds);

@@ -40,18 +40,26 @@ struct Settings {
   // Refill (fresh snow in the prints) visits at most this many printed tiles a frame,
   // each catching up on what it is owed, so no frame rewrites the whole map.
   std::uint32_t refillTilesPerFrame = 4;
+  // A frame's snow work in shader invocations: capsules beyond it wait, oldest first,
+  // for the next frames (at least one is pressed a frame), and refill and recentring's
+  // normals take what is left, so a frame where many feet land costs about what any
+  // other does. See docs/engine-api.md.
+  std::uint32_t workPerFrame = 8192;
   // World x and z (metres) of the camera at creation.
   float cameraX = 0.f, cameraZ = 0.f;
 };
 
 // A cheap shape: an uneven capsule in the ground plane from `a` (radius and depth A) to
 // `b` (radius and depth B), with a raised rim just outside it. World x, z in metres;
-// depths already limited by the snow's depth. A point stamp has a == b.
+// depths already limited by the snow's depth. A point stamp has a == b. A waist above
+// 0 makes it a boot sole: its middle narrows to that half-width and its depth there
+// goes to archDepth (footprint() sets both).
 struct Capsule {
   float a[2] = {0.f, 0.f}, b[2] = {0.f, 0.f};
   float radiusA = 0.f, radiusB = 0.f;
   float depthA = 0.f, depthB = 0.f;
   float rimWidth = 0.f, rimHeight = 0.f;
+  float waist = 0.f, archDepth = 0.f;
 };
 
 // A boot print centred at (x, z), heel behind and toe ahead along the heading, as deep
@@ -98,7 +106,8 @@ struct Frame {
   // replaced by the file's. Refused while the window is moving (try the next frame).
   const char* loadPrintsFrom = nullptr;
   // Copy the map's heights to the host at the end of this frame, so that savePrints()
-  // can write them once the engine knows this frame's commands completed.
+  // can write them once the engine knows this frame's commands completed. Such a
+  // frame presses every waiting capsule first, whatever Settings::workPerFrame says.
   bool readBackPrints = false;
 };
 

@@ -1,4 +1,5 @@
-// The deformation compute pass on Vulkan: three pipelines (stamps, normals, refill)
+// The deformation compute pass on Vulkan: five pipelines (stamps, normals, refill, and
+// recentring's tile transfers out of and into the map)
 // sharing one descriptor set whose layout and push-constant range are built from the
 // SPIRV-Cross reflection of the modules (ReflectedDescriptorSet). Buffers are bound by
 // their block names.
@@ -32,7 +33,8 @@ class DeformationPass {
   DeformationPass(const DeformationPass&) = delete;
   DeformationPass& operator=(const DeformationPass&) = delete;
 
-  // Points the block named `block` (Heights, Normals, Stamps, StampBoxes, NormalRects, RefillTiles)
+  // Points the block named `block` (Heights, Normals, Stamps, StampBoxes, NormalRects, RefillTiles,
+  // HostHeights, TransferTiles)
   // at a buffer. Every block must be bound before the first record.
   void bind(const std::string& block, const vk::Buffer& buffer);
   // The surface image the normal stage writes (GENERAL layout while the pass runs).
@@ -46,7 +48,17 @@ class DeformationPass {
                      glm::ivec2 rectExtent) const;
   // One layer per tile of RefillTiles (x, z, tileTexels, quanta).
   void recordRefill(VkCommandBuffer cmd, const WindowConstants& window, std::uint32_t tiles, int tileTexels) const;
+  // One layer per tile of TransferTiles (x, z, tileTexels, 0): Heights to HostHeights
+  // at the same storage positions, or back.
+  void recordTilesOut(VkCommandBuffer cmd, const WindowConstants& window, std::uint32_t tiles, int tileTexels) const;
+  void recordTilesIn(VkCommandBuffer cmd, const WindowConstants& window, std::uint32_t tiles, int tileTexels) const;
   static void computeBarrier(VkCommandBuffer cmd);
+  enum class Stage { Stamps, Normals, Refill };
+  // The invocations a dispatch of `stage` over `layers` layers of `extent` would take.
+  std::uint64_t invocationsOf(Stage stage, glm::ivec2 extent, std::uint32_t layers) const;
+  // Shader invocations recorded so far: the work of the passes, independent of the
+  // device's timing noise (bench-snow reports it per frame).
+  std::uint64_t invocations() const { return invocations_; }
 
  private:
   struct Pipeline {
@@ -59,7 +71,8 @@ class DeformationPass {
 
   vk::Context& ctx_;
   std::unique_ptr<vk::ReflectedDescriptorSet> set_;
-  Pipeline stamp_, normals_, refill_;
+  Pipeline stamp_, normals_, refill_, tilesOut_, tilesIn_;
+  mutable std::uint64_t invocations_ = 0;
 };
 
 }  // namespace wg::snow

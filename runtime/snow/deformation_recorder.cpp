@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "runtime/snow/beyond_window_stamping.hpp"
+#include "runtime/snow/deformation_texel.hpp"
 
 namespace wg::snow {
 
@@ -47,20 +48,28 @@ void update(VkCommandBuffer cmd, const vk::Buffer& buffer, const std::vector<T>&
   vkCmdUpdateBuffer(cmd, buffer.handle(), 0, count * sizeof(T), data.data() + first);
 }
 
-// The storage rows (n texels each) of the tiles of `from` that are not in `to`: what
+// The tiles of `from` that are not in `to` (x, z of their first texel, size, 0): what
 // leaves when the window moves from one to the other, or, swapped, what enters.
-std::vector<VkBufferCopy> rowsOfTilesOutside(const SnowWindow& window, const TexelRect& from, const TexelRect& to) {
-  std::vector<VkBufferCopy> rows;
+std::vector<glm::ivec4> tilesOutside(const SnowWindow& window, const TexelRect& from, const TexelRect& to) {
+  std::vector<glm::ivec4> tiles;
   int n = window.tileTexels();
   for (int tz = from.min.y; tz < from.min.y + from.size.y; tz += n)
-    for (int tx = from.min.x; tx < from.min.x + from.size.x; tx += n) {
-      if (to.contains({tx, tz})) continue;
-      for (int z = 0; z < n; ++z) {
-        VkDeviceSize offset = window.storageIndex({tx, tz + z}) * sizeof(std::uint32_t);
-        rows.push_back({offset, offset, VkDeviceSize(n) * sizeof(std::uint32_t)});
-      }
-    }
-  return rows;
+    for (int tx = from.min.x; tx < from.min.x + from.size.x; tx += n)
+      if (!to.contains({tx, tz})) tiles.push_back({tx, tz, n, 0});
+  return tiles;
+}
+
+// Uploads `data` in batches the upload buffer holds, each followed by
+// dispatch(first, count).
+template <typename T, typename Dispatch>
+void inBatches(VkCommandBuffer cmd, const vk::Buffer& buffer, const std::vector<T>& data, Dispatch&& dispatch) {
+  for (std::size_t first = 0; first < data.size(); first += kBatch) {
+    std::size_t count = std::min(kBatch, data.size() - first);
+    mapBarrier(cmd);
+    update(cmd, buffer, data, first, count);
+    mapBarrier(cmd);
+    dispatch(first, static_cast<std::uint32_t>(count));
+  }
 }
 
 glm::ivec2 largest(const std::vector<glm::ivec4>& rects, std::size_t first, std::size_t count) {
@@ -82,7 +91,10 @@ DeformationRecorder::DeformationRecorder(vk::Context& ctx, const WindowSettings&
   stampBoxes_ = vk::Buffer(ctx_, kBatch * sizeof(glm::ivec4), kUploadUsage, vk::BufferMemory::DeviceLocal);
   normalRects_ = vk::Buffer(ctx_, kBatch * sizeof(glm::ivec4), kUploadUsage, vk::BufferMemory::DeviceLocal);
   refillTiles_ = vk::Buffer(ctx_, kBatch * sizeof(glm::ivec4), kUploadUsage, vk::BufferMemory::DeviceLocal);
-  readback_ = vk::Buffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  transferTiles_ = vk::Buffer(ctx_, kBatch * sizeof(glm::ivec4), kUploadUsage, vk::BufferMemory::DeviceLocal);
+  readback_ = vk::Buffer(ctx_, bytes,
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   surface_ = vk::Image2D(ctx_, settings.resolution, settings.resolution, kSurfaceFormat,
                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT);  // cleared on first use; read back by tests
@@ -92,6 +104,8 @@ DeformationRecorder::DeformationRecorder(vk::Context& ctx, const WindowSettings&
   pass_.bind("StampBoxes", stampBoxes_);
   pass_.bind("NormalRects", normalRects_);
   pass_.bind("RefillTiles", refillTiles_);
+  pass_.bind("HostHeights", readback_);
+  pass_.bind("TransferTiles", transferTiles_);
   pass_.bindSurface(surface_);
   if (ctx_.fragmentStoresAndAtomics())
     meshPass_ = std::make_unique<MeshInteractorPass>(ctx_, settings.resolution, heights_);
@@ -154,13 +168,9 @@ void DeformationRecorder::recordNormals(VkCommandBuffer cmd, const std::vector<T
   for (const TexelRect& r : rects)
     if (!r.empty()) packed.push_back(packRect(r));
   WindowConstants c = constants(0);
-  for (std::size_t first = 0; first < packed.size(); first += kBatch) {
-    std::size_t count = std::min(kBatch, packed.size() - first);
-    mapBarrier(cmd);
-    update(cmd, normalRects_, packed, first, count);
-    mapBarrier(cmd);
-    pass_.recordNormals(cmd, c, static_cast<std::uint32_t>(count), largest(packed, first, count));
-  }
+  inBatches(cmd, normalRects_, packed, [&](std::size_t first, std::uint32_t count) {
+    pass_.recordNormals(cmd, c, count, largest(packed, first, count));
+  });
 }
 
 void DeformationRecorder::recordStamps(VkCommandBuffer cmd, std::span<const Stamp> stamps) {
@@ -194,6 +204,46 @@ void DeformationRecorder::recordStamps(VkCommandBuffer cmd, std::span<const Stam
   });
 }
 
+void DeformationRecorder::recordFrame(VkCommandBuffer cmd, const FrameWork& work) {
+  const std::uint64_t start = pass_.invocations(), budget = window_.settings().workPerFrame;
+  auto left = [&] { return budget - std::min(budget, pass_.invocations() - start); };
+  recordFollow(cmd, work.camera);
+  queued_.insert(queued_.end(), work.stamps.begin(), work.stamps.end());
+  recordStamps(cmd, takeQueuedStamps(work.allStamps ? ~std::uint64_t(0) : left()));
+  recordMeshes(cmd, work.meshes, work.level);  // the engine chooses how many
+  const int n = window_.tileTexels();
+  const std::uint64_t refillTile = pass_.invocationsOf(DeformationPass::Stage::Refill, glm::ivec2(n), 1) +
+                                   pass_.invocationsOf(DeformationPass::Stage::Normals, glm::ivec2(n + 2), 1);
+  recordRefill(cmd, work.refillMetresPerSecond, work.seconds,
+               std::min<std::uint64_t>(window_.settings().refillTilesPerFrame, left() / refillTile));
+  const std::uint64_t normalTile = pass_.invocationsOf(DeformationPass::Stage::Normals, glm::ivec2(n + 2), 1);
+  recordDeferredNormals(cmd, left() / normalTile);
+}
+
+void DeformationRecorder::recordQueuedStamps(VkCommandBuffer cmd) {
+  recordStamps(cmd, takeQueuedStamps(~std::uint64_t(0)));
+}
+
+std::vector<Stamp> DeformationRecorder::takeQueuedStamps(std::uint64_t budget) {
+  std::size_t count = 0, pressed = 0;
+  glm::ivec2 box(0), rect(0);
+  for (; count < queued_.size(); ++count) {
+    TexelRect b = stampBounds(queued_[count], window_);
+    if (b.empty()) continue;  // beyond the window: the store takes it, no GPU work
+    glm::ivec2 nextBox = glm::max(box, b.size), nextRect = glm::max(rect, b.size + 2);
+    auto layers = static_cast<std::uint32_t>(pressed + 1);
+    std::uint64_t cost = pass_.invocationsOf(DeformationPass::Stage::Stamps, nextBox, layers) +
+                         pass_.invocationsOf(DeformationPass::Stage::Normals, nextRect, layers);
+    if (pressed != 0 && cost > budget) break;  // at least one a frame
+    box = nextBox, rect = nextRect, ++pressed;
+  }
+  // Never more than a second behind: past that the queue is pressed at once.
+  if (queued_.size() - count > kMostQueuedStamps) count = queued_.size();
+  std::vector<Stamp> now(queued_.begin(), queued_.begin() + std::ptrdiff_t(count));
+  queued_.erase(queued_.begin(), queued_.begin() + std::ptrdiff_t(count));
+  return now;
+}
+
 void DeformationRecorder::recordMeshes(VkCommandBuffer cmd, std::span<const MeshInteractor> meshes,
                                        const SnowLevel& level) {
   clearOnce(cmd);
@@ -203,6 +253,7 @@ void DeformationRecorder::recordMeshes(VkCommandBuffer cmd, std::span<const Mesh
   for (const MeshInteractor& m : meshes) {
     glm::ivec2 lo = window_.texelAt(m.footprintMin), hi = window_.texelAt(m.footprintMax);
     rects.push_back(TexelRect{lo, hi - lo + 1}.grown(1).intersect(window_.rect()));
+    schedule_.pressed(window_, rects.back(), toQuanta(level.depth), refill_.totalQuanta());
   }
   withSurfaceWritable(cmd, [&] {
     meshPass_->record(cmd, constants(0), level, meshes);
@@ -211,9 +262,14 @@ void DeformationRecorder::recordMeshes(VkCommandBuffer cmd, std::span<const Mesh
 }
 
 bool DeformationRecorder::recordRefill(VkCommandBuffer cmd, double metresPerSecond, double seconds) {
+  return recordRefill(cmd, metresPerSecond, seconds, window_.settings().refillTilesPerFrame);
+}
+
+bool DeformationRecorder::recordRefill(VkCommandBuffer cmd, double metresPerSecond, double seconds,
+                                       std::size_t mostTiles) {
   clearOnce(cmd);
   refill_.advance(metresPerSecond, seconds);
-  std::vector<TileRefill> due = schedule_.due(window_, refill_.totalQuanta(), window_.settings().refillTilesPerFrame);
+  std::vector<TileRefill> due = schedule_.due(window_, refill_.totalQuanta(), mostTiles);
   if (due.empty()) return false;
   int n = window_.tileTexels();
   std::vector<glm::ivec4> tiles;
@@ -224,13 +280,8 @@ bool DeformationRecorder::recordRefill(VkCommandBuffer cmd, double metresPerSeco
   }
   WindowConstants c = constants(0);
   withSurfaceWritable(cmd, [&] {
-    for (std::size_t first = 0; first < tiles.size(); first += kBatch) {
-      std::size_t count = std::min(kBatch, tiles.size() - first);
-      mapBarrier(cmd);
-      update(cmd, refillTiles_, tiles, first, count);
-      mapBarrier(cmd);
-      pass_.recordRefill(cmd, c, static_cast<std::uint32_t>(count), n);
-    }
+    inBatches(cmd, refillTiles_, tiles,
+              [&](std::size_t, std::uint32_t count) { pass_.recordRefill(cmd, c, count, n); });
     recordNormals(cmd, rects);
   });
   return true;
@@ -241,17 +292,37 @@ Recentring DeformationRecorder::recordFollow(VkCommandBuffer cmd, glm::vec2 came
   if (readbackState_ == Readback::Ready) return harvestReadback(cmd);
   glm::ivec2 target = window_.originFor(camera);
   if (readbackState_ != Readback::Idle || target == window_.origin()) return {};
-  // Only the rows of the tiles that will leave: the window moves to where the camera
-  // is now, even if it has gone further by the time the copy is read.
-  std::vector<VkBufferCopy> rows = rowsOfTilesOutside(window_, window_.rect(), {target, glm::ivec2(window_.resolution())});
-  mapBarrier(cmd);
-  vkCmdCopyBuffer(cmd, heights_.handle(), readback_.handle(), static_cast<std::uint32_t>(rows.size()), rows.data());
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+  // Only the tiles that will leave and may hold prints: the rest is flat snow, zeroed
+  // in the host copy here. The window moves to where the camera is now, even if it
+  // has gone further by the time the copy is read.
+  std::vector<glm::ivec4> printed;
+  for (const glm::ivec4& t : tilesOutside(window_, window_.rect(), {target, glm::ivec2(window_.resolution())})) {
+    if (schedule_.holdsPrints(glm::ivec2(t) / t.z)) printed.push_back(t);
+    else zeroHostTile(glm::ivec2(t) / t.z);
+  }
+  recordTileTransfer(cmd, printed, true);
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                 VK_ACCESS_HOST_READ_BIT);
   readbackState_ = Readback::Copying;
   readbackFrame_ = frame_;
   readbackCamera_ = camera;
   return {};
+}
+
+void DeformationRecorder::zeroHostTile(glm::ivec2 tile) {
+  auto* host = static_cast<std::uint32_t*>(readback_.mapped());
+  int n = window_.tileTexels();
+  for (int z = 0; z < n; ++z) std::fill_n(host + window_.storageIndex(tile * n + glm::ivec2(0, z)), n, 0u);
+}
+
+bool DeformationRecorder::nearPrints(glm::ivec2 tile) const {
+  const int n = window_.tileTexels();
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dx = -1; dx <= 1; ++dx) {
+      glm::ivec2 t = tile + glm::ivec2(dx, dz);
+      if (window_.rect().contains(t * n) && schedule_.holdsPrints(t)) return true;
+    }
+  return false;
 }
 
 void DeformationRecorder::recordLoadPrints(VkCommandBuffer cmd, PrintTileStore prints) {
@@ -280,18 +351,37 @@ Recentring DeformationRecorder::harvestReadback(VkCommandBuffer cmd) {
   scratchNormals_.resize(window_.texelCount());
   MapTexels texels{{static_cast<std::uint32_t*>(readback_.mapped()), window_.texelCount()}, scratchNormals_};
   recordDeferredNormals(cmd, deferredNormals_.size());  // the last ring, before the window moves on
+  // Slots whose leaving tile is not flat snow with flat normals: the map must be reset
+  // there whatever enters.
+  std::vector<std::size_t> dirtySlots;
+  glm::ivec2 target = window_.originFor(readbackCamera_);
+  for (const glm::ivec4& t : tilesOutside(window_, before, {target, before.size}))
+    if (nearPrints(glm::ivec2(t) / t.z)) dirtySlots.push_back(window_.storageIndex(glm::ivec2(t)));
   Recentring r = recentre(window_, texels, readbackCamera_, store_, schedule_, refill_.totalQuanta());
   readbackState_ = Readback::Idle;
   if (!r.moved()) return r;
-  // The entering tiles took the leaving tiles' slots in the host copy.
-  std::vector<VkBufferCopy> rows = rowsOfTilesOutside(window_, window_.rect(), before);
-  withSurfaceWritable(cmd, [&] {
-    vkCmdCopyBuffer(cmd, readback_.handle(), heights_.handle(), static_cast<std::uint32_t>(rows.size()), rows.data());
-  });
-  deferredNormals_.insert(deferredNormals_.end(), r.enteredRects.begin(), r.enteredRects.end());
+  // The entering tiles took the leaving tiles' slots in the host copy. Only those near
+  // prints, or in a dirty slot, are uploaded and get their normals redone.
+  std::vector<glm::ivec4> upload;
+  for (const glm::ivec4& t : tilesOutside(window_, window_.rect(), before)) {
+    bool dirty = std::find(dirtySlots.begin(), dirtySlots.end(), window_.storageIndex(glm::ivec2(t))) != dirtySlots.end();
+    if (!dirty && !nearPrints(glm::ivec2(t) / t.z)) continue;
+    upload.push_back(t);
+    deferredNormals_.push_back(TexelRect{glm::ivec2(t), glm::ivec2(t.z)}.grown(1).intersect(window_.rect()));
+  }
+  recordTileTransfer(cmd, upload, false);
   readbackState_ = Readback::Uploading;
   readbackFrame_ = frame_;
   return r;
+}
+
+void DeformationRecorder::recordTileTransfer(VkCommandBuffer cmd, const std::vector<glm::ivec4>& tiles, bool out) {
+  WindowConstants c = constants(0);
+  inBatches(cmd, transferTiles_, tiles, [&](std::size_t, std::uint32_t count) {
+    if (out) pass_.recordTilesOut(cmd, c, count, window_.tileTexels());
+    else pass_.recordTilesIn(cmd, c, count, window_.tileTexels());
+  });
+  mapBarrier(cmd);
 }
 
 bool DeformationRecorder::recordDeferredNormals(VkCommandBuffer cmd, std::size_t most) {

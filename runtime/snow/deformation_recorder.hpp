@@ -28,6 +28,18 @@
 
 namespace wg::snow {
 
+// One frame's snow work, in the order recordFrame records it.
+struct FrameWork {
+  glm::vec2 camera{0.f};                     // the window follows it
+  std::span<const Stamp> stamps;             // queued, pressed as the frame's work allows
+  std::span<const MeshInteractor> meshes;    // drawn this frame
+  SnowLevel level;                           // where the meshes press
+  double refillMetresPerSecond = 0.0, seconds = 0.0;
+  // Press every queued stamp this frame, whatever it costs (a frame whose map is read
+  // back, for a save, holds every print).
+  bool allStamps = false;
+};
+
 class DeformationRecorder {
  public:
   // `framesInFlight` frame indices guard the host readback buffer (at least 1).
@@ -41,6 +53,15 @@ class DeformationRecorder {
   // `frameIndex` (< framesInFlight) was used have completed.
   void beginFrame(std::uint32_t frameIndex);
 
+  // A frame as engines record it, within WindowSettings::workPerFrame: recentring, the
+  // oldest queued stamps (at least one), the meshes, then refill and the normals of
+  // entered tiles in what is left.
+  void recordFrame(VkCommandBuffer cmd, const FrameWork& work);
+  std::size_t queuedStamps() const { return queued_.size(); }
+  // Presses every queued stamp now.
+  void recordQueuedStamps(VkCommandBuffer cmd);
+  std::uint64_t invocations() const { return pass_.invocations(); }
+
   // Each records into `cmd` outside a render pass. The surface image is in
   // SHADER_READ_ONLY_OPTIMAL before and after; the first call also clears the map.
   Recentring recordFollow(VkCommandBuffer cmd, glm::vec2 camera);
@@ -50,6 +71,8 @@ class DeformationRecorder {
   // tiles that hold prints and are owed a quantum (refill_schedule.hpp); records only
   // when one is.
   bool recordRefill(VkCommandBuffer cmd, double metresPerSecond, double seconds);
+  // The same over at most `mostTiles` tiles (0: the time passes, nothing is recorded).
+  bool recordRefill(VkCommandBuffer cmd, double metresPerSecond, double seconds, std::size_t mostTiles);
   // Replaces every print with `prints` (what loading a prints file read): the window's
   // tiles are rebuilt from it on the host, uploaded and re-normalled; the rest stays in
   // the store. Not while the window is moving (a readback in flight).
@@ -88,13 +111,25 @@ class DeformationRecorder {
   // Normals (and the surface image) over `rects`, in batches the rect buffer holds.
   void recordNormals(VkCommandBuffer cmd, const std::vector<TexelRect>& rects);
   Recentring harvestReadback(VkCommandBuffer cmd);
+  // The oldest queued stamps whose dispatch fits `budget` invocations (at least one).
+  std::vector<Stamp> takeQueuedStamps(std::uint64_t budget);
+  // A queue longer than this (about a second of a busy scene) is pressed at once.
+  static constexpr std::size_t kMostQueuedStamps = 256;
+  // Flat snow in the host copy of a tile (one that leaves without prints).
+  void zeroHostTile(glm::ivec2 tile);
+  // Whether a tile of the window or a neighbour in the window may hold prints: if not,
+  // its heights are 0 and its normals straight up.
+  bool nearPrints(glm::ivec2 tile) const;
+  // Whole tiles (x, z, size, 0) from the map to the host copy (`out`), or back.
+  void recordTileTransfer(VkCommandBuffer cmd, const std::vector<glm::ivec4>& tiles, bool out);
 
   vk::Context& ctx_;
   SnowWindow window_;
   DeformationPass pass_;
-  vk::Buffer heights_, normals_, stamps_, stampBoxes_, normalRects_, refillTiles_;
+  vk::Buffer heights_, normals_, stamps_, stampBoxes_, normalRects_, refillTiles_, transferTiles_;
   vk::Buffer readback_;  // host-visible copy of the height plane for recentring
   std::vector<std::uint32_t> scratchNormals_;  // the CPU's normals while recentring (the GPU redoes them)
+  std::deque<Stamp> queued_;                   // stamps waiting for a frame's budget
   std::deque<TexelRect> deferredNormals_;      // entered tiles (grown by one texel) still to renormal
   vk::Image2D surface_;
   std::unique_ptr<MeshInteractorPass> meshPass_;  // null without fragmentStoresAndAtomics

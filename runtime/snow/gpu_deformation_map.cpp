@@ -54,6 +54,10 @@ Recentring GpuDeformationMap::follow(glm::vec2 camera) {
   return r;
 }
 
+double GpuDeformationMap::frame(const FrameWork& work) {
+  return submit([&](VkCommandBuffer cmd) { recorder_.recordFrame(cmd, work); });
+}
+
 void GpuDeformationMap::savePrints(const std::filesystem::path& path) {
   savePrintsFile(path, recorder_.prints(texels().heights), window(), recorder_.refillQuanta());
 }
@@ -66,8 +70,11 @@ void GpuDeformationMap::loadPrints(const std::filesystem::path& path) {
 
 MapTexels GpuDeformationMap::texels() {
   std::size_t count = window().texelCount();
-  if (recorder_.deferredNormals() != 0)  // a complete map: the last entered tiles' normals too
-    submit([&](VkCommandBuffer cmd) { recorder_.recordDeferredNormals(cmd, recorder_.deferredNormals()); });
+  if (recorder_.deferredNormals() != 0 || recorder_.queuedStamps() != 0)  // a complete map
+    submit([&](VkCommandBuffer cmd) {
+      recorder_.recordQueuedStamps(cmd);
+      recorder_.recordDeferredNormals(cmd, recorder_.deferredNormals());
+    });
   if (!hostCurrent_) {
     VkDeviceSize bytes = count * sizeof(std::uint32_t);
     if (!hostHeights_.handle()) {

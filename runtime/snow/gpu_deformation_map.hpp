@@ -33,6 +33,13 @@ class GpuDeformationMap {
   // both (0 when neither ran).
   double refill(double metresPerSecond, double seconds);
   Recentring follow(glm::vec2 camera);
+  // One frame as an engine records it (DeformationRecorder::recordFrame) in one submit:
+  // stamps beyond the frame's budget wait for the next frames, and a window move takes
+  // two frames (the leaving tiles' copy, then the move). GPU milliseconds.
+  double frame(const FrameWork& work);
+  std::size_t queuedStamps() const { return recorder_.queuedStamps(); }
+  // Shader invocations of every pass so far (the work, without the timing noise).
+  std::uint64_t invocations() const { return recorder_.invocations(); }
   // Every print, in the window and in the store, to a file (print_store_file.hpp), and
   // back: loading replaces every print with the file's. Throws PrintFileError.
   void savePrints(const std::filesystem::path& path);
@@ -41,7 +48,7 @@ class GpuDeformationMap {
   const SnowWindow& window() const { return recorder_.window(); }
   const PrintTileStore& store() const { return recorder_.store(); }
   // Both planes read back from the device (once per change), in toroidal order, after
-  // finishing any deferred normals (and surface texels).
+  // pressing any queued stamps and finishing any deferred normals (and surface texels).
   MapTexels texels();
   float depthAt(glm::vec2 world);
   float heightAt(glm::vec2 world);

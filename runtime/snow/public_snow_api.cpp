@@ -94,6 +94,7 @@ std::unique_ptr<DeformableSnow> DeformableSnow::create(const Device& device, con
     window.tileTexels = settings.tileTexels;
     window.printStoreBudget = settings.printStoreBytes;
     window.refillTilesPerFrame = settings.refillTilesPerFrame;
+    window.workPerFrame = settings.workPerFrame;
     auto ctx = wg::vk::Context::borrow(device.physicalDevice, device.device, device.queueFamily,
                                        device.fragmentStoresAndAtomics);
     auto& borrowed = *ctx;
@@ -158,15 +159,17 @@ std::string DeformableSnow::record(VkCommandBuffer cmd, const Frame& frame) noex
       wg::snow::loadPrintsFile(frame.loadPrintsFrom, r.window(), r.refillQuanta(), loaded);
       r.recordLoadPrints(cmd, std::move(loaded));
     }
-    r.recordFollow(cmd, {frame.cameraX, frame.cameraZ});
     std::vector<wg::snow::Stamp> stamps;
     for (std::size_t i = 0; i < frame.capsuleCount; ++i) stamps.push_back(toStamp(frame.capsules[i]));
-    r.recordStamps(cmd, stamps);
     std::vector<wg::snow::MeshInteractor> meshes;
     for (std::size_t i = 0; i < frame.meshCount; ++i) meshes.push_back(toInteractor(frame.meshes[i]));
-    r.recordMeshes(cmd, meshes, {frame.snowSurfaceHeight, frame.snowDepth});
-    r.recordRefill(cmd, frame.refillMetresPerSecond, frame.seconds);
-    r.recordDeferredNormals(cmd);
+    r.recordFrame(cmd, {.camera = {frame.cameraX, frame.cameraZ},
+                        .stamps = stamps,
+                        .meshes = meshes,
+                        .level = {frame.snowSurfaceHeight, frame.snowDepth},
+                        .refillMetresPerSecond = frame.refillMetresPerSecond,
+                        .seconds = frame.seconds,
+                        .allStamps = frame.readBackPrints});
     wg::snow::DeformationRecorder::recordReadBarrier(
         cmd,
         VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |

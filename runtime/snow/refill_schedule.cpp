@@ -16,20 +16,21 @@ std::size_t RefillSchedule::slotOf(glm::ivec2 tile) const {
 }
 
 void RefillSchedule::stamped(const SnowWindow& window, std::span<const Stamp> stamps, std::uint64_t refillQuanta) {
-  const int n = window.tileTexels();
-  for (const Stamp& s : stamps) {
-    TexelRect box = stampBounds(s, window);
-    if (box.empty()) continue;
-    std::uint32_t deepest = std::max(toQuanta(std::max(s.depthA, s.depthB)), toQuanta(s.rimHeight));
-    if (deepest == 0) continue;
-    TileSpan tiles = tilesReached(box, n);
-    for (int tz = tiles.first.y; tz <= tiles.last.y; ++tz)
-      for (int tx = tiles.first.x; tx <= tiles.last.x; ++tx) {
-        Slot& slot = slots_[slotOf({tx, tz})];
-        if (slot.deepest == 0) slot.applied = refillQuanta;  // untouched snow owes nothing
-        slot.deepest = std::max(slot.deepest, deepest);
-      }
-  }
+  for (const Stamp& s : stamps)
+    pressed(window, stampBounds(s, window),
+            std::max(toQuanta(std::max(s.depthA, s.depthB)), toQuanta(s.rimHeight)), refillQuanta);
+}
+
+void RefillSchedule::pressed(const SnowWindow& window, const TexelRect& box, std::uint32_t deepest,
+                             std::uint64_t refillQuanta) {
+  if (box.empty() || deepest == 0) return;
+  TileSpan tiles = tilesReached(box, window.tileTexels());
+  for (int tz = tiles.first.y; tz <= tiles.last.y; ++tz)
+    for (int tx = tiles.first.x; tx <= tiles.last.x; ++tx) {
+      Slot& slot = slots_[slotOf({tx, tz})];
+      if (slot.deepest == 0) slot.applied = refillQuanta;  // untouched snow owes nothing
+      slot.deepest = std::max(slot.deepest, deepest);
+    }
 }
 
 void RefillSchedule::entered(glm::ivec2 tile, std::uint32_t deepest, std::uint64_t refillQuanta) {

@@ -27,6 +27,8 @@ class RefillSchedule {
   // Stamps pressed into the window: each tile they reach may now hold a print as deep
   // (or a rim as high) as the stamp's.
   void stamped(const SnowWindow& window, std::span<const Stamp> stamps, std::uint64_t refillQuanta);
+  // A box of texels pressed up to `deepest` quanta by anything but a stamp (a mesh).
+  void pressed(const SnowWindow& window, const TexelRect& box, std::uint32_t deepest, std::uint64_t refillQuanta);
   // A tile entered the window holding prints up to `deepest` quanta, all refill applied.
   void entered(glm::ivec2 tile, std::uint32_t deepest, std::uint64_t refillQuanta);
   // A tile leaves the window: the refill counter its texels are up to date with.
@@ -37,6 +39,8 @@ class RefillSchedule {
   std::uint64_t refilledTo(glm::ivec2 tile, std::uint64_t refillQuanta) const;
   // Tiles that may hold a print.
   std::size_t printedTiles() const;
+  // Whether a tile of the window may hold a print; if not, all its texels are 0.
+  bool holdsPrints(glm::ivec2 tile) const { return slots_[slotOf(tile)].deepest != 0; }
 
  private:
   struct Slot {

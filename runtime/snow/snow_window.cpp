@@ -20,6 +20,8 @@ SnowWindow::SnowWindow(const WindowSettings& settings) : settings_(settings) {
     throw std::invalid_argument("snow window: tiles are at most 256 texels wide (16-bit positions in the store)");
   if (!(settings.texelSize > 0.f) || !std::isfinite(settings.texelSize))
     throw std::invalid_argument("snow window: texel size must be positive");
+  if (settings.workPerFrame == 0 || settings.refillTilesPerFrame == 0)
+    throw std::invalid_argument("snow window: a frame's work and its refilled tiles must be at least 1");
 }
 
 glm::ivec2 SnowWindow::texelAt(glm::vec2 world) const {
