@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -83,6 +84,9 @@ struct Mesh {
   // World x, z the mesh covers this frame (its bounds): the only texels it is drawn
   // into (parts outside are cut) and whose normals are redone.
   float footprintMin[2] = {0.f, 0.f}, footprintMax[2] = {0.f, 0.f};
+  // World y of the undisturbed snow surface under this mesh, where the terrain under it
+  // differs from Frame::snowSurfaceHeight (a vehicle on a hill); NaN: the frame's.
+  float snowSurfaceHeight = std::numeric_limits<float>::quiet_NaN();
 };
 
 // One frame's work.

@@ -1,6 +1,7 @@
 #include "runtime/snow/mesh_interactor_pass.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -113,6 +114,7 @@ void MeshInteractorPass::record(VkCommandBuffer cmd, const WindowConstants& wind
     vkCmdSetScissor(cmd, 0, 1, &scissors[i]);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineFor(m.vertexStride));
     c.model = m.model;
+    c.surfaceHeight = std::isfinite(m.surfaceHeight) ? m.surfaceHeight : level.surfaceHeight;
     vkCmdPushConstants(cmd, set_->pipelineLayout(), kStages, 0, sizeof(c), &c);
     vkCmdBindVertexBuffers(cmd, 0, 1, &m.vertices, &m.vertexOffset);
     vkCmdBindIndexBuffer(cmd, m.indices, m.indexOffset, m.indexType);

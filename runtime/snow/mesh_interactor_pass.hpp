@@ -6,6 +6,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <span>
@@ -28,6 +29,8 @@ struct MeshInteractor {
   // World xz the mesh covers this frame: where it is drawn (a scissor) and whose normals
   // are redone. Parts outside are cut.
   glm::vec2 footprintMin{0.f}, footprintMax{0.f};
+  // The undisturbed snow surface under this mesh (world y); NaN: the SnowLevel's.
+  float surfaceHeight = std::numeric_limits<float>::quiet_NaN();
 };
 
 // Where the undisturbed snow is: its surface height and depth (world y, metres).

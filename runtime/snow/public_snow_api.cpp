@@ -41,6 +41,7 @@ wg::snow::MeshInteractor toInteractor(const Mesh& m) {
   std::memcpy(&i.model, m.model, sizeof m.model);
   i.footprintMin = {m.footprintMin[0], m.footprintMin[1]};
   i.footprintMax = {m.footprintMax[0], m.footprintMax[1]};
+  i.surfaceHeight = m.snowSurfaceHeight;
   return i;
 }
 }  // namespace

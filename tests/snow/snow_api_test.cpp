@@ -187,9 +187,10 @@ TorusMesh torus(float major, float minor, int rings, int sides) {
   return m;
 }
 
-TEST_F(SnowApi, ATorusPressedIntoTheSnowLeavesARing) {
+// A torus pressed 10 cm into the snow leaves a ring. `hill` raises the snow surface
+// under the mesh (Mesh::snowSurfaceHeight) above the frame's, and the torus with it.
+void pressTorus(float hill) {
   vk::Context& ctx = *snowContext();
-  if (!ctx.fragmentStoresAndAtomics()) GTEST_SKIP() << "no fragmentStoresAndAtomics";
   auto snow = createSnow(smallSettings());
   ASSERT_TRUE(snow);
   EngineFrames engine(ctx);
@@ -207,7 +208,8 @@ TEST_F(SnowApi, ATorusPressedIntoTheSnowLeavesARing) {
   m.vertexBuffer = vertices.handle();
   m.indexBuffer = indices.handle();
   m.indexCount = std::uint32_t(mesh.indices.size());
-  float y = kSurface - kPress + kMinor;  // the torus's centre height
+  float y = kSurface + hill - kPress + kMinor;  // the torus's centre height
+  if (hill != 0.f) m.snowSurfaceHeight = kSurface + hill;
   float model[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, centre.x, y, centre.y, 1};
   std::copy(model, model + 16, m.model);
   float reach = kMajor + kMinor;
@@ -238,6 +240,18 @@ TEST_F(SnowApi, ATorusPressedIntoTheSnowLeavesARing) {
     EXPECT_GT(depth(outer - slack), 0.f) << "the ring's outer edge, direction " << a;
     EXPECT_EQ(depth(outer + slack), 0.f) << "outside the ring, direction " << a;
   }
+}
+
+TEST_F(SnowApi, ATorusPressedIntoTheSnowLeavesARing) {
+  if (!snowContext()->fragmentStoresAndAtomics()) GTEST_SKIP() << "no fragmentStoresAndAtomics";
+  pressTorus(0.f);
+}
+
+// On a 2 m hill the torus is far above the frame's snow surface; its own surface
+// height makes it press the same ring.
+TEST_F(SnowApi, AMeshPressesIntoTheSnowUnderItOnAHill) {
+  if (!snowContext()->fragmentStoresAndAtomics()) GTEST_SKIP() << "no fragmentStoresAndAtomics";
+  pressTorus(2.f);
 }
 
 TEST_F(SnowApi, SavedPrintsLoadIntoAnotherField) {
