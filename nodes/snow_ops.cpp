@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "nodes/core_library.hpp"
 #include "nodes/height_field.hpp"
+#include "nodes/lattice_noise.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
 
@@ -71,23 +73,66 @@ float wg_snow_sky_open(vec3 p, float occluder, vec2 uv) {
 )",
     {&kCoreLibrary}};
 
-// Seed 3.5.2's sparkle, kept stable as the camera moves. Where a pixel spans more than
-// one sparkle cell, the cell its centre hits would change from frame to frame (flicker):
-// there the sparkle comes from coarser cells, each at least a pixel wide and fixed in
-// the world, lit with the same density. The CPU evaluator's point has no footprint, so
-// it always takes the graph's own sparkle.
+// Seed 3.5.2's sparkles as a field that is continuous in the camera, so glitter does not
+// flicker. Level n has cells of 2^n base cells; some of them (kSparklesPerDensity) hold
+// a sparkle at a hashed point of the cell's middle half, a smooth bump half a cell in
+// radius. The four cells whose middles surround a point are the only ones whose bump
+// can reach it (any other sparkle is at least 0.75 cell away), so nothing pops at cell
+// edges. The level is chosen from the pixel footprint so that a bump is at least one
+// footprint in radius, and the two levels around that size are blended by the
+// fractional level: sparkles stay fixed in the world, with the same energy per area at
+// every level (bump area scales with cell area), and grow only where pixels do. Cells
+// hash as wg_lattice_hash (salted per level); PCG's LCG step gives the two jitters.
 const ShaderLibrary kSnowGlitterLibrary = {
     "snow_glitter",
-    R"(float wg_snow_sparkle(float sparkle, float density, vec2 xz, float cellsPerMetre) {
-  float cellsPerPixel = cellsPerMetre * max(fwidth(xz.x), fwidth(xz.y));
-  if (!(cellsPerPixel > 1.0)) return sparkle;
-  float lod = min(ceil(log2(cellsPerPixel)), 16.0);
-  vec2 cell = floor(xz * (cellsPerMetre / exp2(lod)));
-  float h = fract(sin(dot(cell, vec2(12.9898, 78.233)) + lod * 7.13) * 43758.5453);
-  return step(1.0 - density, h);
+    R"(float wg_sparkle_level(vec2 g, float density, uint salt) {
+  vec2 b = floor(g - 0.5);
+  vec4 cx = b.x + vec4(0.0, 1.0, 0.0, 1.0);
+  vec4 cy = b.y + vec4(0.0, 0.0, 1.0, 1.0);
+  uvec4 h = ((uvec4(ivec4(cx)) * 1597334673u) ^ (uvec4(ivec4(cy)) * 3812015801u ^ salt)) * 1597334673u;
+  uvec4 jx = h * 747796405u + 2891336453u;
+  uvec4 jy = jx * 747796405u + 2891336453u;
+  vec4 lit = 1.0 - step(vec4(density * 3.8197186), vec4(h >> 8u) * (1.0 / 16777216.0));  // kSparklesPerDensity
+  vec4 dx = g.x - cx - (0.25 + vec4(jx >> 8u) * (0.5 / 16777216.0));
+  vec4 dy = g.y - cy - (0.25 + vec4(jy >> 8u) * (0.5 / 16777216.0));
+  vec4 q = max(1.0 - 4.0 * (dx * dx + dy * dy), 0.0);
+  return dot(lit, q * q);
+}
+// footprint: fwidth of the world xz (m), 0 on the CPU. Level f - 1 has bumps exactly
+// one footprint in radius; levels floor(f) and floor(f) + 1 are both at least that.
+float wg_snow_sparkle(vec2 xz, float density, float cellsPerMetre, vec2 footprint) {
+  float f = clamp(log2(max(2.0 * max(footprint.x, footprint.y) * cellsPerMetre, 1e-6)) + 1.0, 0.0, 16.0);
+  float n = floor(f);
+  vec2 g = xz * cellsPerMetre * exp2(-n);
+  uint salt = uint(n) * 2654435769u;  // 2^32 / golden ratio: each level its own sparkles
+  return mix(wg_sparkle_level(g, density, salt), wg_sparkle_level(0.5 * g, density, salt + 2654435769u), f - n);
 }
 )",
     {}};
+
+// A bump (1 - 4 d^2)^2 gives a cell pi / 12 of a fully lit cell's energy: a sparkle in
+// 12 / pi times `density` of the cells keeps `density` the fraction of the area's
+// energy that glints, as when a `density` fraction of cells lit whole.
+constexpr float kSparklesPerDensity = 3.8197186f;
+
+// wg_snow_sparkle with no footprint (the CPU evaluator's point): level 0 alone, which
+// the GPU also draws where a pixel spans under a quarter of a cell.
+float snowSparkle(float x, float z, float density, float cellsPerMetre) {
+  float gx = x * cellsPerMetre, gz = z * cellsPerMetre;
+  float bx = std::floor(gx - 0.5f), bz = std::floor(gz - 0.5f), sum = 0.f;
+  constexpr float kUnit = 1.f / 16777216.f;  // the top 24 bits convert exactly
+  for (float cz : {bz, bz + 1.f})
+    for (float cx : {bx, bx + 1.f}) {
+      std::uint32_t h = latticeHash(static_cast<std::int32_t>(cx), static_cast<std::int32_t>(cz));
+      std::uint32_t jx = h * 747796405u + 2891336453u, jz = jx * 747796405u + 2891336453u;
+      if (!(static_cast<float>(h >> 8) * kUnit < density * kSparklesPerDensity)) continue;
+      float dx = gx - cx - (0.25f + static_cast<float>(jx >> 8) * (0.5f * kUnit));
+      float dz = gz - cz - (0.25f + static_cast<float>(jz >> 8) * (0.5f * kUnit));
+      float q = std::max(1.f - 4.f * (dx * dx + dz * dz), 0.f);
+      sum += q * q;
+    }
+  return sum;
+}
 
 glm::vec4 snowGround(const EvalContext& c, glm::vec3 p) {
   auto height = [&](float dx, float dz) {
@@ -177,20 +222,22 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                  },
                  V});
   // Seed 3.5.2: sparkles only inside the specular highlight (eq. 3.9, Blinn-Phong
-  // with the sun's half vector), so never in shadow: the sun shadow map's visibility
-  // multiplies it (fragment stage only); the sparkle is kept stable (kSnowGlitterLibrary).
+  // with the sun's half vector, a smooth lobe), so never in shadow: the sun shadow map's
+  // visibility multiplies it (fragment stage only). The sparkles themselves are a field
+  // filtered over the pixel's footprint (kSnowGlitterLibrary).
   ops.push_back({"snow_glitter", "snow",
-                 "eq. 3.9: sparkle * pow(max(N.H, 0), shininess) * sun * shadow; emissive glints of snow crystals, "
-                 "sparkle cells at least a pixel wide, fixed in the world (fragment stage)",
+                 "eq. 3.9: sparkles * pow(max(N.H, 0), shininess) * sun * shadow; emissive glints of snow crystals, "
+                 "smooth bumps fixed in the world and at least a pixel in radius, so they do not flicker; sparkle masks "
+                 "them (fragment stage)",
                  {{"normal", PortType::Vec3, std::nullopt},
                   {"position", PortType::Vec3, std::nullopt},
-                  {"sparkle", PortType::Float, std::nullopt},
+                  {"sparkle", PortType::Float, Value::scalar(1.f)},
                   {"shininess", PortType::Float, Value::scalar(64.f), 1.f, 4096.f},
                   {"density", PortType::Float, Value::scalar(0.03f), 0.f, 1.f},
                   {"cellsPerMetre", PortType::Float, Value::scalar(60.f), 0.f, 1e5f}},
                  ValueRule::Fixed, ValueType::Float,
-                 "(wg_snow_sparkle({sparkle}, {density}, {position}.xz, {cellsPerMetre}) * pow(max(dot({normal}, "
-                 "wg_safe_normalize(frame_sunDirection + wg_safe_normalize("
+                 "({sparkle} * wg_snow_sparkle({position}.xz, {density}, {cellsPerMetre}, fwidth({position}.xz)) * "
+                 "pow(max(dot({normal}, wg_safe_normalize(frame_sunDirection + wg_safe_normalize("
                  "frame_cameraPosition - {position}))), 0.0), {shininess}) * frame_sunIntensity * "
                  "wg_sun_shadow({position}, {normal}))",
                  "",
@@ -205,7 +252,8 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                    glm::vec3 h = sun + toEye;
                    h = glm::length(h) > 0.f ? glm::normalize(h) : h;
                    float highlight = std::pow(std::max(glm::dot(n, h), 0.f), in[3].x());
-                   return Value::scalar(in[2].x() * highlight * f.sunIntensity * c.surface->sunVisibility);
+                   float sparkles = in[2].x() * snowSparkle(p.x, p.z, in[4].x(), in[5].x());
+                   return Value::scalar(sparkles * highlight * f.sunIntensity * c.surface->sunVisibility);
                  },
                  V, {&kPbrShadingLibrary, &kSnowGlitterLibrary}});
 }

@@ -40,15 +40,51 @@ TEST(SnowOps, GlitterOnlyInTheHighlightAndNeverInShadow) {
   f.cameraPosition = {0.f, 6.f, -8.f};  // the mirror direction of the sun about +y
   SurfacePoint lit, shadowed;
   shadowed.sunVisibility = 0.f;
-  Value up = Value::vec3(0.f, 1.f, 0.f), origin = Value::vec3(0.f, 0.f, 0.f);
-  auto glitter = [&](const Value& n, float sparkle, const SurfacePoint& s) {
-    return run("snow_glitter", {n, origin, Value::scalar(sparkle), Value::scalar(64.f)}, s, f).x();
+  Value up = Value::vec3(0.f, 1.f, 0.f);
+  auto glitter = [&](const Value& n, float x, float z, float sparkle, const SurfacePoint& s) {
+    return run("snow_glitter", {n, Value::vec3(x, 0.f, z), Value::scalar(sparkle), Value::scalar(64.f),
+                                Value::scalar(0.03f), Value::scalar(60.f)}, s, f).x();
   };
-  EXPECT_NEAR(glitter(up, 1.f, lit), 1.f, 1e-4f);  // N = H: the highlight's peak
-  EXPECT_EQ(glitter(up, 0.f, lit), 0.f);           // no crystal there
-  EXPECT_EQ(glitter(up, 1.f, shadowed), 0.f);      // seed 3.5.2: never in shadow
+  // The brightest point of a 20 cm square, 1 mm apart: a sparkle's centre.
+  float peak = 0.f, px = 0.f, pz = 0.f;
+  for (int i = 0; i < 200; ++i)
+    for (int j = 0; j < 200; ++j)
+      if (float g = glitter(up, i * 1e-3f, j * 1e-3f, 1.f, lit); g > peak) peak = g, px = i * 1e-3f, pz = j * 1e-3f;
+  EXPECT_NEAR(peak, 1.f, 0.02f);                     // N = H: the highlight's peak on a bump's peak
+  EXPECT_EQ(glitter(up, px, pz, 0.f, lit), 0.f);       // the graph masks it off
+  EXPECT_EQ(glitter(up, px, pz, 1.f, shadowed), 0.f);  // seed 3.5.2: never in shadow
   // Tilted 45 degrees away from the half vector: outside a shininess-64 highlight.
-  EXPECT_LT(glitter(Value::vec3(0.7071f, 0.7071f, 0.f), 1.f, lit), 1e-4f);
+  EXPECT_LT(glitter(Value::vec3(0.7071f, 0.7071f, 0.f), px, pz, 1.f, lit), 1e-4f);
+}
+
+// The CPU's sparkles are the GPU's where a pixel is under a quarter of a cell (level
+// 0): smooth bumps fixed in the world, so nothing pops where a point crosses a cell
+// edge, covering the area with `density` of its energy.
+TEST(SnowOps, GlitterSparklesAreSmoothBumpsAtTheDensitysEnergy) {
+  FrameState f;
+  f.sunDirection = {0.f, 1.f, 0.f};
+  f.sunIntensity = 1.f;
+  f.cameraPosition = {0.f, 10.f, 0.f};
+  SurfacePoint s;
+  auto sparkles = [&](float x, float z) {
+    return run("snow_glitter", {Value::vec3(0.f, 1.f, 0.f), Value::vec3(x, 0.f, z), Value::scalar(1.f),
+                                Value::scalar(1.f), Value::scalar(0.03f), Value::scalar(60.f)}, s, f).x();
+  };
+  constexpr float kStep = 1e-3f;  // 1 mm: 17 samples per 1.7 cm cell
+  double sum = 0.0;
+  float steepest = 0.f;
+  int samples = 0;
+  for (int i = 0; i < 1000; ++i) {
+    float previous = sparkles(-0.5f, -0.5f + i * kStep);
+    for (int j = 1; j < 1000; ++j, ++samples) {
+      float v = sparkles(-0.5f + j * kStep, -0.5f + i * kStep);
+      steepest = std::max(steepest, std::abs(v - previous));
+      sum += v;
+      previous = v;
+    }
+  }
+  EXPECT_LT(steepest, 0.25f) << "a bump 8 mm in radius changes by at most ~0.2 per mm; a cell edge would jump by 1";
+  EXPECT_NEAR(sum / samples, 0.03, 0.006);
 }
 
 TEST(SnowOps, DeformationReadsTheMapTexelAsHeightAndNormals) {
