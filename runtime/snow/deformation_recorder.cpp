@@ -208,14 +208,19 @@ void DeformationRecorder::recordFrame(VkCommandBuffer cmd, const FrameWork& work
   const std::uint64_t start = pass_.invocations(), budget = window_.settings().workPerFrame;
   auto left = [&] { return budget - std::min(budget, pass_.invocations() - start); };
   recordFollow(cmd, work.camera);
-  queued_.insert(queued_.end(), work.stamps.begin(), work.stamps.end());
-  recordStamps(cmd, takeQueuedStamps(work.allStamps ? ~std::uint64_t(0) : left()));
-  recordMeshes(cmd, work.meshes, work.level);  // the engine chooses how many
   const int n = window_.tileTexels();
   const std::uint64_t refillTile = pass_.invocationsOf(DeformationPass::Stage::Refill, glm::ivec2(n), 1) +
                                    pass_.invocationsOf(DeformationPass::Stage::Normals, glm::ivec2(n + 2), 1);
-  recordRefill(cmd, work.refillMetresPerSecond, work.seconds,
-               std::min<std::uint64_t>(window_.settings().refillTilesPerFrame, left() / refillTile));
+  // A tile owed refill keeps one tile's share from the stamps, so a scene that
+  // stamps a whole budget every frame still fills its prints in.
+  refill_.advance(work.refillMetresPerSecond, work.seconds);
+  const std::uint64_t reserved = schedule_.owes(refill_.totalQuanta()) ? refillTile : 0;
+  queued_.insert(queued_.end(), work.stamps.begin(), work.stamps.end());
+  recordStamps(cmd, takeQueuedStamps(work.allStamps ? ~std::uint64_t(0) : left() - std::min(left(), reserved)));
+  recordMeshes(cmd, work.meshes, work.level);  // the engine chooses how many
+  recordRefill(cmd, 0.0, 0.0,
+               std::min<std::uint64_t>(window_.settings().refillTilesPerFrame,
+                                       std::max<std::uint64_t>(left() / refillTile, reserved != 0)));
   const std::uint64_t normalTile = pass_.invocationsOf(DeformationPass::Stage::Normals, glm::ivec2(n + 2), 1);
   recordDeferredNormals(cmd, left() / normalTile);
 }

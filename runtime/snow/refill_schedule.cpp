@@ -70,6 +70,11 @@ std::uint64_t RefillSchedule::refilledTo(glm::ivec2 tile, std::uint64_t refillQu
   return slot.deepest == 0 ? refillQuanta : slot.applied;
 }
 
+bool RefillSchedule::owes(std::uint64_t refillQuanta) const {
+  return std::any_of(slots_.begin(), slots_.end(),
+                     [&](const Slot& s) { return s.deepest != 0 && s.applied < refillQuanta; });
+}
+
 std::size_t RefillSchedule::printedTiles() const {
   return std::size_t(std::count_if(slots_.begin(), slots_.end(), [](const Slot& s) { return s.deepest != 0; }));
 }

@@ -39,6 +39,8 @@ class RefillSchedule {
   std::uint64_t refilledTo(glm::ivec2 tile, std::uint64_t refillQuanta) const;
   // Tiles that may hold a print.
   std::size_t printedTiles() const;
+  // Whether any tile that may hold a print is owed refill.
+  bool owes(std::uint64_t refillQuanta) const;
   // Whether a tile of the window may hold a print; if not, all its texels are 0.
   bool holdsPrints(glm::ivec2 tile) const { return slots_[slotOf(tile)].deepest != 0; }
 

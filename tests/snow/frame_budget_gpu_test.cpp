@@ -70,6 +70,21 @@ TEST_F(FrameBudget, AQueueOfMoreThanASecondIsPressedAtOnce) {
   EXPECT_EQ(framed.queuedStamps(), 0u);
 }
 
+// A scene that stamps more than a budget every frame still fills its prints in: a tile
+// owed refill keeps a tile's share of each frame from the stamps.
+TEST_F(FrameBudget, RefillGoesOnWhileStampsFillEveryBudget) {
+  GpuDeformationMap framed(*snowContext(), budgeted(2048));
+  Stamp print = capsule({-1.f, -1.f}, {-1.f, -1.f}, 0.2f, kCover, kCover.depth);
+  framed.frame({.stamps = std::span(&print, 1)});
+  const float before = framed.depthAt({-1.f, -1.f});
+  // 10 cm an hour over a minute of frames: 1.7 mm, 17 quanta.
+  std::vector<Stamp> busy(8, capsule({1.f, 1.f}, {1.4f, 1.f}, 0.3f, kCover, 0.05f));
+  for (int f = 0; f < 60; ++f)
+    framed.frame({.stamps = busy, .refillMetresPerSecond = 0.1 / 3600.0, .seconds = 1.0});
+  EXPECT_GT(framed.queuedStamps(), 0u) << "the stamps fill every frame's budget";
+  EXPECT_LT(framed.depthAt({-1.f, -1.f}), before - 0.001f);
+}
+
 // A window move transfers nothing when no tile near it holds a print.
 TEST_F(FrameBudget, RecentringUntouchedSnowMovesNoTiles) {
   GpuDeformationMap framed(*snowContext(), budgeted(8192));
