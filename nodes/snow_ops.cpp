@@ -74,49 +74,60 @@ float wg_snow_sky_open(vec3 p, float occluder, vec2 uv) {
     {&kCoreLibrary}};
 
 // Seed 3.5.2's sparkles as a field that is continuous in the camera, so glitter does not
-// flicker. Level n has cells of 2^n base cells; some of them (kSparklesPerDensity) hold
-// a sparkle at a hashed point of the cell's middle half, a smooth bump half a cell in
-// radius. The four cells whose middles surround a point are the only ones whose bump
-// can reach it (any other sparkle is at least 0.75 cell away), so nothing pops at cell
-// edges. The level is chosen from the pixel footprint so that a bump is at least one
-// footprint in radius, and the two levels around that size are blended by the
-// fractional level: sparkles stay fixed in the world, with the same energy per area at
-// every level (bump area scales with cell area), and grow only where pixels do. Cells
-// hash as wg_lattice_hash (salted per level); PCG's LCG step gives the two jitters.
+// flicker. A sparkle is a point glint at a hashed spot in the middle half of a
+// `density` fraction of cells, drawn as a smooth bump (1 - q)^2, q = d' S^-1 d: its own
+// spot, kSparkleRadius of a cell in radius, widened by the pixel's footprint (S adds
+// r^2 J J', J the screen derivatives of world xz, r = 1.5 pixels), so on screen every
+// sparkle is a round disc at least 3 pixels across, never a streak, and never a pixel's
+// yes or no. The four cells whose middles surround a point are the only ones whose
+// bump can reach it (any other sparkle is at least 0.75 cell away), so nothing pops at
+// cell edges. Where pixels are wider, the sparkles come from coarser cells (level n:
+// 2^n base cells, each level its own hash salt) so the widened bump still fits; the two
+// levels around that size are blended by the fractional level. Cells hash as
+// wg_lattice_hash; PCG's LCG step gives the two jitters.
+constexpr float kSparkleRadius = 0.25f;  // cells
 const ShaderLibrary kSnowGlitterLibrary = {
     "snow_glitter",
-    R"(float wg_sparkle_level(vec2 g, float density, uint salt) {
+    R"(// s: the bump's spread (S's xx, xy, yy) in this level's cells squared.
+float wg_sparkle_level(vec2 g, float density, uint salt, vec3 s) {
   vec2 b = floor(g - 0.5);
   vec4 cx = b.x + vec4(0.0, 1.0, 0.0, 1.0);
   vec4 cy = b.y + vec4(0.0, 0.0, 1.0, 1.0);
   uvec4 h = ((uvec4(ivec4(cx)) * 1597334673u) ^ (uvec4(ivec4(cy)) * 3812015801u ^ salt)) * 1597334673u;
   uvec4 jx = h * 747796405u + 2891336453u;
   uvec4 jy = jx * 747796405u + 2891336453u;
-  vec4 lit = 1.0 - step(vec4(density * 3.8197186), vec4(h >> 8u) * (1.0 / 16777216.0));  // kSparklesPerDensity
+  vec4 lit = 1.0 - step(vec4(density), vec4(h >> 8u) * (1.0 / 16777216.0));
   vec4 dx = g.x - cx - (0.25 + vec4(jx >> 8u) * (0.5 / 16777216.0));
   vec4 dy = g.y - cy - (0.25 + vec4(jy >> 8u) * (0.5 / 16777216.0));
-  vec4 q = max(1.0 - 4.0 * (dx * dx + dy * dy), 0.0);
+  vec4 q = max(1.0 - (s.z * dx * dx - 2.0 * s.y * dx * dy + s.x * dy * dy) / (s.x * s.z - s.y * s.y), 0.0);
   return dot(lit, q * q);
 }
-// footprint: fwidth of the world xz (m), 0 on the CPU. Level f - 1 has bumps exactly
-// one footprint in radius; levels floor(f) and floor(f) + 1 are both at least that.
-float wg_snow_sparkle(vec2 xz, float density, float cellsPerMetre, vec2 footprint) {
-  float f = clamp(log2(max(2.0 * max(footprint.x, footprint.y) * cellsPerMetre, 1e-6)) + 1.0, 0.0, 16.0);
+// ex, ey: the world xz a pixel step moves (dFdx, dFdy), 0 on the CPU. A bump's spread in
+// base cells is r0^2 I + r^2 J J' (r0 = 0.25 cell, r = 1.5 pixels); level n divides the
+// footprint's part by 4^n. At level f - 1 that part's trace is 0.5, so the bump is at
+// most sqrt(0.0625 + 0.5) = 0.75 cell in radius; floor(f) and floor(f) + 1 fit too.
+float wg_snow_sparkle(vec2 xz, float density, float cellsPerMetre, vec2 ex, vec2 ey) {
+  vec2 jx = vec2(ex.x, ey.x) * (1.5 * cellsPerMetre), jy = vec2(ex.y, ey.y) * (1.5 * cellsPerMetre);
+  vec3 jj = vec3(dot(jx, jx), dot(jx, jy), dot(jy, jy));
+  float f = clamp(0.5 * log2(max(jj.x + jj.z, 1e-12)) + 1.5, 0.0, 16.0);
   float n = floor(f);
   vec2 g = xz * cellsPerMetre * exp2(-n);
-  uint salt = uint(n) * 2654435769u;  // 2^32 / golden ratio: each level its own sparkles
-  return mix(wg_sparkle_level(g, density, salt), wg_sparkle_level(0.5 * g, density, salt + 2654435769u), f - n);
+  vec3 j = jj * exp2(-2.0 * n);
+  uint salt = uint(n) * 2654435769u;  // 2^32 / golden ratio
+  float sum = 0.0;
+  for (int i = 0; i < 2; ++i) {  // a loop, not two copies: half the instructions
+    sum += (i == 0 ? 1.0 - (f - n) : f - n) * wg_sparkle_level(g, density, salt, j + vec3(0.0625, 0.0, 0.0625));
+    g *= 0.5;
+    j *= 0.25;
+    salt += 2654435769u;
+  }
+  return sum;
 }
 )",
     {}};
 
-// A bump (1 - 4 d^2)^2 gives a cell pi / 12 of a fully lit cell's energy: a sparkle in
-// 12 / pi times `density` of the cells keeps `density` the fraction of the area's
-// energy that glints, as when a `density` fraction of cells lit whole.
-constexpr float kSparklesPerDensity = 3.8197186f;
-
-// wg_snow_sparkle with no footprint (the CPU evaluator's point): level 0 alone, which
-// the GPU also draws where a pixel spans under a quarter of a cell.
+// wg_snow_sparkle with no footprint (the CPU evaluator's point): level 0 alone, bumps
+// kSparkleRadius of a cell in radius, as the GPU draws where a pixel is far smaller.
 float snowSparkle(float x, float z, float density, float cellsPerMetre) {
   float gx = x * cellsPerMetre, gz = z * cellsPerMetre;
   float bx = std::floor(gx - 0.5f), bz = std::floor(gz - 0.5f), sum = 0.f;
@@ -125,10 +136,10 @@ float snowSparkle(float x, float z, float density, float cellsPerMetre) {
     for (float cx : {bx, bx + 1.f}) {
       std::uint32_t h = latticeHash(static_cast<std::int32_t>(cx), static_cast<std::int32_t>(cz));
       std::uint32_t jx = h * 747796405u + 2891336453u, jz = jx * 747796405u + 2891336453u;
-      if (!(static_cast<float>(h >> 8) * kUnit < density * kSparklesPerDensity)) continue;
+      if (!(static_cast<float>(h >> 8) * kUnit < density)) continue;
       float dx = gx - cx - (0.25f + static_cast<float>(jx >> 8) * (0.5f * kUnit));
       float dz = gz - cz - (0.25f + static_cast<float>(jz >> 8) * (0.5f * kUnit));
-      float q = std::max(1.f - 4.f * (dx * dx + dz * dz), 0.f);
+      float q = std::max(1.f - (dx * dx + dz * dz) / (kSparkleRadius * kSparkleRadius), 0.f);
       sum += q * q;
     }
   return sum;
@@ -233,10 +244,10 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                   {"position", PortType::Vec3, std::nullopt},
                   {"sparkle", PortType::Float, Value::scalar(1.f)},
                   {"shininess", PortType::Float, Value::scalar(64.f), 1.f, 4096.f},
-                  {"density", PortType::Float, Value::scalar(0.03f), 0.f, 1.f},
+                  {"density", PortType::Float, Value::scalar(0.15f), 0.f, 1.f},
                   {"cellsPerMetre", PortType::Float, Value::scalar(60.f), 0.f, 1e5f}},
                  ValueRule::Fixed, ValueType::Float,
-                 "({sparkle} * wg_snow_sparkle({position}.xz, {density}, {cellsPerMetre}, fwidth({position}.xz)) * "
+                 "({sparkle} * wg_snow_sparkle({position}.xz, {density}, {cellsPerMetre}, dFdx({position}.xz), dFdy({position}.xz)) * "
                  "pow(max(dot({normal}, wg_safe_normalize(frame_sunDirection + wg_safe_normalize("
                  "frame_cameraPosition - {position}))), 0.0), {shininess}) * frame_sunIntensity * "
                  "wg_sun_shadow({position}, {normal}))",

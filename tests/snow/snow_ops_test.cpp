@@ -43,13 +43,13 @@ TEST(SnowOps, GlitterOnlyInTheHighlightAndNeverInShadow) {
   Value up = Value::vec3(0.f, 1.f, 0.f);
   auto glitter = [&](const Value& n, float x, float z, float sparkle, const SurfacePoint& s) {
     return run("snow_glitter", {n, Value::vec3(x, 0.f, z), Value::scalar(sparkle), Value::scalar(64.f),
-                                Value::scalar(0.03f), Value::scalar(60.f)}, s, f).x();
+                                Value::scalar(0.15f), Value::scalar(60.f)}, s, f).x();
   };
-  // The brightest point of a 20 cm square, 1 mm apart: a sparkle's centre.
+  // The brightest point of a 10 cm square, 0.5 mm apart: a sparkle's centre.
   float peak = 0.f, px = 0.f, pz = 0.f;
   for (int i = 0; i < 200; ++i)
     for (int j = 0; j < 200; ++j)
-      if (float g = glitter(up, i * 1e-3f, j * 1e-3f, 1.f, lit); g > peak) peak = g, px = i * 1e-3f, pz = j * 1e-3f;
+      if (float g = glitter(up, i * 5e-4f, j * 5e-4f, 1.f, lit); g > peak) peak = g, px = i * 5e-4f, pz = j * 5e-4f;
   EXPECT_NEAR(peak, 1.f, 0.02f);                     // N = H: the highlight's peak on a bump's peak
   EXPECT_EQ(glitter(up, px, pz, 0.f, lit), 0.f);       // the graph masks it off
   EXPECT_EQ(glitter(up, px, pz, 1.f, shadowed), 0.f);  // seed 3.5.2: never in shadow
@@ -57,10 +57,10 @@ TEST(SnowOps, GlitterOnlyInTheHighlightAndNeverInShadow) {
   EXPECT_LT(glitter(Value::vec3(0.7071f, 0.7071f, 0.f), px, pz, 1.f, lit), 1e-4f);
 }
 
-// The CPU's sparkles are the GPU's where a pixel is under a quarter of a cell (level
-// 0): smooth bumps fixed in the world, so nothing pops where a point crosses a cell
-// edge, covering the area with `density` of its energy.
-TEST(SnowOps, GlitterSparklesAreSmoothBumpsAtTheDensitysEnergy) {
+// The CPU's sparkles are the GPU's where a pixel is far under a cell (level 0): smooth
+// bumps a quarter of a 1.7 cm cell in radius, fixed in the world, in `density` of the
+// cells, so nothing pops where a point crosses a cell edge.
+TEST(SnowOps, GlitterSparklesAreSmoothBumpsInDensityOfTheCells) {
   FrameState f;
   f.sunDirection = {0.f, 1.f, 0.f};
   f.sunIntensity = 1.f;
@@ -68,23 +68,24 @@ TEST(SnowOps, GlitterSparklesAreSmoothBumpsAtTheDensitysEnergy) {
   SurfacePoint s;
   auto sparkles = [&](float x, float z) {
     return run("snow_glitter", {Value::vec3(0.f, 1.f, 0.f), Value::vec3(x, 0.f, z), Value::scalar(1.f),
-                                Value::scalar(1.f), Value::scalar(0.03f), Value::scalar(60.f)}, s, f).x();
+                                Value::scalar(1.f), Value::scalar(0.15f), Value::scalar(60.f)}, s, f).x();
   };
-  constexpr float kStep = 1e-3f;  // 1 mm: 17 samples per 1.7 cm cell
+  constexpr float kStep = 5e-4f;  // 0.5 mm: 33 samples per cell
   double sum = 0.0;
   float steepest = 0.f;
   int samples = 0;
   for (int i = 0; i < 1000; ++i) {
-    float previous = sparkles(-0.5f, -0.5f + i * kStep);
+    float previous = sparkles(-0.25f, -0.25f + i * kStep);
     for (int j = 1; j < 1000; ++j, ++samples) {
-      float v = sparkles(-0.5f + j * kStep, -0.5f + i * kStep);
+      float v = sparkles(-0.25f + j * kStep, -0.25f + i * kStep);
       steepest = std::max(steepest, std::abs(v - previous));
       sum += v;
       previous = v;
     }
   }
-  EXPECT_LT(steepest, 0.25f) << "a bump 8 mm in radius changes by at most ~0.2 per mm; a cell edge would jump by 1";
-  EXPECT_NEAR(sum / samples, 0.03, 0.006);
+  EXPECT_LT(steepest, 0.25f) << "a 4 mm bump changes by under 0.2 per half millimetre; a cell edge would jump by 1";
+  // Each sparkle holds pi r^2 / 3 of a cell's area (r a quarter cell): 0.0654 times 0.15.
+  EXPECT_NEAR(sum / samples, 0.15 * 0.06545, 0.2 * 0.15 * 0.06545);
 }
 
 TEST(SnowOps, DeformationReadsTheMapTexelAsHeightAndNormals) {

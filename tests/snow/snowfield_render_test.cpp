@@ -179,9 +179,9 @@ struct GlintEnergy {
 // (1.7 cm) and 0.1 to 0.5 pixel of motion on the ground. Each pixel of the layer is
 // followed to where its world point lands in the second frame, and the glint energy
 // around it there is compared with before. Sparkles chosen at pixel centres (cells at
-// least a pixel wide) changed 25 % of the glint energy at 240x135; smooth world-space
-// bumps at least a pixel in radius change 8 %, shrinking with the step (2 % at 2 mm).
-// Counting pixels that cross a threshold would count the motion too.
+// least a pixel wide) changed 25 % of the glint energy at 240x135; point glints drawn
+// as smooth discs at least 1.5 pixels in radius change 9 %. Counting pixels that cross
+// a threshold would count the motion too.
 TEST_F(Snowfield, GlitterDoesNotFlicker) {
   Snowscape scape(1.f);
   RenderRequest request = scape.request(scape.animation->advanceTo(0.0));
@@ -219,7 +219,7 @@ TEST_F(Snowfield, GlitterDoesNotFlicker) {
   EXPECT_GE(glints, 100) << "glitter shows at this size";
   // Sparkles, not a haze: most of the glint energy is in pixels well above the snow.
   EXPECT_GE(brightEnergy, 0.5 * total);
-  EXPECT_LE(change, 0.12 * energy) << "glint energy changed by " << 100.0 * change / energy << " %";
+  EXPECT_LE(change, 0.14 * energy) << "glint energy changed by " << 100.0 * change / energy << " %";
 }
 
 // Bloom (seed 3.5.1): sunlit snow glows, so the frame gets brighter, never darker.
