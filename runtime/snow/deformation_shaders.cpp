@@ -55,11 +55,12 @@ float texelHeight(uint texel) {
 // One workgroup layer per stamp (gl_WorkGroupID.z), covering its bounding box: the cost
 // follows the stamped area, not the map size. Overlaps merge with atomicMax.
 constexpr std::string_view kStamp = R"(
-struct Stamp { vec2 a; vec2 b; float radiusA; float radiusB; float depthA; float depthB; float rimWidth; float rimHeight; };
+struct Stamp { vec2 a; vec2 b; float radiusA; float radiusB; float depthA; float depthB; float rimWidth; float rimHeight; float waist; float archDepth; };
 layout(std430, set = 0, binding = 2) readonly buffer Stamps { Stamp stamps[]; };
 layout(std430, set = 0, binding = 3) readonly buffer StampBoxes { ivec4 stampBoxes[]; };
 const float kDegenerateAxis = 1e-5;
 const float kWallFraction = 0.35;
+const float kArchFlat = 0.05, kArchReach = 0.3;
 float unevenCapsuleDistance(vec2 p, float r1, float r2, float h) {
   p.x = abs(p.x);
   if (h <= abs(r1 - r2)) return min(length(p) - r1, length(p - vec2(0.0, h)) - r2);
@@ -69,6 +70,7 @@ float unevenCapsuleDistance(vec2 p, float r1, float r2, float h) {
   if (k > a * h) return length(p - vec2(0.0, h)) - r2;
   return dot(p, vec2(a, b)) - r1;
 }
+float archWeight(float t) { return 1.0 - smoothstep(kArchFlat, kArchReach, abs(t - 0.5)); }
 void main() {
   ivec4 box = stampBoxes[gl_WorkGroupID.z];
   ivec2 local = ivec2(gl_GlobalInvocationID.xy);
@@ -84,7 +86,11 @@ void main() {
   vec2 q = vec2(dot(d, across), dot(d, along));
   float distance = unevenCapsuleDistance(q, s.radiusA, s.radiusB, h);
   float t = h > kDegenerateAxis ? clamp(q.y / h, 0.0, 1.0) : 0.0;
-  float depth = (s.depthA + (s.depthB - s.depthA) * t) * smoothstep(0.0, kWallFraction * min(s.radiusA, s.radiusB), -distance);
+  float arch = s.waist > 0.0 ? archWeight(t) : 0.0;
+  float sole = distance + arch * max(s.radiusA + (s.radiusB - s.radiusA) * t - s.waist, 0.0);
+  float depth = s.depthA + (s.depthB - s.depthA) * t;
+  depth += (s.archDepth - depth) * arch;
+  depth *= smoothstep(0.0, kWallFraction * min(s.radiusA, s.radiusB), -sole);
   float rim = 0.0;
   if (distance > 0.0 && distance < s.rimWidth) {
     float u = distance / s.rimWidth;

@@ -13,6 +13,10 @@ constexpr float kDegenerateAxis = 1e-5f;
 // The print wall slopes over this fraction of the smaller radius; a vertical wall would
 // alias on the 4 cm grid.
 constexpr float kWallFraction = 0.35f;
+// A waisted stamp's arch, by t (0 at the heel centre, 1 at the toe centre): full over
+// the middle tenth, gone a fifth of the way from either centre, so heel and ball each
+// keep their full width and depth over two texels or more.
+constexpr float kArchFlat = 0.05f, kArchReach = 0.3f;
 
 float smoothstep(float e0, float e1, float x) {
   float t = std::clamp((x - e0) / (e1 - e0), 0.f, 1.f);
@@ -30,6 +34,8 @@ float unevenCapsuleDistance(glm::vec2 p, float r1, float r2, float h) {
   if (k > a * h) return glm::length(p - glm::vec2(0.f, h)) - r2;
   return glm::dot(p, glm::vec2(a, b)) - r1;
 }
+
+float archWeight(float t) { return 1.f - smoothstep(kArchFlat, kArchReach, std::abs(t - 0.5f)); }
 }  // namespace
 
 StampProfile stampProfile(const Stamp& s, glm::vec2 point) {
@@ -41,10 +47,16 @@ StampProfile stampProfile(const Stamp& s, glm::vec2 point) {
   glm::vec2 local(glm::dot(d, across), glm::dot(d, along));
   float distance = unevenCapsuleDistance(local, s.radiusA, s.radiusB, h);
   float t = h > kDegenerateAxis ? std::clamp(local.y / h, 0.f, 1.f) : 0.f;
+  float arch = s.waist > 0.f ? archWeight(t) : 0.f;
+  // The sides pulled in across the arch to about the waist (the capsule's half-width
+  // there is about the radii's mix), and the print shallower there. The rim still
+  // rings the capsule: a 4 cm map cannot hold a ridge inside the waist's hollow.
+  float sole = distance + arch * std::max(s.radiusA + (s.radiusB - s.radiusA) * t - s.waist, 0.f);
   float depth = s.depthA + (s.depthB - s.depthA) * t;
+  depth += (s.archDepth - depth) * arch;
   float wall = kWallFraction * std::min(s.radiusA, s.radiusB);
   StampProfile out;
-  out.depth = depth * smoothstep(0.f, wall, -distance);
+  out.depth = depth * smoothstep(0.f, wall, -sole);
   if (distance > 0.f && distance < s.rimWidth) {
     float u = distance / s.rimWidth;
     out.rim = s.rimHeight * 4.f * u * (1.f - u);  // a parabolic ridge, 0 at both edges
@@ -83,8 +95,10 @@ Stamp footprint(glm::vec2 centre, glm::vec2 heading, const FootShape& foot, cons
   s.radiusB = foot.toeRadius;
   s.depthA = depth;
   s.depthB = depth * foot.toeDepthFraction;
-  s.rimWidth = kRimWidthFraction * foot.toeRadius;
+  s.rimWidth = foot.rimWidth;
   s.rimHeight = kRimHeightFraction * depth;
+  s.waist = foot.waist;
+  s.archDepth = depth * foot.archDepthFraction;
   return s;
 }
 

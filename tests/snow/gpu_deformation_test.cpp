@@ -1,7 +1,7 @@
 // The deformation compute pass on lavapipe with the validation layers on (issue 5,
 // §7): the map read back from the GPU against the CPU model and the scripted paths,
-// no deformation without snow, continuous trails at any speed, prints through
-// recentring and a round trip, refill at the configured rate.
+// a footprint's boot-sole shape, no deformation without snow, continuous trails at any
+// speed, prints through recentring and a round trip, refill at the configured rate.
 #include "runtime/snow/gpu_deformation_map.hpp"
 
 #include <gtest/gtest.h>
@@ -110,6 +110,49 @@ TEST_F(GpuDeformation, FootprintsReadBackWhereThePathPutsThem) {
     EXPECT_EQ(gpu.depthAt(w.path.pointAt((float(k) + 0.5f) * w.stepLength)), 0.f) << "between footfalls " << k;
   }
   EXPECT_GE(prints, 5);
+}
+
+// One footprint read back from the GPU, on a 1 cm map (its shape) and on the default
+// 4 cm map (what the snow layer draws): a boot sole, heel and ball deeper than the
+// arch and the sole narrowest at its waist; the CPU model agrees on both.
+TEST_F(GpuDeformation, AFootprintReadsBackAsABootSole) {
+  const FootShape foot;
+  const glm::vec2 heading(0.f, 1.f);
+  for (float texel : {0.01f, 0.04f}) {
+    const glm::vec2 centre(0.5f * texel);  // the sole's axis on a column of texel centres
+    Stamp print = footprint(centre, heading, foot, kCover, Walker{}.sink);
+    const glm::vec2 heel = centre - heading * (0.5f * foot.length - foot.heelRadius);
+    const glm::vec2 toe = centre + heading * (0.5f * foot.length - foot.toeRadius);
+    const glm::vec2 arch = 0.5f * (heel + toe);
+    const WindowSettings settings{128, texel, 16};
+    DeformationMap cpu(settings);
+    GpuDeformationMap gpu(*snowContext(), settings);
+    cpu.apply(std::span(&print, 1));
+    gpu.apply(std::span(&print, 1));
+    EXPECT_LE(maxQuantaDifference(cpu.texels().heights, gpu.texels().heights), 1u) << texel;
+    float atHeel = gpu.depthAt(heel), atArch = gpu.depthAt(arch), atToe = gpu.depthAt(toe);
+    RecordProperty(texel < 0.02f ? "depths_1cm_heel_arch_toe_mm" : "depths_4cm_heel_arch_toe_mm",
+                   std::to_string(int(1000.f * atHeel)) + " " + std::to_string(int(1000.f * atArch)) + " " +
+                       std::to_string(int(1000.f * atToe)));
+    EXPECT_GT(atArch, 0.f) << texel << ": the arch is part of the print";
+    EXPECT_LT(atArch, 0.75f * atHeel) << texel;
+    EXPECT_LT(atArch, 0.75f * atToe) << texel;
+    // Width: texels across the sole deeper than a centimetre.
+    auto width = [&](glm::vec2 at) {
+      int n = 0;
+      for (int k = -20; k <= 20; ++k) n += gpu.depthAt(at + glm::vec2(float(k) * texel, 0.f)) > 0.01f;
+      return n;
+    };
+    int heelWidth = width(heel), archWidth = width(arch), toeWidth = width(toe);
+    RecordProperty(texel < 0.02f ? "widths_1cm_heel_arch_toe_texels" : "widths_4cm_heel_arch_toe_texels",
+                   std::to_string(heelWidth) + " " + std::to_string(archWidth) + " " + std::to_string(toeWidth));
+    EXPECT_LE(archWidth, std::min(heelWidth, toeWidth)) << texel;
+    if (texel < 0.02f) {  // 1 cm resolves the sole: 9, 7 and 11 cm across (on 4 cm, 1 to 3 texels)
+      EXPECT_NEAR(heelWidth, 9, 1);
+      EXPECT_NEAR(archWidth, 7, 1);
+      EXPECT_NEAR(toeWidth, 11, 1);
+    }
+  }
 }
 
 TEST_F(GpuDeformation, ZeroSnowDepthLeavesNoDeformation) {

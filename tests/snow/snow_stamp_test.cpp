@@ -24,6 +24,30 @@ TEST(SnowStamp, FootprintIsDeeperAtTheHeelThanAtTheToe) {
   EXPECT_EQ(stampProfile(s, glm::vec2(0.13f, 0.f)).depth, 0.f);
 }
 
+// A boot sole: the arch carries less weight than heel and ball, so it is shallower,
+// and the sole is narrower there (its waist) than across the heel or the ball.
+TEST(SnowStamp, FootprintIsShallowAndNarrowAtTheArch) {
+  Stamp s = footprint({0.f, 0.f}, {0.f, 1.f}, kFoot, kDeep, 0.1f);
+  float heelY = -0.5f * kFoot.length + kFoot.heelRadius, toeY = 0.5f * kFoot.length - kFoot.toeRadius;
+  float archY = 0.5f * (heelY + toeY);
+  auto depth = [&](float x, float y) { return stampProfile(s, {x, y}).depth; };
+  EXPECT_NEAR(depth(0.f, archY), 0.1f * kFoot.archDepthFraction, 1e-5f);
+  EXPECT_LT(depth(0.f, archY), 0.7f * depth(0.f, heelY));
+  EXPECT_LT(depth(0.f, archY), 0.7f * depth(0.f, toeY));
+  auto width = [&](float y) {
+    int mm = 0;
+    for (int x = -100; x <= 100; ++x) mm += depth(0.001f * float(x), y) > 0.f;
+    return 0.001f * float(mm);
+  };
+  EXPECT_NEAR(width(heelY), 2.f * kFoot.heelRadius, 0.003f);
+  EXPECT_NEAR(width(archY), 2.f * kFoot.waist, 0.003f);
+  EXPECT_NEAR(width(toeY), 2.f * kFoot.toeRadius, 0.003f);
+  // A capsule has no waist: as deep and as wide in its middle as at its ends.
+  Stamp c = capsule({0.f, -0.1f}, {0.f, 0.1f}, 0.05f, kDeep, 0.1f);
+  EXPECT_NEAR(stampProfile(c, {0.f, 0.f}).depth, 0.1f, 1e-5f);
+  EXPECT_GT(stampProfile(c, {0.045f, 0.f}).depth, 0.f);
+}
+
 TEST(SnowStamp, FootprintTurnsWithTheHeading) {
   glm::vec2 east(1.f, 0.f), north(0.f, 1.f);
   Stamp a = footprint({2.f, 3.f}, north, kFoot, kDeep, 0.1f);
