@@ -28,7 +28,15 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, haze.size))) return;
   float depth = texelFetch(sampler2D(SceneDepth, DepthSampler), p, 0).r;
-  if (depth >= 1.0) return;  // the sky itself
+  if (depth >= 1.0) {
+    // The depth is one sample's (the multisampled resolve keeps sample 0): a pixel on
+    // a silhouette may read as sky yet hold surface in its other samples. Haze it as
+    // its nearest neighbour; the sky itself, a blend towards its own colour, keeps it.
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        depth = min(depth, texelFetch(sampler2D(SceneDepth, DepthSampler), clamp(p + ivec2(dx, dy), ivec2(0), haze.size - 1), 0).r);
+    if (depth >= 1.0) return;  // the sky itself
+  }
   float n = haze.range.x, f = haze.range.y;
   float metres = n * f / (f - depth * (f - n));
   float amount = max(1.0 - exp(-metres / haze.range.z), smoothstep(haze.range.w, f, metres));

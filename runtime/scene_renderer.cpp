@@ -7,6 +7,7 @@
 #include "compiler/material_input_files.hpp"
 #include "nodes/weather_noise.hpp"
 #include "runtime/descriptor_sets.hpp"
+#include "runtime/distance_haze_pass.hpp"
 #include "runtime/draw_order.hpp"
 #include "runtime/frame_recording.hpp"
 #include "runtime/frame_slices.hpp"
@@ -24,6 +25,12 @@ constexpr glm::vec3 kSunColor{3.2f, 3.05f, 2.8f};  // a clear midday sun against
 constexpr glm::vec3 kSkyColor{0.45f, 0.55f, 0.72f};
 constexpr float kAmbientIntensity = 0.8f;
 constexpr float kToneExposure = 1.f;
+// Where, as a fraction of the far plane, distance haze starts rising to all sky: the
+// ground ahead fades out over its last 65 %, so the horizon is soft, not a line.
+constexpr float kHazeHorizonFrom = 0.35f;
+
+// Lit frames of a scene with haze fade into the sky with distance; AOVs never do.
+bool drawsHaze(const scene::Scene& s, const RenderRequest& r) { return s.hazeDistance > 0.f && r.debugView == 0; }
 
 // Lit frames asked for precipitation draw it when something falls.
 bool drawsPrecipitation(const RenderRequest& r) {
@@ -292,12 +299,13 @@ VkRenderPass SceneRenderer::colourPassFor(const RenderRequest& r) const {
 // Later passes (request.afterColourPass) may write the colour in compute and sample the depth.
 void SceneRenderer::createTargets(Frame& frame) {
   const RenderRequest& r = frame.request;
-  VkImageUsageFlags later = r.afterColourPass ? VK_IMAGE_USAGE_STORAGE_BIT : 0;
+  const bool hazed = drawsHaze(scene_, r);
+  VkImageUsageFlags later = r.afterColourPass || hazed ? VK_IMAGE_USAGE_STORAGE_BIT : 0;
   frame.colour = vk::Image2D(ctx_, r.width, r.height, vk::kColourFormat,
                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | later);
   frame.depth = vk::Image2D(ctx_, r.width, r.height, vk::kDepthFormat,
                             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                (r.afterColourPass || drawsPrecipitation(r) ? VK_IMAGE_USAGE_SAMPLED_BIT : 0));
+                                (r.afterColourPass || hazed || drawsPrecipitation(r) ? VK_IMAGE_USAGE_SAMPLED_BIT : 0));
   if (multisampled(r)) {
     frame.multisampledColour = vk::Image2D(ctx_, r.width, r.height, vk::kColourFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 1,
                                            colourSamples_);
@@ -359,8 +367,20 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   timer_.stop(cmd);
   const ColourPassTargets targets{cmd, &frame.colour, &frame.depth, pass.viewProjection, pass.eye, frame.clip.nearPlane,
                                   frame.clip.farPlane};
+  // Haze first: falling flakes near the viewer are not as far away as the ground behind them.
+  if (drawsHaze(scene_, r)) recordHaze(targets);
   if (drawsPrecipitation(r)) recordPrecipitation(targets, r.weather);
   if (r.afterColourPass) r.afterColourPass(targets);
+}
+
+// Towards the sky's clear colour, so the ground meets the sky without a seam.
+void SceneRenderer::recordHaze(const ColourPassTargets& targets) {
+  if (!haze_) haze_ = std::make_unique<DistanceHazePass>(ctx_);
+  HazeSettings settings;
+  settings.colour = kSkyColor;
+  settings.distance = scene_.hazeDistance;
+  settings.horizonFrom = kHazeHorizonFrom;
+  haze_->record(targets, settings);
 }
 
 // Falling snow and rain over the lit colour, lit by the frame's sun and sky.

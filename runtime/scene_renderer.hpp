@@ -18,6 +18,7 @@
 
 namespace wg {
 
+class DistanceHazePass;
 class PrecipitationPass;
 
 // What work recorded after the colour pass sees (particles, post passes): the colour
@@ -126,6 +127,7 @@ class SceneRenderer {
   std::vector<std::size_t> drawOrder(const Frame& frame) const;
   std::vector<ObjectDraw> drawsOf(Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
   void recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
+  void recordHaze(const ColourPassTargets& targets);
   void recordPrecipitation(const ColourPassTargets& targets, const WeatherState& weather);
   RenderedFrame readBack(Frame& frame);
 
@@ -147,6 +149,7 @@ class SceneRenderer {
   std::vector<float> exposureHeights_;
   glm::vec4 exposureRegion_{0.f};
   vk::GpuTimer timer_;  // the colour pass
+  std::unique_ptr<DistanceHazePass> haze_;            // made on the first frame that draws it
   std::unique_ptr<PrecipitationPass> precipitation_;  // made on the first frame that draws it
 };
 

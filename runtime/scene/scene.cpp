@@ -13,6 +13,7 @@
 #include "nodes/lattice_noise.hpp"
 #include "nodes/weather_model.hpp"
 #include "nodes/weather_noise.hpp"
+#include "runtime/scene/horizon_apron.hpp"
 #include "runtime/scene/probe_visibility.hpp"
 #include "runtime/scene/shapes.hpp"
 
@@ -25,6 +26,12 @@ constexpr glm::vec3 kUp{0.f, 1.f, 0.f};
 // Terrain: 128^2 cells (32k triangles) keeps a scene well inside lavapipe's budget.
 constexpr int kTerrainResolution = 128;
 constexpr float kTerrainUvTiling = 8.f;  // metres per terrain uv unit
+// Beyond the terrain, rolling hills out to the horizon; haze thins them into the sky.
+// A clear winter day: the haze reaches 1 - 1/e at 1.5 km (Koschmieder: about 6 km
+// visibility), so a subject 150 m away keeps 90 % of its contrast.
+constexpr float kHorizonHillWavelength = 300.f;
+constexpr float kHorizonHillHeight = 12.f;
+constexpr float kHazeDistance = 1500.f;
 
 // Rivers: a flat-bottomed channel cut below the bank, the water a little below the bank
 // top, and the water strip reaching under the bank top on both sides so its v = 0 and
@@ -276,6 +283,7 @@ class SceneBuilder {
   SceneBuilder(std::string name, glm::vec3 towardsSun) {
     scene_.name = std::move(name);
     scene_.towardsSun = glm::normalize(towardsSun);
+    scene_.hazeDistance = kHazeDistance;
   }
 
   const SceneObject& add(std::string name, std::string graph, Mesh mesh, glm::mat4 model = glm::mat4(1.f),
@@ -292,6 +300,10 @@ class SceneBuilder {
     Mesh ground = heightFieldTerrain(size, kTerrainResolution, height, kTerrainUvTiling);
     terrainSize_ = size;
     const int n = kTerrainResolution + 1;
+    HorizonApronSettings apron;
+    apron.uvTiling = kTerrainUvTiling;
+    horizon_ = horizonApron(ground, n, [](float x, float z) { return hills(x, z, kHorizonHillWavelength, kHorizonHillHeight); },
+                            apron);
     const float cell = size / kTerrainResolution;
     float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
     for (glm::vec3 p : ground.positions) {
@@ -438,6 +450,13 @@ class SceneBuilder {
     scene_.boundsMin = all.min;
     scene_.boundsMax = all.max;
     markProbeVisibility(scene_, world_);
+    // After the bounds and the probes' sight lines: the apron lies outside the one and
+    // never between a camera and a probe.
+    if (!horizon_.positions.empty()) {
+      SceneObject apron{"horizon", "terrain", std::move(horizon_), glm::mat4(1.f), false, false};
+      apron.horizon = true;
+      scene_.objects.push_back(std::move(apron));
+    }
     return std::move(scene_);
   }
 
@@ -446,6 +465,7 @@ class SceneBuilder {
 
   Scene scene_;
   float terrainSize_ = 0.f;
+  Mesh horizon_;  // the terrain's apron, added last
   std::vector<Mesh> world_;  // each object's mesh in world space
 };
 

@@ -23,6 +23,9 @@ struct SceneObject {
   glm::mat4 model{1.f};
   bool castsShadow = true;
   bool occludesSky = true;  // drawn into the sky-exposure (occluder height) map
+  // Ground out to the horizon (horizon_apron.hpp): outside boundsMin/Max, which the
+  // shadow and sky-exposure maps cover, so it neither casts shadows nor shelters.
+  bool horizon = false;
 };
 
 struct CameraPreset {
@@ -65,6 +68,9 @@ struct Scene {
   float terrainHeightScale = 1.f;   // metres per unit
   float terrainHeightOffset = 0.f;  // world y of height 0 (the terrain's lowest point)
   std::vector<Probe> probes;
+  // Distance haze (runtime/distance_haze_pass.hpp) on lit frames: metres over which
+  // surfaces fade 1 - 1/e of the way to the sky. 0: none.
+  float hazeDistance = 0.f;
 
   const SceneObject* find(std::string_view objectName) const;
   const CameraPreset* camera(std::string_view cameraName) const;

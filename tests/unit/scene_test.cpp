@@ -468,6 +468,7 @@ TEST_P(EachScene, SunBoundsAndCameras) {
   EXPECT_NEAR(glm::length(s.towardsSun), 1.f, 1e-5f);
   EXPECT_GT(s.towardsSun.y, 0.2f);
   for (const auto& o : s.objects) {
+    if (o.horizon) continue;  // the apron reaches past the bounds on purpose
     Bounds b = bounds(o.mesh, o.model);
     EXPECT_TRUE(glm::all(glm::greaterThanEqual(b.min, s.boundsMin)) && glm::all(glm::lessThanEqual(b.max, s.boundsMax)))
         << o.name;
@@ -491,6 +492,37 @@ TEST_P(EachScene, SunBoundsAndCameras) {
     }
   }
   EXPECT_EQ(names, kCameras.at(s.name));
+}
+
+// The ground runs on to the horizon: an apron of terrain round the height field that
+// shares its border vertices (no crack), reaches past the far plane of any view the CLI
+// allows (an orbit up to 500 m from the centre sees up to about 920 m: pass_cameras.cpp),
+// stays out of the shadow and sky-exposure maps, and the scene fades it into the sky
+// with distance haze.
+TEST_P(EachScene, GroundRunsOnToTheHorizon) {
+  const Scene& s = scene();
+  EXPECT_GT(s.hazeDistance, 0.f);
+  const SceneObject* apron = s.find("horizon");
+  ASSERT_NE(apron, nullptr);
+  EXPECT_TRUE(apron->horizon);
+  EXPECT_EQ(apron->graph, "terrain");
+  EXPECT_FALSE(apron->castsShadow);
+  EXPECT_FALSE(apron->occludesSky);
+  Bounds reach = bounds(worldMesh(*apron));
+  EXPECT_GE(std::min(-reach.min.x, reach.max.x), 1450.f);
+  EXPECT_GE(std::min(-reach.min.z, reach.max.z), 1450.f);
+  std::set<std::tuple<float, float, float>> apronVertices;
+  for (glm::vec3 p : worldMesh(*apron).positions) apronVertices.insert({p.x, p.y, p.z});
+  Mesh ground = worldMesh(*s.find("terrain"));
+  Bounds field = bounds(ground);
+  std::size_t border = 0;
+  for (glm::vec3 p : ground.positions) {
+    bool onBorder = p.x == field.min.x || p.x == field.max.x || p.z == field.min.z || p.z == field.max.z;
+    if (!onBorder) continue;
+    ++border;
+    EXPECT_TRUE(apronVertices.count({p.x, p.y, p.z})) << "terrain border vertex " << p.x << ", " << p.y << ", " << p.z;
+  }
+  EXPECT_GE(border, 4u * 128u);
 }
 
 TEST_P(EachScene, TerrainHeightMapMatchesTheTerrainMesh) {
