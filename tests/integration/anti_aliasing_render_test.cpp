@@ -61,7 +61,9 @@ TEST(AntiAliasing, LitFramesAreCloseToTheSupersampledView) {
 
 // render --samples 1 and bench-render --samples 1 (the MSAA cost): a renderer asked for
 // one sample draws without multisampling, and its lit frame is further from the
-// supersampled view than the 4x frame.
+// supersampled view than the 4x frame. The rocks are drawn alone, against the sky: the
+// front view is ground from edge to edge (it runs on to the horizon), where texture
+// filtering, not multisampling, sets the figure.
 TEST(AntiAliasing, OneSampleDrawsWithoutMultisampling) {
   REQUIRE_VULKAN();
   SceneRenderer& fourSamples = sceneRenderer("rocks");
@@ -70,6 +72,7 @@ TEST(AntiAliasing, OneSampleDrawsWithoutMultisampling) {
   EXPECT_EQ(oneSample.colourSamples(), 1u);
   RenderRequest request;
   request.weather = weatherFor(fourSamples.scene());
+  request.onlyObject = "rock-4";  // the middle boulder
   request.width = 640;
   request.height = 360;
   const RenderedFrame large = fourSamples.render(request);
