@@ -8,6 +8,11 @@
 
 namespace wg::scene {
 
+// The distance haze (Scene::hazeDistance) of the scenes and stages with an apron: a
+// clear winter day, 1 - 1/e at 1.5 km (Koschmieder: about 6 km visibility), so a
+// subject 150 m away keeps 90 % of its contrast.
+inline constexpr float kHorizonHazeDistance = 1500.f;
+
 struct HorizonApronSettings {
   float reach = 1500.f;  // metres from the centre: past the far plane of any view the CLI allows
   int rings = 14;        // bands from the field's edge out to `reach`, each wider by the same factor

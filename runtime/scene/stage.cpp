@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "runtime/scene/horizon_apron.hpp"
 #include "runtime/scene/orbit_camera.hpp"
 #include "runtime/scene/shapes.hpp"
 
@@ -15,6 +16,9 @@ namespace {
 // Ground grid: flat, so a few cells suffice; uv tiling as the bundled terrains.
 constexpr int kGroundCells = 32;
 constexpr float kGroundUvTiling = 8.f;
+// The apron's reach in ground half-widths, at least: a framed camera stands about one
+// ground width off, and sees 1.5 times its reach over the bounds.
+constexpr float kStageHorizonReach = 12.f;
 // Camera heights above the subject's centre (degrees) and the close-up's offset.
 constexpr float kFrontElevation = 20.f;
 constexpr float kSideElevation = 25.f;
@@ -35,6 +39,18 @@ SceneObject groundUnder(const Bounds& subject, float height, const std::string& 
   glm::vec3 centre(0.5f * (subject.min.x + subject.max.x), height, 0.5f * (subject.min.z + subject.max.z));
   Mesh mesh = heightFieldTerrain(size, kGroundCells, [](float, float) { return 0.f; }, kGroundUvTiling);
   return {"ground", graph, std::move(mesh), glm::translate(glm::mat4(1.f), centre), false, true};
+}
+
+// The flat ground runs on, level, to the horizon: past the far plane of any framed or
+// orbit view (pass_cameras.cpp: 1.5 times the camera's reach over the bounds).
+SceneObject horizonAround(const SceneObject& ground) {
+  HorizonApronSettings settings;
+  settings.uvTiling = kGroundUvTiling;
+  settings.reach = std::max(settings.reach, kStageHorizonReach * std::abs(ground.mesh.positions.front().x));
+  Mesh apron = horizonApron(ground.mesh, kGroundCells + 1, [](float, float) { return 0.f; }, settings);
+  SceneObject o{"horizon", ground.graph, std::move(apron), ground.model, false, false};
+  o.horizon = true;
+  return o;
 }
 
 // The objects' world-space vertices above the ground: what the cameras must show.
@@ -75,6 +91,8 @@ Scene stageAround(std::string name, std::vector<SceneObject> objects, const Stag
   scene.boundsMin = all.min;
   scene.boundsMax = all.max;
   scene.subject = subject;
+  scene.objects.push_back(horizonAround(scene.objects.back()));  // outside the bounds
+  scene.hazeDistance = kHorizonHazeDistance;
   return scene;
 }
 

@@ -25,10 +25,11 @@ struct StageOptions {
 //   by their model matrices, flags kept), then "ground": a flat square of
 //   options.groundGraph at the ground height, centred under the objects and wide enough
 //   (kStageGroundScale times the objects' width) for shadows and wide shots; it casts
-//   no shadow and does occlude the sky.
+//   no shadow and does occlude the sky; then "horizon": its apron out to the horizon
+//   (horizon_apron.hpp), flat, outside the bounds, with distance haze (hazeDistance).
 // - subject: the objects' world bounds above the ground. Cameras frame it and
 //   `--camera orbit:` turns round its centre.
-// - boundsMin/boundsMax: every object, the ground included.
+// - boundsMin/boundsMax: every object, the ground included, the horizon not.
 // - towardsSun: options.towardsSun, normalised.
 // - cameras, in this order, all looking at the subject's centre from a distance that
 //   fits every vertex above the ground into a 16:9 frame (framingDistance,
@@ -37,7 +38,7 @@ struct StageOptions {
 //   (the opposite side) and "close-up" (in front, a little to the right, at 0.6 of
 //   the distance).
 // - no terrain height map (the ground is flat; eq. 3.12 sees no slope) and no probes.
-// Object names must be distinct and not "ground". Throws std::invalid_argument when
+// Object names must be distinct and neither "ground" nor "horizon". Throws std::invalid_argument when
 // `objects` holds no vertex.
 inline constexpr float kStageGroundScale = 4.f;
 Scene stageAround(std::string name, std::vector<SceneObject> objects, const StageOptions& options = {});

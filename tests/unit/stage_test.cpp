@@ -33,7 +33,7 @@ std::vector<SceneObject> twoBoxes() {
 
 TEST(Stage, AddsTheGroundUnderTheObjects) {
   Scene s = stageAround("pair", twoBoxes());
-  ASSERT_EQ(s.objects.size(), 3u);
+  ASSERT_EQ(s.objects.size(), 4u);
   EXPECT_EQ(s.objects[0].name, "a");
   EXPECT_EQ(s.objects[1].name, "b");
   const SceneObject& ground = s.objects[2];
@@ -54,6 +54,17 @@ TEST(Stage, AddsTheGroundUnderTheObjects) {
   EXPECT_NEAR(glm::length(s.towardsSun), 1.f, 1e-5f);
   EXPECT_TRUE(s.probes.empty());
   EXPECT_TRUE(s.terrainHeights.empty());
+  // Then the level apron out to the horizon, past any far plane, with haze to hide its end.
+  const SceneObject& horizon = s.objects[3];
+  EXPECT_EQ(horizon.name, "horizon");
+  EXPECT_TRUE(horizon.horizon);
+  EXPECT_EQ(horizon.graph, "terrain");
+  Bounds h = bounds(horizon.mesh, horizon.model);
+  EXPECT_NEAR(h.min.y, 0.f, 1e-6f);
+  EXPECT_NEAR(h.max.y, 0.f, 1e-6f);
+  EXPECT_LT(h.min.x, -1400.f);
+  EXPECT_GT(h.max.z, 1400.f);
+  EXPECT_GT(s.hazeDistance, 0.f);
 }
 
 TEST(Stage, HonoursTheGroundHeightSunAndGraph) {
@@ -62,9 +73,12 @@ TEST(Stage, HonoursTheGroundHeightSunAndGraph) {
   options.groundGraph = "my/ground.json";
   options.towardsSun = {0.f, 2.f, 0.f};
   Scene s = stageAround("pair", twoBoxes(), options);
-  Bounds g = bounds(s.objects.back().mesh, s.objects.back().model);
+  const SceneObject* ground = s.find("ground");
+  ASSERT_TRUE(ground);
+  Bounds g = bounds(ground->mesh, ground->model);
   EXPECT_NEAR(g.min.y, 0.5f, 1e-6f);
-  EXPECT_EQ(s.objects.back().graph, "my/ground.json");
+  EXPECT_EQ(ground->graph, "my/ground.json");
+  EXPECT_EQ(s.find("horizon")->graph, "my/ground.json");
   EXPECT_NEAR(s.subject->min.y, 0.5f, 1e-6f);  // cut off at the ground
   EXPECT_LT(glm::distance(s.towardsSun, glm::vec3(0.f, 1.f, 0.f)), 1e-6f);
 }
@@ -84,7 +98,7 @@ TEST(Stage, FourCamerasFrameEveryObjectVertex) {
     EXPECT_LT(glm::distance(c.target, centre), 1e-5f) << c.name;
     if (c.name == "close-up") continue;  // closer on purpose
     float widest = 0.f;
-    for (std::size_t i = 0; i + 1 < s.objects.size(); ++i)
+    for (std::size_t i = 0; i + 2 < s.objects.size(); ++i)  // not the ground and its apron
       for (glm::vec3 p : transformed(s.objects[i].mesh, s.objects[i].model).positions) {
         glm::vec3 d = ndc(c, p);
         ASSERT_LE(std::abs(d.x), 1.f) << c.name;
