@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "runtime/scene/horizon_apron.hpp"
 #include "runtime/scene/shapes.hpp"
 
 namespace wg::snow {
@@ -17,10 +18,10 @@ namespace {
 constexpr float kGroundClearance = 0.05f;
 constexpr float kGroundSize = 160.f;   // metres: the camera's whole trip and the shadow map's reach
 constexpr int kGroundCells = 80;       // 2 m: the hills' height map, texel centres on the vertices
-// Beyond the ground a flat ring reaches past the far plane; distance haze blends it into
-// the sky, so no frame shows the world's edge.
-constexpr float kHorizonReach = 3000.f;
-constexpr float kHorizonUvTile = 20.f;  // m: the ground's texture tiling (8 tiles over 160 m)
+// Beyond the ground a level apron reaches past the far plane (horizon_apron.hpp); the
+// renderer's distance haze blends it into the sky, so no frame shows the world's edge.
+// A hazy winter day: 1 - 1/e at 800 m, about 3 km visibility (Koschmieder: 3.9 x).
+constexpr float kHazeDistance = 800.f;
 // Hills: round bumps (height m, centre, radius m) on a plain at y = 0. The walkers
 // cross a low rise; the camera's trip passes larger ones.
 struct Hill {
@@ -51,25 +52,6 @@ std::string fixed(double x, int decimals) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
   return buf;
-}
-
-// The flat ring from the ground's edge out to kHorizonReach, a little under the ground.
-scene::Mesh horizonRing() {
-  scene::Mesh m;
-  const float in = 0.5f * kGroundSize, out = kHorizonReach, y = -kGroundClearance - 0.01f;
-  const glm::vec2 corners[4] = {{-1.f, -1.f}, {1.f, -1.f}, {1.f, 1.f}, {-1.f, 1.f}};
-  std::uint32_t inner[4], outer[4];
-  for (int i = 0; i < 4; ++i) {
-    for (auto [index, reach] : {std::pair{inner + i, in}, std::pair{outer + i, out}}) {
-      glm::vec3 p(corners[i].x * reach, y, corners[i].y * reach);
-      *index = scene::addVertex(m, p, {0.f, 1.f, 0.f}, glm::vec2(p.x, p.z) / kHorizonUvTile);
-    }
-  }
-  for (int i = 0; i < 4; ++i) {
-    int j = (i + 1) % 4;
-    scene::addQuadFacing(m, inner[i], outer[i], outer[j], inner[j], {0.f, 1.f, 0.f});
-  }
-  return m;
 }
 
 // The terrain height map the snow layer samples (snow_ground): heights over the
@@ -138,10 +120,10 @@ scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings) {
     o.occludesSky = occludesSky;
     s.objects.push_back(std::move(o));
   };
-  add("ground", "snowfield",
-      scene::heightFieldTerrain(kGroundSize, kGroundCells,
-                                [](float x, float z) { return snowfieldGround(x, z) - kGroundClearance; }),
-      true);
+  scene::Mesh ground = scene::heightFieldTerrain(kGroundSize, kGroundCells,
+                                                 [](float x, float z) { return snowfieldGround(x, z) - kGroundClearance; });
+  scene::Mesh horizon = scene::horizonApron(ground, kGroundCells + 1, [](float, float) { return 0.f; });
+  add("ground", "snowfield", std::move(ground), true);
   addTerrainMap(s);
   auto rock = [](std::uint32_t seed, float radius, float x, float sink, float z) {
     return scene::transformed(scene::rock(seed, radius),
@@ -160,10 +142,13 @@ scene::Scene makeSnowfieldScene(const SnowfieldSettings& settings) {
   // alpha-tested layer would run its whole material over the shadow map.
   s.objects.back().castsShadow = false;
   s.cameras.push_back(followCamera({kStart.x, snowfieldGround(kStart.x, kStart.z) + kEyeHeight, kStart.z}));
-  // The horizon ring stays out of the bounds, which the shadow and sky-exposure maps cover.
+  // The apron stays out of the bounds, which the shadow and sky-exposure maps cover.
   scene::Bounds all;
   for (const auto& o : s.objects) all.include(scene::bounds(o.mesh));
-  add("horizon", "snowfield", horizonRing(), false);
+  add("horizon", "snowfield", std::move(horizon), false);
+  s.objects.back().castsShadow = false;
+  s.objects.back().horizon = true;
+  s.hazeDistance = kHazeDistance;
   // The layer moves with the camera: its reach over the whole trip.
   all.include(glm::vec3(kTripLength + 0.5f * settings.grid.extent(), 1.f, 0.f));
   s.boundsMin = all.min;
@@ -178,7 +163,6 @@ SnowfieldAnimation::SnowfieldAnimation(vk::Context& ctx, const SnowfieldSettings
       walkers_(scriptedWalkers()),
       vehicle_(scriptedVehicle()),
       puffs_(ctx, litPuffs()),
-      haze_(ctx),
       bloom_(ctx) {}
 
 // The first moment is just after a footfall (walker 0 steps at 2.68 s), so a puff hangs.
@@ -224,7 +208,6 @@ void SnowfieldAnimation::step(double t0, double t1) {
 
 std::function<void(const ColourPassTargets&)> SnowfieldAnimation::postPasses() {
   return [this](const ColourPassTargets& t) {
-    haze_.record(t);
     puffs_.record(t);
     bloom_.record(t.cmd, *t.colour);
   };

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "runtime/bloom_pass.hpp"
-#include "runtime/distance_haze_pass.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/snow/gpu_deformation_map.hpp"
 #include "runtime/snow/snow_interactors.hpp"
@@ -57,8 +56,9 @@ class SnowfieldAnimation {
   SnowfieldMoment advanceTo(double seconds);
   // What the snow layer samples as snowDeformation (kept current by the map's passes).
   const vk::Image2D& deformationImage() const { return map_.surfaceImage(); }
-  // Distance haze, snow puffs and bloom, to record after the colour pass
-  // (RenderRequest::afterColourPass).
+  // Snow puffs and bloom, to record after the colour pass
+  // (RenderRequest::afterColourPass); the renderer hazes the frame before them
+  // (Scene::hazeDistance).
   std::function<void(const ColourPassTargets&)> postPasses();
   const SnowPuffs& puffs() const { return puffs_; }
   GpuDeformationMap& map() { return map_; }
@@ -76,7 +76,6 @@ class SnowfieldAnimation {
   std::vector<Walker> walkers_;
   Vehicle vehicle_;
   SnowPuffs puffs_;
-  DistanceHazePass haze_;
   BloomPass bloom_;
   double time_ = 0.0;
   std::size_t stamps_ = 0;
