@@ -43,7 +43,7 @@ struct WindowSettings {
   // A frame's snow work, in shader invocations (DeformationRecorder::recordFrame):
   // stamps beyond it wait, oldest first, and refill and the normals of entered tiles
   // take what is left, so a frame where many feet land or the window moves costs
-  // about what any other does. 8192 is ~0.35 ms on lavapipe, microseconds on a GPU,
+  // about what any other does. 8192 is ~0.45 ms on lavapipe, microseconds on a GPU,
   // and keeps up with 17 walkers and a vehicle in heavy snowfall.
   std::uint32_t workPerFrame = 8192;
 };
