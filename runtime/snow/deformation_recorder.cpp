@@ -209,8 +209,8 @@ void DeformationRecorder::recordFrame(VkCommandBuffer cmd, const FrameWork& work
   auto left = [&] { return budget - std::min(budget, pass_.invocations() - start); };
   recordFollow(cmd, work.camera);
   const int n = window_.tileTexels();
-  const std::uint64_t refillTile = pass_.invocationsOf(DeformationPass::Stage::Refill, glm::ivec2(n), 1) +
-                                   pass_.invocationsOf(DeformationPass::Stage::Normals, glm::ivec2(n + 2), 1);
+  const std::uint64_t normalTile = pass_.invocationsOf(DeformationPass::Stage::Normals, glm::ivec2(n + 2), 1);
+  const std::uint64_t refillTile = pass_.invocationsOf(DeformationPass::Stage::Refill, glm::ivec2(n), 1) + normalTile;
   // A tile owed refill keeps one tile's share from the stamps, so a scene that
   // stamps a whole budget every frame still fills its prints in.
   refill_.advance(work.refillMetresPerSecond, work.seconds);
@@ -221,7 +221,6 @@ void DeformationRecorder::recordFrame(VkCommandBuffer cmd, const FrameWork& work
   recordRefill(cmd, 0.0, 0.0,
                std::min<std::uint64_t>(window_.settings().refillTilesPerFrame,
                                        std::max<std::uint64_t>(left() / refillTile, reserved != 0)));
-  const std::uint64_t normalTile = pass_.invocationsOf(DeformationPass::Stage::Normals, glm::ivec2(n + 2), 1);
   recordDeferredNormals(cmd, left() / normalTile);
 }
 

@@ -89,7 +89,6 @@ Recentring recentre(SnowWindow& window, MapTexels texels, glm::vec2 camera, Prin
   window.setOrigin(target);
   forEachTile(after, n, [&](glm::ivec2 tile) {
     if (before.contains(tile * n)) return;
-    out.enteredRects.push_back(TexelRect{tile * n, glm::ivec2(n)}.grown(1).intersect(window.rect()));
     if (!restoreTile(window, texels, tile, store, schedule, refillQuanta)) return;
     ++out.restored;
     out.restoredRects.push_back(TexelRect{tile * n, glm::ivec2(n)}.grown(1).intersect(window.rect()));

@@ -20,9 +20,6 @@ struct Recentring {
   std::size_t evicted = 0, stored = 0, restored = 0;
   // Restored tiles, grown by one texel: their normals were regenerated on the CPU.
   std::vector<TexelRect> restoredRects;
-  // Every tile that entered (restored or fresh), grown by one texel and clipped: what
-  // a GPU copy of the map derived from the texels (its surface image) must redo.
-  std::vector<TexelRect> enteredRects;
   double gpuMilliseconds = 0.0;  // what redoing them took on a GPU map
   bool moved() const { return evicted != 0; }
 };
