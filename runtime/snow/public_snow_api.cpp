@@ -4,6 +4,7 @@
 #include <weathergen/snow.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <exception>
 #include <vector>
@@ -17,17 +18,9 @@ namespace weathergen::snow {
 namespace {
 static_assert(sizeof(Capsule) == sizeof(wg::snow::Stamp), "Capsule mirrors the runtime's Stamp");
 
-wg::snow::Stamp toStamp(const Capsule& c) {
-  wg::snow::Stamp s;
-  std::memcpy(&s, &c, sizeof s);
-  return s;
-}
-
-Capsule toCapsule(const wg::snow::Stamp& s) {
-  Capsule c;
-  std::memcpy(&c, &s, sizeof c);
-  return c;
-}
+// Both are trivially copyable with the same layout: bit_cast checks it at compile time.
+wg::snow::Stamp toStamp(const Capsule& c) { return std::bit_cast<wg::snow::Stamp>(c); }
+Capsule toCapsule(const wg::snow::Stamp& s) { return std::bit_cast<Capsule>(s); }
 
 wg::snow::MeshInteractor toInteractor(const Mesh& m) {
   wg::snow::MeshInteractor i;
