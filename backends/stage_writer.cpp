@@ -1,6 +1,7 @@
 #include "backends/stage_writer.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <functional>
 #include <stdexcept>
 
@@ -11,15 +12,6 @@
 namespace wg {
 
 namespace {
-
-// Fixed local names of the stage frames; reserved so no node temporary takes them.
-constexpr std::string_view kFrameLocals[] = {
-    "wg_worldPosition", "wg_worldNormal", "wg_worldTangent", "wg_tangentAxis", "wg_texcoord", "wg_texcoord1", "wg_vertexColor",
-    "wg_baseColor", "wg_metallic", "wg_roughness", "wg_specular", "wg_normal", "wg_occlusion", "wg_emissive",
-    "wg_bitangent", "wg_N", "wg_V", "wg_color", "wg_alpha", "wg_opacity", "wg_offset",
-    "wg_coverage_snow", "wg_coverage_wet", "wg_coverage_moss", "wg_coverage_frost", "wg_coverage_ice",
-    "wg_coverage_puddle", "wg_coverage_density", "wg_in", "wg_out", "wg_frontFacing", "wg_clipPosition", "out_color",
-    "main", "VSInput", "VSOutput", "PSInput"};
 
 // A typical emitted statement's length, to size the body once.
 constexpr std::size_t kBytesPerStatement = 96;
@@ -64,7 +56,7 @@ class StageWriter {
   DebugView debugView(const IrDebugView& view) const {
     switch (view.source) {
       case DebugSource::Slot:
-        if (slotType(view.slot) == ValueType::Vec3) return {view.id, view.name, slotLocal(view.slot), ""};
+        if (slotType(view.slot) == ValueType::Vec3) return {view.id, view.name, std::string(slotLocal(view.slot)), ""};
         return {view.id, view.name, syntax_.splat(ValueType::Vec3, slotLocal(view.slot)), ""};
       case DebugSource::ShadingNormal: return {view.id, view.name, "(wg_N * 0.5 + 0.5)", ""};
       case DebugSource::WorldPosition: return {view.id, view.name, "wg_worldPosition", ""};
@@ -76,17 +68,15 @@ class StageWriter {
     throw std::logic_error("unhandled debug source");
   }
 
-  static std::string coverageLocal(CoverageTerm term) {
-    return "wg_coverage_" + std::string(coverageTerms()[static_cast<std::size_t>(term)].name);
-  }
-
   // The local each output slot lands in; the stage frames read these names.
-  static std::string slotLocal(std::size_t slot) {
-    static constexpr std::string_view kFieldLocals[kPbrFieldCount] = {
-        "wg_baseColor", "wg_metallic", "wg_roughness", "wg_specular", "wg_normal",
-        "wg_occlusion", "wg_emissive", "wg_opacity", "wg_offset"};
-    if (slot < kPbrFieldCount) return std::string(kFieldLocals[slot]);
-    return coverageLocal(static_cast<CoverageTerm>(slot - kPbrFieldCount));
+  static std::string_view slotLocal(std::size_t slot) {
+    static const std::vector<std::string> kSlotLocals = [] {
+      std::vector<std::string> locals = {"wg_baseColor", "wg_metallic", "wg_roughness", "wg_specular", "wg_normal",
+                                         "wg_occlusion", "wg_emissive", "wg_opacity",  "wg_offset"};
+      for (const auto& term : coverageTerms()) locals.push_back("wg_coverage_" + std::string(term.name));
+      return locals;
+    }();
+    return kSlotLocals[slot];
   }
   static ValueType slotType(std::size_t slot) {
     return slot < kPbrFieldCount ? pbrFields()[slot].type : ValueType::Float;
@@ -103,7 +93,11 @@ class StageWriter {
       const Operand& base = graph_.weatherGuarded() ? graph_.unweathered[slot] : graph_.outputs[slot];
       body += "  ";
       body += syntax_.typeName(slotType(slot));
-      body += " " + slotLocal(slot) + " = " + operandExpression(base, slotType(slot)) + ";\n";
+      body += ' ';
+      body += slotLocal(slot);
+      body += " = ";
+      appendOperand(body, base, slotType(slot));
+      body += ";\n";
     }
     bool anyGuarded = false;
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i) anyGuarded = anyGuarded || (needed_[i] && graph_.nodes[i].weather);
@@ -118,7 +112,13 @@ class StageWriter {
       if (needed_[i] && graph_.nodes[i].weather) emitNode(i, body, "    ");
     for (std::size_t slot : slots)
       if (!(graph_.outputs[slot] == graph_.unweathered[slot]))
-        body += "    " + slotLocal(slot) + " = " + operandExpression(graph_.outputs[slot], slotType(slot)) + ";\n";
+      {
+        body += "    ";
+        body += slotLocal(slot);
+        body += " = ";
+        appendOperand(body, graph_.outputs[slot], slotType(slot));
+        body += ";\n";
+      }
     body += "  }\n";
   }
 
@@ -153,43 +153,46 @@ class StageWriter {
     if (stage_ == ShaderStage::Fragment) add(&kPbrShadingLibrary);
   }
 
-  std::string operandExpression(const Operand& operand, ValueType portType) const {
+  // Appends the operand's expression: the common cases write straight into out.
+  void appendOperand(std::string& out, const Operand& operand, ValueType portType) const {
     switch (operand.kind) {
-      case Operand::Kind::Constant: return syntax_.constant(operand.constant.convertedTo(portType));
-      case Operand::Kind::Texture: return mi_.textures[static_cast<std::size_t>(operand.texture)].textureIdentifier;
+      case Operand::Kind::Constant: out += syntax_.constant(operand.constant.convertedTo(portType)); return;
+      case Operand::Kind::Texture: out += mi_.textures[static_cast<std::size_t>(operand.texture)].textureIdentifier; return;
       case Operand::Kind::Node: break;
     }
     const IrNode& source = graph_.nodes[operand.node];
-    std::string expr = names_[operand.node] + std::string(source.op->outputs[operand.output].accessor);
-    if (operand.type == ValueType::Float && portType != ValueType::Float && portType != ValueType::Bool)
-      return syntax_.splat(portType, expr);
-    return expr;
+    std::string_view accessor = source.op->outputs[operand.output].accessor;
+    if (operand.type == ValueType::Float && portType != ValueType::Float && portType != ValueType::Bool) {
+      out += syntax_.splat(portType, names_[operand.node] + std::string(accessor));
+      return;
+    }
+    out += names_[operand.node];
+    out += accessor;
   }
-
-  std::string symbol(std::string_view name, const IrNode& node) const {
-    if (name == "texcoord") return "wg_texcoord";
-    if (name == "texcoord1") return "wg_texcoord1";
-    if (name == "worldPosition") return "wg_worldPosition";
-    if (name == "worldNormal") return "wg_worldNormal";
-    if (name == "worldTangent") return "wg_worldTangent";
-    if (name == "vertexColor") return "wg_vertexColor";
-    if (name == "time") return "frame_time";
-    if (name == "channels") return "." + node.text;  // validated: 1-4 of xyzw/rgba
-    if (name == "sampleFn") return std::string(syntax_.sampleFunction(stage_));
-    if (name == "lodArg") return std::string(syntax_.lodArgument(stage_));
-    if (name == "parameter") {
-      const BlockMember& member = mi_.material.members[static_cast<std::size_t>(node.parameter)];
-      return syntax_.parameterRead(member, node.valueType);
-    }
-    if (name == "texture" || name == "sampler") {
-      for (const auto& o : node.inputs)
-        if (o.kind == Operand::Kind::Texture) {
-          const auto& b = mi_.textures[static_cast<std::size_t>(o.texture)];
-          return name == "texture" ? b.textureIdentifier : b.samplerIdentifier;
-        }
-    }
-    // Unreachable: the registry refuses templates naming other symbols (op_template_check).
-    throw std::logic_error("op " + std::string(node.op->name) + ": unknown template symbol @" + std::string(name));
+  void appendSymbol(std::string& out, std::string_view name, const IrNode& node) const {
+    if (name == "texcoord") out += "wg_texcoord";
+    else if (name == "texcoord1") out += "wg_texcoord1";
+    else if (name == "worldPosition") out += "wg_worldPosition";
+    else if (name == "worldNormal") out += "wg_worldNormal";
+    else if (name == "worldTangent") out += "wg_worldTangent";
+    else if (name == "vertexColor") out += "wg_vertexColor";
+    else if (name == "time") out += "frame_time";
+    else if (name == "channels") (out += '.') += node.text;  // validated: 1-4 of xyzw/rgba
+    else if (name == "sampleFn") out += syntax_.sampleFunction(stage_);
+    else if (name == "lodArg") out += syntax_.lodArgument(stage_);
+    else if (name == "parameter")
+      out += syntax_.parameterRead(mi_.material.members[static_cast<std::size_t>(node.parameter)], node.valueType);
+    else if (name == "texture" || name == "sampler") out += textureSymbol(name, node);
+    else  // Unreachable: the registry refuses templates naming other symbols (op_template_check).
+      throw std::logic_error("op " + std::string(node.op->name) + ": unknown template symbol @" + std::string(name));
+  }
+  std::string_view textureSymbol(std::string_view name, const IrNode& node) const {
+    for (const auto& o : node.inputs)
+      if (o.kind == Operand::Kind::Texture) {
+        const auto& b = mi_.textures[static_cast<std::size_t>(o.texture)];
+        return name == "texture" ? b.textureIdentifier : b.samplerIdentifier;
+      }
+    throw std::logic_error("op " + std::string(node.op->name) + ": @" + std::string(name) + " without a texture input");
   }
 
   void emitNode(std::size_t index, std::string& body, std::string_view indent) {
@@ -211,10 +214,10 @@ class StageWriter {
       if (key == "T") {
         body += syntax_.typeName(node.valueType);
       } else if (key.starts_with('@')) {
-        body += symbol(key.substr(1), node);
+        appendSymbol(body, key.substr(1), node);
       } else {
         for (std::size_t p = 0; p < op.inputs.size(); ++p)
-          if (op.inputs[p].name == key) body += operandExpression(node.inputs[p], node.inputTypes[p]);
+          if (op.inputs[p].name == key) appendOperand(body, node.inputs[p], node.inputTypes[p]);
       }
     }
     body.append(code.substr(done));
@@ -231,14 +234,24 @@ class StageWriter {
 
 }  // namespace
 
-std::vector<std::string> nameNodes(const IrGraph& graph, const MaterialInterface& interface) {
-  IdentifierScope scope = interface.globals;
-  scope.expectMore(graph.nodes.size() + std::size(kFrameLocals));
-  for (auto name : kFrameLocals) scope.reserve(name);
+// "n<index>_<op>" is unique by its index and cannot meet another emitted name: globals
+// and frame locals carry other prefixes (mat_, tex_, frame_, wg_, in_, v_...), and op
+// names are clean identifiers (a unit test checks every registered op), so no
+// identifier scope is needed.
+std::vector<std::string> nameNodes(const IrGraph& graph, const MaterialInterface&) {
   std::vector<std::string> names;
   names.reserve(graph.nodes.size());
-  for (std::size_t i = 0; i < graph.nodes.size(); ++i)
-    names.push_back(scope.make("n" + std::to_string(i) + "_" + std::string(graph.nodes[i].op->name)));
+  char digits[24];
+  for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
+    auto end = std::to_chars(digits, digits + sizeof digits, i).ptr;
+    std::string_view op = graph.nodes[i].op->name;
+    std::string& name = names.emplace_back();
+    name.reserve(2 + static_cast<std::size_t>(end - digits) + op.size());
+    name += 'n';
+    name.append(digits, end);
+    name += '_';
+    name += op;
+  }
   return names;
 }
 

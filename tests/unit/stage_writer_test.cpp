@@ -5,8 +5,10 @@
 #include "backends/shader_syntax.hpp"
 #include "backends/stage_writer.hpp"
 #include "compiler/debug_views.hpp"
+#include "compiler/identifier.hpp"
 #include "compiler/pass_pipeline.hpp"
 #include "ir_fixture.hpp"
+#include "nodes/op_registry.hpp"
 
 namespace wg {
 namespace {
@@ -34,6 +36,19 @@ TEST(StageWriter, WeatherGuardComesFromTheIr) {
   std::string text = fragmentText(ir);
   EXPECT_NE(text.find("if (frame_snowLevel > 0.0) {"), std::string::npos);
   EXPECT_EQ(text.find("frame_wetnessLevel +"), std::string::npos);
+}
+
+// Node names are built without an identifier scope; this is what makes that safe.
+TEST(StageWriter, NodeNamesAreCleanAndMeetNoGlobal) {
+  for (const OpDef* op : allOps()) {
+    std::string name = "n99999_" + std::string(op->name);
+    EXPECT_EQ(IdentifierScope::sanitize(name), name);
+    EXPECT_LE(name.size(), IdentifierScope::kMaxLength);
+  }
+  IrGraph ir = weatheredRock();
+  MaterialInterface mi = buildMaterialInterface(ir);
+  IdentifierScope scope = mi.globals;
+  for (const std::string& name : nameNodes(ir, mi)) EXPECT_EQ(scope.make(name), name);
 }
 
 TEST(StageWriter, NoWeatherMeansNoGuard) {
