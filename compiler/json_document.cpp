@@ -263,33 +263,36 @@ std::string plainParseMessage(std::string what) {
   return what;
 }
 
-// nlohmann's own DOM builder, also hashing each object's keys: nlohmann keeps only the
-// last of two equal keys, silently. A hash match sends the text to the exact scanner,
-// which confirms and locates the duplicate, so a collision cannot cause a false error.
-class DuplicateAwareBuilder : public nlohmann::detail::json_sax_dom_parser<nlohmann::json> {
+// nlohmann's own DOM builder, also counting the keys it is given: nlohmann keeps only
+// the last of two equal keys, silently, so a document whose objects hold fewer members
+// than the keys read has a duplicate. Only then does the exact scanner run, to locate it.
+class CountingBuilder : public nlohmann::detail::json_sax_dom_parser<nlohmann::json> {
  public:
-  explicit DuplicateAwareBuilder(nlohmann::json& root) : json_sax_dom_parser(root, /*allow_exceptions=*/true) {}
-  bool start_object(std::size_t size) {
-    keys_.emplace_back();
-    return json_sax_dom_parser::start_object(size);
-  }
-  bool end_object() {
-    keys_.pop_back();
-    return json_sax_dom_parser::end_object();
-  }
+  explicit CountingBuilder(nlohmann::json& root) : json_sax_dom_parser(root, /*allow_exceptions=*/true) {}
   bool key(std::string& value) {
-    auto& keys = keys_.back();
-    std::size_t hash = std::hash<std::string>{}(value);
-    if (std::find(keys.begin(), keys.end(), hash) != keys.end()) duplicate_ = true;
-    else keys.push_back(hash);
+    ++keys_;
     return json_sax_dom_parser::key(value);
   }
-  bool sawDuplicateHash() const { return duplicate_; }
+  std::size_t keysRead() const { return keys_; }
 
  private:
-  std::vector<std::vector<std::size_t>> keys_;
-  bool duplicate_ = false;
+  std::size_t keys_ = 0;
 };
+
+// Members of every object in the document, walked with an explicit stack.
+std::size_t memberCount(const nlohmann::json& root) {
+  std::size_t members = 0;
+  std::vector<const nlohmann::json*> pending{&root};
+  while (!pending.empty()) {
+    const nlohmann::json* value = pending.back();
+    pending.pop_back();
+    if (value->is_object()) members += value->size();
+    if (value->is_structured())
+      for (const auto& child : *value)
+        if (child.is_structured()) pending.push_back(&child);
+  }
+  return members;
+}
 
 }  // namespace
 
@@ -372,7 +375,7 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
     return std::nullopt;
   }
   nlohmann::json root;
-  DuplicateAwareBuilder builder(root);
+  CountingBuilder builder(root);
   try {
     nlohmann::json::sax_parse(text, &builder);
   } catch (const nlohmann::json::parse_error& e) {
@@ -392,7 +395,7 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
     diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {plainParseMessage(e.what())});
     return std::nullopt;
   }
-  if (!builder.sawDuplicateHash()) return JsonDocument(std::move(file), std::move(text), std::move(root));
+  if (memberCount(root) == builder.keysRead()) return JsonDocument(std::move(file), std::move(text), std::move(root));
   bool duplicate = false;
   TextScanner scanner{text};
   scanner.scan([](const std::string&, int, int) {}, [](const std::string&, int, int) {},

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "compiler/identifier.hpp"
+
 namespace wg {
 
 std::string_view interfaceTypeName(InterfaceType type) {
@@ -59,19 +61,19 @@ bool MaterialInterface::hasTexcoord1() const {
 MaterialInterface buildMaterialInterface(const IrGraph& graph) {
   MaterialInterface mi;
   mi.frame = &frameBlock();
-  for (const auto& m : mi.frame->members) mi.globals.reserve(m.identifier);
-  mi.globals.reserve(mi.frame->identifier);
+  // Names made from the user's: their prefixes (mat_, tex_, smp_) keep them apart from
+  // every fixed global (frame_, wg_, in_, v_, the blocks), so only they need a scope.
+  IdentifierScope userNames;
 
   mi.material.name = "Material";
   mi.material.identifier = "MaterialBlock";
-  mi.globals.reserve(mi.material.identifier);
   mi.material.set = 1;
   mi.material.binding = 0;
   // Parameters are sorted by name, so identifiers and offsets are deterministic.
   for (std::size_t i = 0; i < graph.parameters.size(); ++i) {
     const auto& p = graph.parameters[i];
     mi.material.members.push_back(
-        {p.name, mi.globals.make("mat_" + p.name), interfaceTypeOf(p.type), 0, 0, static_cast<int>(i)});
+        {p.name, userNames.make("mat_" + p.name), interfaceTypeOf(p.type), 0, 0, static_cast<int>(i)});
   }
   layoutStd140(mi.material);
 
@@ -81,8 +83,8 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
     TextureBinding b;
     b.texture = static_cast<int>(i);
     b.name = t.name;
-    b.textureIdentifier = mi.globals.make("tex_" + t.name);
-    b.samplerIdentifier = mi.globals.make("smp_" + t.name);
+    b.textureIdentifier = userNames.make("tex_" + t.name);
+    b.samplerIdentifier = userNames.make("smp_" + t.name);
     b.textureBinding = binding++;
     b.samplerBinding = binding++;
     mi.textures.push_back(std::move(b));
@@ -101,8 +103,6 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
       {"weatherNoise", "wg_weather_noise_map", "wg_weather_noise_sampler", 9},  // nodes/weather_noise.hpp
   }};
   for (const auto& map : kWeatherMaps) {
-    mi.globals.reserve(map.texture);
-    mi.globals.reserve(map.sampler);
     bool used = map.name == "sunShadow" || std::any_of(graph.nodes.begin(), graph.nodes.end(), [&](const IrNode& n) {
       return std::find(n.op->weatherMaps.begin(), n.op->weatherMaps.end(), map.name) != n.op->weatherMaps.end();
     });
@@ -121,7 +121,6 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
   for (std::uint32_t i = 0; i < kAttributes.size(); ++i) {
     auto [name, type] = kAttributes[i];
     mi.vertexInputs.push_back({std::string(name), "in_" + std::string(name), type, i});
-    mi.globals.reserve(mi.vertexInputs.back().identifier);
   }
   const std::array<std::pair<std::string_view, InterfaceType>, 5> kVaryings = {{
       {"worldPosition", InterfaceType::Vec3},
@@ -133,15 +132,12 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
   for (std::uint32_t i = 0; i < kVaryings.size(); ++i) {
     auto [name, type] = kVaryings[i];
     mi.varyings.push_back({std::string(name), "v_" + std::string(name), type, i});
-    mi.globals.reserve(mi.varyings.back().identifier);
   }
   // The second texture coordinate set only when a node reads it, so other materials
   // keep their vertex format.
   if (usesOp(graph, "texcoord1")) {
     mi.vertexInputs.push_back({"texcoord1", "in_texcoord1", InterfaceType::Vec2, static_cast<std::uint32_t>(kAttributes.size())});
     mi.varyings.push_back({"texcoord1", "v_texcoord1", InterfaceType::Vec2, static_cast<std::uint32_t>(kVaryings.size())});
-    mi.globals.reserve("in_texcoord1");
-    mi.globals.reserve("v_texcoord1");
   }
   return mi;
 }

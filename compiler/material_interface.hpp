@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "compiler/identifier.hpp"
 #include "compiler/ir.hpp"
 
 namespace wg {
@@ -57,7 +56,6 @@ struct MaterialInterface {
   std::vector<StageVariable> vertexInputs;  // "texcoord1" only when the graph reads it
   std::vector<StageVariable> varyings;
   bool hasTexcoord1() const;
-  IdentifierScope globals;  // every global name above; stages copy it for locals
 };
 
 // Lays out members with std140 rules (which glslang also applies to HLSL cbuffers).

@@ -2,6 +2,8 @@
 // knows syntax, not which uniforms gate the weather or what each view shows.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "backends/shader_syntax.hpp"
 #include "backends/stage_writer.hpp"
 #include "compiler/debug_views.hpp"
@@ -47,8 +49,18 @@ TEST(StageWriter, NodeNamesAreCleanAndMeetNoGlobal) {
   }
   IrGraph ir = weatheredRock();
   MaterialInterface mi = buildMaterialInterface(ir);
-  IdentifierScope scope = mi.globals;
-  for (const std::string& name : nameNodes(ir, mi)) EXPECT_EQ(scope.make(name), name);
+  std::set<std::string> globals = {mi.frame->identifier, mi.material.identifier};
+  for (const UniformBlock* block : {mi.frame, static_cast<const UniformBlock*>(&mi.material)})
+    for (const auto& member : block->members) globals.insert(member.identifier);
+  for (const auto* list : {&mi.textures, &mi.weatherMaps})
+    for (const auto& t : *list) globals.insert({t.textureIdentifier, t.samplerIdentifier});
+  for (const auto* list : {&mi.vertexInputs, &mi.varyings})
+    for (const auto& v : *list) globals.insert(v.identifier);
+  ASSERT_GT(globals.size(), 40u);
+  for (const std::string& name : nameNodes(ir, mi)) {
+    EXPECT_FALSE(globals.contains(name)) << name;
+    EXPECT_FALSE(name.starts_with("wg_")) << name;  // the frame locals' prefix
+  }
 }
 
 TEST(StageWriter, NoWeatherMeansNoGuard) {
