@@ -27,8 +27,8 @@ constexpr glm::vec3 kUp{0.f, 1.f, 0.f};
 constexpr int kTerrainResolution = 128;
 constexpr float kTerrainUvTiling = 8.f;  // metres per terrain uv unit
 // Beyond the terrain, rolling hills out to the horizon; haze thins them into the sky.
-// Gentle: lavapipe's anisotropic filtering under 4x MSAA slows tenfold over steep
-// far hills seen edge-on (40 m hills took a 160x90 frame from 0.8 s to 40 s).
+// Gentle: steep far hills seen edge-on made lavapipe's anisotropic filtering, which CPU
+// devices no longer use, slow tenfold (40 m hills took a 160x90 frame from 0.8 s to 40 s).
 constexpr float kHorizonHillWavelength = 300.f;
 constexpr float kHorizonHillHeight = 12.f;
 

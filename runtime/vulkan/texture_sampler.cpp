@@ -1,7 +1,5 @@
 #include "runtime/vulkan/texture_sampler.hpp"
 
-#include <algorithm>
-
 namespace wg::vk {
 
 namespace {
@@ -24,9 +22,9 @@ UniqueSampler createSampler(Context& ctx, std::string_view wrapU, std::string_vi
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
     info.maxLod = VK_LOD_CLAMP_NONE;
     const bool linear = info.minFilter == VK_FILTER_LINEAR && info.magFilter == VK_FILTER_LINEAR;
-    if (linear && ctx.samplerAnisotropy()) {
+    if (linear && ctx.samplerAnisotropy() > 1.f) {
       info.anisotropyEnable = VK_TRUE;
-      info.maxAnisotropy = std::min(16.f, ctx.properties().limits.maxSamplerAnisotropy);
+      info.maxAnisotropy = ctx.samplerAnisotropy();
     }
   } else {
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;

@@ -14,7 +14,8 @@ enum class MipSampling {
   // evaluator reads it. The AOV renders that tests compare with it per pixel use this.
   BaseLevel,
   // The whole chain, trilinear (mipmapMode linear, no LOD clamp), and anisotropic (up
-  // to 16x) where the device enabled samplerAnisotropy. Lit frames use this.
+  // to 16x) on GPUs that offer it (Context::samplerAnisotropy; never on CPU devices).
+  // Lit frames use this.
   FullChain,
 };
 

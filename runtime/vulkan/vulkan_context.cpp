@@ -4,6 +4,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "runtime/vulkan/sampler_anisotropy.hpp"
+
 namespace wg::vk {
 
 void check(VkResult result, const char* what) {
@@ -163,8 +165,9 @@ bool Context::createDevice(std::string& error) {
   VkPhysicalDeviceFeatures supported{};
   vkGetPhysicalDeviceFeatures(physical_, &supported);
   VkPhysicalDeviceFeatures features{};
-  features.samplerAnisotropy = supported.samplerAnisotropy;
-  samplerAnisotropy_ = supported.samplerAnisotropy == VK_TRUE;
+  samplerAnisotropy_ = samplerAnisotropyFor(properties_.deviceType, supported.samplerAnisotropy == VK_TRUE,
+                                            properties_.limits.maxSamplerAnisotropy);
+  features.samplerAnisotropy = samplerAnisotropy_ > 1.f ? VK_TRUE : VK_FALSE;
   features.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
   fragmentStoresAndAtomics_ = supported.fragmentStoresAndAtomics == VK_TRUE;
   std::uint32_t extensionCount = 0;

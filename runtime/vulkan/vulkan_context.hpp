@@ -41,9 +41,11 @@ class Context {
   std::string deviceName() const { return properties_.deviceName; }
   bool validationEnabled() const { return static_cast<bool>(messenger_); }
   // Optional capabilities, enabled at device creation where the device has them:
-  // anisotropic texture filtering, and VK_KHR_depth_stencil_resolve (with
-  // VK_KHR_create_renderpass2), which a multisampled colour pass resolves its depth with.
-  bool samplerAnisotropy() const { return samplerAnisotropy_; }
+  // anisotropic texture filtering (GPUs only: see samplerAnisotropyFor), and
+  // VK_KHR_depth_stencil_resolve (with VK_KHR_create_renderpass2), which a
+  // multisampled colour pass resolves its depth with.
+  // The maxAnisotropy of full-chain samplers; 1 when anisotropic filtering is off.
+  float samplerAnisotropy() const { return samplerAnisotropy_; }
   bool depthStencilResolve() const { return depthStencilResolve_; }
   // Storage writes and atomics from fragment shaders (the snow's mesh interactors).
   bool fragmentStoresAndAtomics() const { return fragmentStoresAndAtomics_; }
@@ -89,7 +91,8 @@ class Context {
   UniqueCommandPool commandPool_;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_{};
-  bool samplerAnisotropy_ = false, depthStencilResolve_ = false, fragmentStoresAndAtomics_ = false;
+  float samplerAnisotropy_ = 1.f;
+  bool depthStencilResolve_ = false, fragmentStoresAndAtomics_ = false;
   bool borrowed_ = false;
 };
 

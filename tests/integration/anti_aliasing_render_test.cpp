@@ -36,6 +36,13 @@ TEST(AntiAliasing, LavapipeDrawsLitFramesWithFourSamples) {
   EXPECT_EQ(sceneRenderer("rocks").colourSamples(), 4u);
 }
 
+// CPU devices sample trilinear, without anisotropic filtering (runtime/vulkan/sampler_anisotropy.hpp).
+TEST(AntiAliasing, LavapipeSamplesWithoutAnisotropy) {
+  REQUIRE_VULKAN();
+  if (renderContext()->properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU) GTEST_SKIP() << "not a CPU device";
+  EXPECT_EQ(renderContext()->samplerAnisotropy(), 1.f);
+}
+
 // Mip-mapped textures and 4x multisampling keep a lit frame near the same view
 // rendered 4x larger and box-downsampled: at most a third of the figure that level-0
 // textures without multisampling gave (rocks 0.024, road 0.026; now about 0.004).
