@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "compiler/json_reader.hpp"
 #include "nodes/regular_file.hpp"
 
 namespace wg {
@@ -263,21 +264,16 @@ std::string plainParseMessage(std::string what) {
   return what;
 }
 
-// nlohmann's own DOM builder, also counting the keys it is given: nlohmann keeps only
-// the last of two equal keys, silently, so a document whose objects hold fewer members
-// than the keys read has a duplicate. Only then does the exact scanner run, to locate it.
-class CountingBuilder : public nlohmann::detail::json_sax_dom_parser<nlohmann::json> {
- public:
-  explicit CountingBuilder(nlohmann::json& root) : json_sax_dom_parser(root, /*allow_exceptions=*/true) {}
-  bool key(std::string& value) {
-    ++keys_;
-    return json_sax_dom_parser::key(value);
+// The DOM by RapidJSON's reader when it can; false leaves root null for nlohmann's.
+bool readFast(const std::string& text, nlohmann::json& root, std::size_t& keysRead) {
+  JsonDomBuilder builder(root);
+  if (!readJsonEvents(text, builder)) {
+    root = nlohmann::json();
+    return false;
   }
-  std::size_t keysRead() const { return keys_; }
-
- private:
-  std::size_t keys_ = 0;
-};
+  keysRead = builder.keysRead();
+  return true;
+}
 
 // Members of every object in the document, walked with an explicit stack.
 std::size_t memberCount(const nlohmann::json& root) {
@@ -375,9 +371,11 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
     return std::nullopt;
   }
   nlohmann::json root;
-  CountingBuilder builder(root);
-  try {
+  std::size_t keysRead = 0;
+  if (!readFast(text, root, keysRead)) try {
+    JsonDomBuilder builder(root);
     nlohmann::json::sax_parse(text, &builder);
+    keysRead = builder.keysRead();
   } catch (const nlohmann::json::parse_error& e) {
     auto [line, column] = lineColumnOfByte(text, e.byte > 0 ? e.byte - 1 : 0);
     diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column}, {plainParseMessage(e.what())});
@@ -395,7 +393,7 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
     diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {plainParseMessage(e.what())});
     return std::nullopt;
   }
-  if (memberCount(root) == builder.keysRead()) return JsonDocument(std::move(file), std::move(text), std::move(root));
+  if (memberCount(root) == keysRead) return JsonDocument(std::move(file), std::move(text), std::move(root));
   bool duplicate = false;
   TextScanner scanner{text};
   scanner.scan([](const std::string&, int, int) {}, [](const std::string&, int, int) {},

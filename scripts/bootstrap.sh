@@ -8,6 +8,7 @@ packages=(
   python3             # scripts/check-layers.py, the layer check ctest runs
   glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev
   nlohmann-json3-dev libglm-dev libstb-dev
+  rapidjson-dev       # the graph reader's fast JSON front end
   libgtest-dev libbenchmark-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libtinygltf-dev     # glTF 2.0 import
