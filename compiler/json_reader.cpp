@@ -91,8 +91,14 @@ bool isAscii(const std::string& text) {
 
 template <unsigned Flags>
 bool parse(const std::string& text, nlohmann::json::json_sax_t& events) {
-  // The caller has refused text holding a NUL, so the C string is the whole text.
-  rapidjson::StringStream stream(text.c_str());
+  // The SIMD scan reads whole aligned 16-byte blocks, so the block holding the final
+  // NUL may reach past the text's allocation: pad it. The caller has refused text
+  // holding a NUL, so the C string ends where the text does.
+  std::string padded;
+  padded.reserve(text.size() + 16);
+  padded = text;
+  padded.append(15, '\0');
+  rapidjson::StringStream stream(padded.c_str());
   rapidjson::Reader reader;
   EventForwarder forwarder(events);
   return !reader.Parse<Flags>(stream, forwarder).IsError();
