@@ -5,6 +5,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "backends/op_template.hpp"
 #include "nodes/core_library.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
@@ -169,58 +170,42 @@ class StageWriter {
     out += names_[operand.node];
     out += accessor;
   }
-  void appendSymbol(std::string& out, std::string_view name, const IrNode& node) const {
-    if (name == "texcoord") out += "wg_texcoord";
-    else if (name == "texcoord1") out += "wg_texcoord1";
-    else if (name == "worldPosition") out += "wg_worldPosition";
-    else if (name == "worldNormal") out += "wg_worldNormal";
-    else if (name == "worldTangent") out += "wg_worldTangent";
-    else if (name == "vertexColor") out += "wg_vertexColor";
-    else if (name == "time") out += "frame_time";
-    else if (name == "channels") (out += '.') += node.text;  // validated: 1-4 of xyzw/rgba
-    else if (name == "sampleFn") out += syntax_.sampleFunction(stage_);
-    else if (name == "lodArg") out += syntax_.lodArgument(stage_);
-    else if (name == "parameter")
-      out += syntax_.parameterRead(mi_.material.members[static_cast<std::size_t>(node.parameter)], node.valueType);
-    else if (name == "texture" || name == "sampler") out += textureSymbol(name, node);
-    else  // Unreachable: the registry refuses templates naming other symbols (op_template_check).
-      throw std::logic_error("op " + std::string(node.op->name) + ": unknown template symbol @" + std::string(name));
-  }
-  std::string_view textureSymbol(std::string_view name, const IrNode& node) const {
+  // A texture input's binding: the op template check guarantees the op has one.
+  const TextureBinding& textureOf(const IrNode& node) const {
     for (const auto& o : node.inputs)
-      if (o.kind == Operand::Kind::Texture) {
-        const auto& b = mi_.textures[static_cast<std::size_t>(o.texture)];
-        return name == "texture" ? b.textureIdentifier : b.samplerIdentifier;
-      }
-    throw std::logic_error("op " + std::string(node.op->name) + ": @" + std::string(name) + " without a texture input");
+      if (o.kind == Operand::Kind::Texture) return mi_.textures[static_cast<std::size_t>(o.texture)];
+    throw std::logic_error("op " + std::string(node.op->name) + " samples without a texture input");
+  }
+
+  void appendPiece(std::string& body, const TemplatePiece& piece, const IrNode& node) const {
+    using Kind = TemplatePiece::Kind;
+    switch (piece.kind) {
+      case Kind::Text: body += piece.text; return;
+      case Kind::Type: body += syntax_.typeName(node.valueType); return;
+      case Kind::Input: appendOperand(body, node.inputs[piece.input], node.inputTypes[piece.input]); return;
+      case Kind::Channels: (body += '.') += node.text; return;  // validated: 1-4 of xyzw/rgba
+      case Kind::SampleFn: body += syntax_.sampleFunction(stage_); return;
+      case Kind::LodArg: body += syntax_.lodArgument(stage_); return;
+      case Kind::Parameter:
+        body += syntax_.parameterRead(mi_.material.members[static_cast<std::size_t>(node.parameter)], node.valueType);
+        return;
+      case Kind::Texture: body += textureOf(node).textureIdentifier; return;
+      case Kind::Sampler: body += textureOf(node).samplerIdentifier; return;
+    }
   }
 
   void emitNode(std::size_t index, std::string& body, std::string_view indent) {
     const IrNode& node = graph_.nodes[index];
     const OpDef& op = *node.op;
-    std::string_view code = syntax_.opCode(op);
+    const OpTemplate* pieces = registeredOpTemplate(syntax_, op);
+    OpTemplate unregistered;
+    if (!pieces) pieces = &(unregistered = splitOpTemplate(op, syntax_.opCode(op)));
     body += indent;
     body += syntax_.typeName(node.valueType);
     body += ' ';
     body += names_[index];
     body += " = ";
-    // Copies the template in spans between placeholders.
-    std::size_t done = 0;
-    for (std::size_t open = code.find('{'); open != std::string_view::npos; open = code.find('{', done)) {
-      body.append(code.substr(done, open - done));
-      std::size_t close = code.find('}', open);
-      std::string_view key = code.substr(open + 1, close - open - 1);
-      done = close + 1;
-      if (key == "T") {
-        body += syntax_.typeName(node.valueType);
-      } else if (key.starts_with('@')) {
-        appendSymbol(body, key.substr(1), node);
-      } else {
-        for (std::size_t p = 0; p < op.inputs.size(); ++p)
-          if (op.inputs[p].name == key) appendOperand(body, node.inputs[p], node.inputTypes[p]);
-      }
-    }
-    body.append(code.substr(done));
+    for (const TemplatePiece& piece : *pieces) appendPiece(body, piece, node);
     body += ";\n";
   }
 

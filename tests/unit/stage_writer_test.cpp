@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "backends/op_template.hpp"
 #include "backends/shader_syntax.hpp"
 #include "backends/stage_writer.hpp"
 #include "compiler/debug_views.hpp"
@@ -11,6 +12,7 @@
 #include "compiler/pass_pipeline.hpp"
 #include "ir_fixture.hpp"
 #include "nodes/op_registry.hpp"
+#include "nodes/op_template_check.hpp"
 
 namespace wg {
 namespace {
@@ -60,6 +62,18 @@ TEST(StageWriter, NodeNamesAreCleanAndMeetNoGlobal) {
   for (const std::string& name : nameNodes(ir, mi)) {
     EXPECT_FALSE(globals.contains(name)) << name;
     EXPECT_FALSE(name.starts_with("wg_")) << name;  // the frame locals' prefix
+  }
+}
+
+// The registry's template check and the splitter list the same symbols.
+TEST(StageWriter, EverySymbolTheTemplateCheckAllowsIsSplit) {
+  const OpDef* op = findOp("sample");
+  ASSERT_NE(op, nullptr);
+  for (std::string_view symbol : templateSymbols()) {
+    OpTemplate pieces;
+    EXPECT_NO_THROW(pieces = splitOpTemplate(*op, "{@" + std::string(symbol) + "}")) << symbol;
+    ASSERT_EQ(pieces.size(), 1u) << symbol;
+    EXPECT_TRUE(pieces[0].kind != TemplatePiece::Kind::Text || !pieces[0].text.empty()) << symbol;
   }
 }
 
