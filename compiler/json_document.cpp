@@ -265,9 +265,9 @@ std::string plainParseMessage(std::string what) {
 }
 
 // The DOM by RapidJSON's reader when it can; false leaves root null for nlohmann's.
-bool readFast(const std::string& text, nlohmann::json& root, std::size_t& keysRead) {
+bool readFast(const std::string& text, nlohmann::json& root, std::size_t& keysRead, int maxDepth) {
   JsonDomBuilder builder(root);
-  if (!readJsonEvents(text, builder)) {
+  if (!readJsonEvents(text, builder, maxDepth)) {
     root = nlohmann::json();
     return false;
   }
@@ -349,18 +349,13 @@ SourceLocation locateInJsonFile(const std::string& path, const std::string& poin
   return document ? document->locate(pointer) : SourceLocation{path, pointer, 0, 0};
 }
 
-std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text,
-                                              DiagnosticList& diagnostics, const JsonLimits& limits) {
-  if (text.size() > limits.maxBytes) {
-    diagnostics.report(DiagCode::ResourceLimit, {file, "", 1, 1},
-                       {"the file size", std::to_string(text.size()) + " bytes",
-                        std::to_string(limits.maxBytes) + " bytes"});
-    return std::nullopt;
-  }
+// The raw text's limits: nesting depth, and no NUL.
+bool withinRawLimits(const std::string& file, const std::string& text, DiagnosticList& diagnostics,
+                     const JsonLimits& limits) {
   if (int depth = nestingDepth(text); depth > limits.maxDepth) {
     diagnostics.report(DiagCode::ResourceLimit, {file, "", 1, 1},
                        {"the JSON nesting depth", std::to_string(depth), std::to_string(limits.maxDepth)});
-    return std::nullopt;
+    return false;
   }
   // nlohmann's lexer reads a NUL as the end of input, so whatever follows one would be
   // ignored silently: a binary or truncated file. JSON text never holds one raw.
@@ -368,18 +363,23 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
     auto [line, column] = lineColumnOfByte(text, nul);
     diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column},
                        {"a NUL byte; JSON text cannot hold one (is the file binary or cut short?)"});
-    return std::nullopt;
+    return false;
   }
-  nlohmann::json root;
-  std::size_t keysRead = 0;
-  if (!readFast(text, root, keysRead)) try {
+  return true;
+}
+
+// The raw text's limits, then nlohmann's parser, whose errors the diagnostics quote.
+bool readSlowly(const std::string& file, const std::string& text, nlohmann::json& root, std::size_t& keysRead,
+                DiagnosticList& diagnostics, const JsonLimits& limits) {
+  if (!withinRawLimits(file, text, diagnostics, limits)) return false;
+  try {
     JsonDomBuilder builder(root);
     nlohmann::json::sax_parse(text, &builder);
     keysRead = builder.keysRead();
   } catch (const nlohmann::json::parse_error& e) {
     auto [line, column] = lineColumnOfByte(text, e.byte > 0 ? e.byte - 1 : 0);
     diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column}, {plainParseMessage(e.what())});
-    return std::nullopt;
+    return false;
   } catch (const nlohmann::json::out_of_range& e) {
     // A number too large for a double ("1e999"): point at it and call it non-finite.
     std::string what = e.what();
@@ -388,11 +388,28 @@ std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text
     std::size_t at = number.empty() ? std::string::npos : text.find(number);
     auto [line, column] = lineColumnOfByte(text, at == std::string::npos ? 0 : at);
     diagnostics.report(DiagCode::LiteralNotFinite, {file, "", line, column}, {"the number " + number});
-    return std::nullopt;
+    return false;
   } catch (const std::exception& e) {
     diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {plainParseMessage(e.what())});
+    return false;
+  }
+  return true;
+}
+
+std::optional<JsonDocument> parseJsonDocument(std::string file, std::string text,
+                                              DiagnosticList& diagnostics, const JsonLimits& limits) {
+  if (text.size() > limits.maxBytes) {
+    diagnostics.report(DiagCode::ResourceLimit, {file, "", 1, 1},
+                       {"the file size", std::to_string(text.size()) + " bytes",
+                        std::to_string(limits.maxBytes) + " bytes"});
     return std::nullopt;
   }
+  nlohmann::json root;
+  std::size_t keysRead = 0;
+  // The fast reader checks the depth as it goes; the checks of readSlowly run only
+  // when it hands the text back, in their order.
+  if (text.find('\0') != std::string::npos || !readFast(text, root, keysRead, limits.maxDepth))
+    if (!readSlowly(file, text, root, keysRead, diagnostics, limits)) return std::nullopt;
   if (memberCount(root) == keysRead) return JsonDocument(std::move(file), std::move(text), std::move(root));
   bool duplicate = false;
   TextScanner scanner{text};

@@ -49,7 +49,7 @@ bool holdsEncodedSurrogate(const char* text, std::size_t length) {
 
 class EventForwarder : public rapidjson::BaseReaderHandler<rapidjson::UTF8<>, EventForwarder> {
  public:
-  explicit EventForwarder(nlohmann::json::json_sax_t& events) : events_(events) {}
+  EventForwarder(nlohmann::json::json_sax_t& events, int maxDepth) : events_(events), maxDepth_(maxDepth) {}
   bool Null() { return events_.null(); }
   bool Bool(bool value) { return events_.boolean(value); }
   bool RawNumber(const char* text, rapidjson::SizeType length, bool) { return sendNumber(text, length, events_); }
@@ -63,13 +63,15 @@ class EventForwarder : public rapidjson::BaseReaderHandler<rapidjson::UTF8<>, Ev
     std::string value(text, length);
     return events_.key(value);
   }
-  bool StartObject() { return events_.start_object(static_cast<std::size_t>(-1)); }
-  bool EndObject(rapidjson::SizeType) { return events_.end_object(); }
-  bool StartArray() { return events_.start_array(static_cast<std::size_t>(-1)); }
-  bool EndArray(rapidjson::SizeType) { return events_.end_array(); }
+  bool StartObject() { return ++depth_ <= maxDepth_ && events_.start_object(static_cast<std::size_t>(-1)); }
+  bool EndObject(rapidjson::SizeType) { return --depth_, events_.end_object(); }
+  bool StartArray() { return ++depth_ <= maxDepth_ && events_.start_array(static_cast<std::size_t>(-1)); }
+  bool EndArray(rapidjson::SizeType) { return --depth_, events_.end_array(); }
 
  private:
   nlohmann::json::json_sax_t& events_;
+  int maxDepth_;
+  int depth_ = 0;
 };
 
 }  // namespace
@@ -90,7 +92,7 @@ bool isAscii(const std::string& text) {
 }
 
 template <unsigned Flags>
-bool parse(const std::string& text, nlohmann::json::json_sax_t& events) {
+bool parse(const std::string& text, nlohmann::json::json_sax_t& events, int maxDepth) {
   // The SIMD scan reads whole aligned 16-byte blocks, so the block holding the final
   // NUL may reach past the text's allocation: pad it. The caller has refused text
   // holding a NUL, so the C string ends where the text does.
@@ -100,17 +102,17 @@ bool parse(const std::string& text, nlohmann::json::json_sax_t& events) {
   padded.append(15, '\0');
   rapidjson::StringStream stream(padded.c_str());
   rapidjson::Reader reader;
-  EventForwarder forwarder(events);
+  EventForwarder forwarder(events, maxDepth);
   return !reader.Parse<Flags>(stream, forwarder).IsError();
 }
 }  // namespace
 
-bool readJsonEvents(const std::string& text, nlohmann::json::json_sax_t& events) {
+bool readJsonEvents(const std::string& text, nlohmann::json::json_sax_t& events, int maxDepth) {
   // nlohmann skips a UTF-8 byte-order mark; RapidJSON would call it a syntax error.
   if (text.starts_with("\xEF\xBB\xBF")) return false;
   constexpr unsigned kFlags = rapidjson::kParseIterativeFlag | rapidjson::kParseNumbersAsStringsFlag;
-  if (isAscii(text)) return parse<kFlags>(text, events);
-  return parse<kFlags | rapidjson::kParseValidateEncodingFlag>(text, events);
+  if (isAscii(text)) return parse<kFlags>(text, events, maxDepth);
+  return parse<kFlags | rapidjson::kParseValidateEncodingFlag>(text, events, maxDepth);
 }
 
 }  // namespace wg

@@ -40,8 +40,9 @@ class JsonDomBuilder final : public nlohmann::json::json_sax_t {
 
 // True when the whole text was read and every event sent. False on anything it does
 // not reproduce exactly (a syntax error, a number out of double's range, an encoded
-// surrogate, a byte-order mark): the caller then parses with nlohmann alone, whose
-// errors name what is wrong. Events may have been sent before a false.
-bool readJsonEvents(const std::string& text, nlohmann::json::json_sax_t& events);
+// surrogate, a byte-order mark) and on nesting deeper than maxDepth: the caller then
+// parses with nlohmann alone, whose errors name what is wrong. Events may have been
+// sent before a false. The text must not hold a NUL.
+bool readJsonEvents(const std::string& text, nlohmann::json::json_sax_t& events, int maxDepth = 64);
 
 }  // namespace wg

@@ -91,6 +91,15 @@ TEST(JsonReader, AgreesOnEdgeCasesOrHandsThemBack) {
     EXPECT_TRUE(fastDom(text)) << text;
 }
 
+TEST(JsonReader, HandsBackTextNestedTooDeep) {
+  nlohmann::json root;
+  JsonDomBuilder builder(root);
+  EXPECT_TRUE(readJsonEvents("[[[1]]]", builder, 3));
+  nlohmann::json deeper;
+  JsonDomBuilder deeperBuilder(deeper);
+  EXPECT_FALSE(readJsonEvents("[[[[1]]]]", deeperBuilder, 3));
+}
+
 TEST(JsonReader, CountsKeysSoDuplicatesShow) {
   nlohmann::json root;
   JsonDomBuilder builder(root);
