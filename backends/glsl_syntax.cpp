@@ -3,6 +3,7 @@
 #include <array>
 
 #include "backends/shader_syntax.hpp"
+#include "backends/source_text.hpp"
 #include "backends/stage_frame.hpp"
 
 namespace wg {
@@ -21,11 +22,10 @@ std::string_view glslInterfaceType(InterfaceType type) { return interfaceTypeNam
 
 void appendBlock(std::string& out, const UniformBlock& block) {
   if (block.members.empty()) return;
-  out += "layout(set = " + std::to_string(block.set) + ", binding = " + std::to_string(block.binding) +
-         ", std140) uniform " + block.identifier + " {\n";
+  appendText(out, "layout(set = ", Decimal{block.set}, ", binding = ", Decimal{block.binding}, ", std140) uniform ",
+             block.identifier, " {\n");
   for (const auto& m : block.members)
-    out += "  layout(offset = " + std::to_string(m.offset) + ") " + std::string(glslInterfaceType(m.type)) + " " +
-           m.identifier + ";\n";
+    appendText(out, "  layout(offset = ", Decimal{m.offset}, ") ", glslInterfaceType(m.type), ' ', m.identifier, ";\n");
   out += "};\n";
 }
 
@@ -66,19 +66,19 @@ class GlslSyntax final : public ShaderSyntax {
     appendBlock(out, mi.material);
     for (const auto* list : {&mi.weatherMaps, &mi.textures})
     for (const auto& t : *list) {
-      out += "layout(set = " + std::to_string(t.set) + ", binding = " + std::to_string(t.textureBinding) +
-             ") uniform texture2D " + t.textureIdentifier + ";\n";
-      out += "layout(set = " + std::to_string(t.set) + ", binding = " + std::to_string(t.samplerBinding) +
-             ") uniform sampler " + t.samplerIdentifier + ";\n";
+      appendText(out, "layout(set = ", Decimal{t.set}, ", binding = ", Decimal{t.textureBinding}, ") uniform texture2D ",
+                 t.textureIdentifier, ";\n");
+      appendText(out, "layout(set = ", Decimal{t.set}, ", binding = ", Decimal{t.samplerBinding}, ") uniform sampler ",
+                 t.samplerIdentifier, ";\n");
     }
     bool vertex = s.stage == ShaderStage::Vertex;
     if (vertex)
       for (const auto& a : mi.vertexInputs)
-        out += "layout(location = " + std::to_string(a.location) + ") in " + std::string(glslInterfaceType(a.type)) +
-               " " + a.identifier + ";\n";
+        appendText(out, "layout(location = ", Decimal{a.location}, ") in ", glslInterfaceType(a.type), ' ', a.identifier,
+                   ";\n");
     for (const auto& v : mi.varyings)
-      out += "layout(location = " + std::to_string(v.location) + ") " + (vertex ? "out " : "in ") +
-             std::string(glslInterfaceType(v.type)) + " " + v.identifier + ";\n";
+      appendText(out, "layout(location = ", Decimal{v.location}, ") ", vertex ? "out " : "in ", glslInterfaceType(v.type),
+                 ' ', v.identifier, ";\n");
     if (!vertex) out += "layout(location = 0) out vec4 out_color;\n";
     for (const ShaderLibrary* lib : s.libraries) {
       out += '\n';

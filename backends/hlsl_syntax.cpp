@@ -7,6 +7,7 @@
 
 #include "backends/derived_hlsl.hpp"
 #include "backends/shader_syntax.hpp"
+#include "backends/source_text.hpp"
 #include "backends/stage_frame.hpp"
 
 namespace wg {
@@ -27,27 +28,29 @@ std::string_view hlslInterfaceType(InterfaceType type) {
 }
 
 // packoffset names a 16-byte register and a starting component.
-std::string packOffset(std::uint32_t offset) {
+void appendPackOffset(std::string& out, std::uint32_t offset) {
   constexpr std::array<char, 4> kComponents = {'x', 'y', 'z', 'w'};
-  std::string out = "c" + std::to_string(offset / 16);
-  std::uint32_t component = (offset % 16) / 4;
-  if (component) out += std::string(".") + kComponents[component];
-  return out;
+  appendText(out, 'c', Decimal{offset / 16});
+  if (std::uint32_t component = (offset % 16) / 4) appendText(out, '.', kComponents[component]);
 }
 
 void appendBlock(std::string& out, const UniformBlock& block) {
   if (block.members.empty()) return;
-  out += "[[vk::binding(" + std::to_string(block.binding) + ", " + std::to_string(block.set) + ")]] cbuffer " +
-         block.identifier + " : register(b" + std::to_string(block.binding) + ", space" + std::to_string(block.set) +
-         ") {\n";
-  for (const auto& m : block.members)
-    out += "  " + std::string(hlslInterfaceType(m.type)) + " " + m.identifier + " : packoffset(" + packOffset(m.offset) +
-           ");\n";
+  appendText(out, "[[vk::binding(", Decimal{block.binding}, ", ", Decimal{block.set}, ")]] cbuffer ", block.identifier,
+             " : register(b", Decimal{block.binding}, ", space", Decimal{block.set}, ") {\n");
+  for (const auto& m : block.members) {
+    appendText(out, "  ", hlslInterfaceType(m.type), ' ', m.identifier, " : packoffset(");
+    appendPackOffset(out, m.offset);
+    out += ");\n";
+  }
   out += "};\n";
 }
 
-// HLSL semantics for stage IO; locations are what Vulkan matches.
-std::string semantic(std::uint32_t location) { return "TEXCOORD" + std::to_string(location); }
+// HLSL semantics for stage IO (TEXCOORD<location>); locations are what Vulkan matches.
+void appendStageVariable(std::string& out, const StageVariable& v) {
+  appendText(out, "  [[vk::location(", Decimal{v.location}, ")]] ", hlslInterfaceType(v.type), ' ', v.identifier,
+             " : TEXCOORD", Decimal{v.location}, ";\n");
+}
 
 // Stage IO lives in the entry point's structs, where the frame's GLSL (stage_frame.cpp)
 // names the varyings, gl_Position and gl_FrontFacing as globals.
@@ -117,25 +120,19 @@ class HlslSyntax final : public ShaderSyntax {
     appendBlock(out, mi.material);
     for (const auto* list : {&mi.weatherMaps, &mi.textures})
     for (const auto& t : *list) {
-      out += "[[vk::binding(" + std::to_string(t.textureBinding) + ", " + std::to_string(t.set) + ")]] Texture2D " +
-             t.textureIdentifier + " : register(t" + std::to_string(t.textureBinding) + ", space" +
-             std::to_string(t.set) + ");\n";
-      out += "[[vk::binding(" + std::to_string(t.samplerBinding) + ", " + std::to_string(t.set) + ")]] SamplerState " +
-             t.samplerIdentifier + " : register(s" + std::to_string(t.samplerBinding) + ", space" +
-             std::to_string(t.set) + ");\n";
+      appendText(out, "[[vk::binding(", Decimal{t.textureBinding}, ", ", Decimal{t.set}, ")]] Texture2D ",
+                 t.textureIdentifier, " : register(t", Decimal{t.textureBinding}, ", space", Decimal{t.set}, ");\n");
+      appendText(out, "[[vk::binding(", Decimal{t.samplerBinding}, ", ", Decimal{t.set}, ")]] SamplerState ",
+                 t.samplerIdentifier, " : register(s", Decimal{t.samplerBinding}, ", space", Decimal{t.set}, ");\n");
     }
     bool vertex = s.stage == ShaderStage::Vertex;
     if (vertex) {
       out += "struct VSInput {\n";
-      for (const auto& a : mi.vertexInputs)
-        out += "  [[vk::location(" + std::to_string(a.location) + ")]] " + std::string(hlslInterfaceType(a.type)) + " " +
-               a.identifier + " : " + semantic(a.location) + ";\n";
+      for (const auto& a : mi.vertexInputs) appendStageVariable(out, a);
       out += "};\n";
     }
     out += vertex ? "struct VSOutput {\n  float4 wg_clipPosition : SV_Position;\n" : "struct PSInput {\n";
-    for (const auto& v : mi.varyings)
-      out += "  [[vk::location(" + std::to_string(v.location) + ")]] " + std::string(hlslInterfaceType(v.type)) + " " +
-             v.identifier + " : " + semantic(v.location) + ";\n";
+    for (const auto& v : mi.varyings) appendStageVariable(out, v);
     out += "};\n";
     bool prelude = callsHlslPrelude(s.body);
     for (const ShaderLibrary* lib : s.libraries) prelude = prelude || derivedHlslCallsPrelude(*lib);

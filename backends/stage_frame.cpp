@@ -1,5 +1,7 @@
 #include "backends/stage_frame.hpp"
 
+#include "backends/source_text.hpp"
+
 namespace wg {
 
 void appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
@@ -36,7 +38,7 @@ void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSynt
   if (s.interface->hasTexcoord1()) prologue += "  vec2 wg_texcoord1 = v_texcoord1;\n";
   out += syntax.frameCode(prologue, ShaderStage::Fragment);
   out += s.body;
-  if (s.alphaTested) out += "  if (wg_opacity < " + formatFloat(s.alphaCutoff) + ") discard;\n";
+  if (s.alphaTested) appendText(out, "  if (wg_opacity < ", formatFloat(s.alphaCutoff), ") discard;\n");
   out += syntax.frameCode(
       "  vec3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
       "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
@@ -46,9 +48,9 @@ void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSynt
   out += ShaderSyntax::alphaStatement(s);
   // The views' expressions are already in the target language.
   for (const auto& view : s.debugViews) {
-    out += "  if (frame_debugView == " + std::to_string(view.id) + "u) ";
-    if (view.alpha.empty()) out += "wg_color = " + view.expression + ";\n";
-    else out += "{ wg_color = " + view.expression + "; wg_alpha = " + view.alpha + "; }\n";
+    appendText(out, "  if (frame_debugView == ", Decimal{view.id}, "u) ");
+    if (view.alpha.empty()) appendText(out, "wg_color = ", view.expression, ";\n");
+    else appendText(out, "{ wg_color = ", view.expression, "; wg_alpha = ", view.alpha, "; }\n");
   }
 }
 
