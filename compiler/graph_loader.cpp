@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 
 #include "compiler/literal.hpp"
@@ -261,38 +262,46 @@ class Loader {
     return diags_.report(code, doc_.locate(pointer), args);
   }
 
+  static bool isKind(const nlohmann::json& j, nlohmann::json::value_t kind) {
+    return j.type() == kind || (kind == nlohmann::json::value_t::number_float && j.is_number());
+  }
+
   bool expectKind(const nlohmann::json& j, const std::string& pointer, nlohmann::json::value_t kind,
                   std::string_view what, std::string_view expected) {
-    bool ok = j.type() == kind ||
-              (kind == nlohmann::json::value_t::number_float && j.is_number());
+    bool ok = isKind(j, kind);
     if (!ok) report(DiagCode::WrongJsonKind, pointer, {what, expected, describeJsonKind(j)});
     return ok;
   }
 
-  const nlohmann::json* required(const nlohmann::json& object, const std::string& pointer, const char* key,
-                                 nlohmann::json::value_t kind, std::string_view expected) {
+  // The member's pointer and name are built only for a report: most fields are fine.
+  const nlohmann::json* member(const nlohmann::json& object, const std::string& pointer, const char* key,
+                               nlohmann::json::value_t kind, std::string_view expected, bool mandatory) {
     auto it = object.find(key);
     if (it == object.end()) {
-      report(DiagCode::MissingField, pointer, {key});
+      if (mandatory) report(DiagCode::MissingField, pointer, {key});
       return nullptr;
     }
-    return expectKind(*it, appendPointer(pointer, key), kind, "'" + std::string(key) + "'", expected) ? &*it : nullptr;
+    if (isKind(*it, kind)) return &*it;
+    report(DiagCode::WrongJsonKind, appendPointer(pointer, key), {"'" + std::string(key) + "'", expected, describeJsonKind(*it)});
+    return nullptr;
   }
-
+  const nlohmann::json* required(const nlohmann::json& object, const std::string& pointer, const char* key,
+                                 nlohmann::json::value_t kind, std::string_view expected) {
+    return member(object, pointer, key, kind, expected, true);
+  }
   const nlohmann::json* optionalString(const nlohmann::json& object, const std::string& pointer, const char* key) {
-    auto it = object.find(key);
-    if (it == object.end()) return nullptr;
-    return expectKind(*it, appendPointer(pointer, key), nlohmann::json::value_t::string, "'" + std::string(key) + "'", "a string")
-               ? &*it
-               : nullptr;
+    return member(object, pointer, key, nlohmann::json::value_t::string, "a string", false);
   }
 
-  void checkFields(const nlohmann::json& object, const std::string& pointer, std::vector<std::string_view> known) {
+  void checkFields(const nlohmann::json& object, const std::string& pointer, std::initializer_list<std::string_view> known) {
+    checkFields(object, pointer, std::span<const std::string_view>(known.begin(), known.size()));
+  }
+  void checkFields(const nlohmann::json& object, const std::string& pointer, std::span<const std::string_view> known) {
     for (const auto& [key, value] : object.items()) {
       if ((key == "description" || key == "$schema") && !value.is_string())
         report(DiagCode::WrongJsonKind, appendPointer(pointer, key), {"'" + key + "'", "a string", describeJsonKind(value)});
       if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-      std::string hint = unknownNameHint(key, known, "known fields");
+      std::string hint = unknownNameHint(key, {known.begin(), known.end()}, "known fields");
       failed_ = true;
       std::string fieldPointer = appendPointer(pointer, key);
       diags_.report(DiagCode::UnknownField, doc_.locateKey(fieldPointer), {quoteUserText(key), hint});
@@ -480,9 +489,9 @@ class Loader {
     auto* id = required(j, pointer, "id", nlohmann::json::value_t::string, "a string");
     auto* op = required(j, pointer, "op", nlohmann::json::value_t::string, "a string");
     if (!id || !op) return;
-    n.id = scope_.names + id->get<std::string>();
-    n.op = op->get<std::string>();
-    if (id->get<std::string>().empty()) report(DiagCode::EmptyName, appendPointer(pointer, "id"), {"node id"});
+    n.id = scope_.names + id->get_ref<const std::string&>();
+    n.op = op->get_ref<const std::string&>();
+    if (id->get_ref<const std::string&>().empty()) report(DiagCode::EmptyName, appendPointer(pointer, "id"), {"node id"});
     if (auto* param = optionalString(j, pointer, "param")) n.param = scope_.names + param->get<std::string>();
     if (n.op == kSwitchOp) {
       loadSwitchNode(j, n);
@@ -496,11 +505,11 @@ class Loader {
     if (j.contains("inputs")) {
       const auto& inputs = j["inputs"];
       std::string ip = appendPointer(pointer, "inputs");
+      const OpDef* def = findOp(n.op);
       if (expectKind(inputs, ip, nlohmann::json::value_t::object, "'inputs'", "an object"))
         for (const auto& [port, value] : inputs.items()) {
           InputSource source = loadInput(value, appendPointer(ip, port));
           // A Text port's string is a setting (swizzle channels), not a name.
-          const OpDef* def = findOp(n.op);
           const PortSpec* spec = def ? def->findInput(port) : nullptr;
           renameLocal(source, spec && spec->type == PortType::Text);
           n.inputs.emplace_back(port, std::move(source));
