@@ -2,6 +2,7 @@
 // HLSL cbuffers), explicit offsets, separate texture2D and sampler objects.
 #include <array>
 
+#include "backends/library_functions.hpp"
 #include "backends/shader_syntax.hpp"
 #include "backends/source_text.hpp"
 #include "backends/stage_frame.hpp"
@@ -80,18 +81,19 @@ class GlslSyntax final : public ShaderSyntax {
       appendText(out, "layout(location = ", Decimal{v.location}, ") ", vertex ? "out " : "in ", glslInterfaceType(v.type),
                  ' ', v.identifier, ";\n");
     if (!vertex) out += "layout(location = 0) out vec4 out_color;\n";
-    for (const ShaderLibrary* lib : s.libraries) {
-      out += '\n';
-      out += libraryCode(*lib);
-    }
-    out += "\nvoid main() {\n";
+    std::string main;
+    main.reserve(s.body.size() + kFrameSizeHint);
+    std::size_t body = 0;
+    main += "\nvoid main() {\n";
     if (vertex) {
-      appendVertexMain(out, s, *this);
+      body = appendVertexMain(main, s, *this);
     } else {
-      appendFragmentMain(out, s, *this);
-      out += "  out_color = vec4(wg_color, wg_alpha);\n";
+      body = appendFragmentMain(main, s, *this);
+      main += "  out_color = vec4(wg_color, wg_alpha);\n";
     }
-    out += "}\n";
+    main += "}\n";
+    appendReachedLibraries(out, *this, s.libraries, libraryRoots(s, main, body));
+    out += main;
     return out;
   }
 };

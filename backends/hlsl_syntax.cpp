@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "backends/derived_hlsl.hpp"
+#include "backends/library_functions.hpp"
 #include "backends/shader_syntax.hpp"
 #include "backends/source_text.hpp"
 #include "backends/stage_frame.hpp"
@@ -137,23 +138,24 @@ class HlslSyntax final : public ShaderSyntax {
     bool prelude = callsHlslPrelude(s.body);
     for (const ShaderLibrary* lib : s.libraries) prelude = prelude || derivedHlslCallsPrelude(*lib);
     if (prelude) out += hlslPrelude();
-    for (const ShaderLibrary* lib : s.libraries) {
-      out += '\n';
-      out += libraryCode(*lib);
-    }
+    std::string main;
+    main.reserve(s.body.size() + kFrameSizeHint);
+    std::size_t body = 0;
     if (vertex) {
-      out += "\nVSOutput main(VSInput wg_in) {\n";
+      main += "\nVSOutput main(VSInput wg_in) {\n";
       for (const auto& a : mi.vertexInputs)
-        out += "  " + std::string(hlslInterfaceType(a.type)) + " " + a.identifier + " = wg_in." + a.identifier + ";\n";
-      out += "  VSOutput wg_out;\n";
-      appendVertexMain(out, s, *this);
-      out += "  return wg_out;\n";
+        appendText(main, "  ", hlslInterfaceType(a.type), ' ', a.identifier, " = wg_in.", a.identifier, ";\n");
+      main += "  VSOutput wg_out;\n";
+      body = appendVertexMain(main, s, *this);
+      main += "  return wg_out;\n";
     } else {
-      out += "\nfloat4 main(PSInput wg_in, bool wg_frontFacing : SV_IsFrontFace) : SV_Target0 {\n";
-      appendFragmentMain(out, s, *this);
-      out += "  return float4(wg_color, wg_alpha);\n";
+      main += "\nfloat4 main(PSInput wg_in, bool wg_frontFacing : SV_IsFrontFace) : SV_Target0 {\n";
+      body = appendFragmentMain(main, s, *this);
+      main += "  return float4(wg_color, wg_alpha);\n";
     }
-    out += "}\n";
+    main += "}\n";
+    appendReachedLibraries(out, *this, s.libraries, libraryRoots(s, main, body));
+    out += main;
     return out;
   }
 };

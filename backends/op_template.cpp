@@ -5,6 +5,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "backends/library_functions.hpp"
 #include "nodes/op_registry.hpp"
 
 namespace wg {
@@ -61,7 +62,9 @@ struct SplitTemplates {
 }  // namespace
 
 OpTemplate splitOpTemplate(const OpDef& op, std::string_view code) {
-  OpTemplate pieces;
+  OpTemplate split;
+  forEachLibraryCall(code, [&](std::string_view name) { split.calls.push_back(name); });
+  std::vector<TemplatePiece>& pieces = split.pieces;
   std::size_t done = 0;
   for (std::size_t open = code.find('{'); open != std::string_view::npos; open = code.find('{', done)) {
     if (open > done) pieces.push_back({TemplatePiece::Kind::Text, code.substr(done, open - done), 0});
@@ -70,7 +73,7 @@ OpTemplate splitOpTemplate(const OpDef& op, std::string_view code) {
     done = close + 1;
   }
   if (done < code.size()) pieces.push_back({TemplatePiece::Kind::Text, code.substr(done), 0});
-  return pieces;
+  return split;
 }
 
 const OpTemplate* registeredOpTemplate(const ShaderSyntax& syntax, const OpDef& op) {

@@ -27,7 +27,10 @@ struct TemplatePiece {
   std::string_view text;
   std::size_t input = 0;
 };
-using OpTemplate = std::vector<TemplatePiece>;
+struct OpTemplate {
+  std::vector<TemplatePiece> pieces;
+  std::vector<std::string_view> calls;  // the library functions it calls
+};
 
 // The op's template in the syntax's language, split once for every registered op;
 // null for an op outside the registry (tests make some), which splitOpTemplate splits.

@@ -31,6 +31,7 @@ struct StageSource {
   // wg_coverage_* terms (fragment), or wg_offset (vertex). The frame provides
   // wg_texcoord1 when the interface has the "texcoord1" input.
   std::string body;
+  std::vector<std::string_view> bodyCalls;  // the library functions the body calls
   bool alphaTested = false;
   float alphaCutoff = 0.5f;
   bool alphaBlended = false;  // the lit colour's alpha is the opacity (AOVs keep 1)

@@ -4,7 +4,7 @@
 
 namespace wg {
 
-void appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+std::size_t appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
   bool texcoord1 = s.interface->hasTexcoord1();
   std::string prologue =
       "  vec3 wg_worldPosition = (frame_model * vec4(in_position, 1.0)).xyz;\n"
@@ -14,6 +14,7 @@ void appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax
       "  vec4 wg_vertexColor = in_color;\n";
   if (texcoord1) prologue += "  vec2 wg_texcoord1 = in_texcoord1;\n";
   out += syntax.frameCode(prologue, ShaderStage::Vertex);
+  std::size_t body = out.size();
   out += s.body;
   std::string epilogue =
       "  wg_worldPosition += wg_offset;\n"
@@ -25,9 +26,10 @@ void appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax
   if (texcoord1) epilogue += "  v_texcoord1 = wg_texcoord1;\n";
   epilogue += "  gl_Position = frame_viewProjection * vec4(wg_worldPosition, 1.0);\n";
   out += syntax.frameCode(epilogue, ShaderStage::Vertex);
+  return body;
 }
 
-void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+std::size_t appendFragmentMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
   std::string prologue =
       "  vec3 wg_worldPosition = v_worldPosition;\n"
       "  vec3 wg_worldNormal = wg_safe_normalize(v_worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);\n"
@@ -37,6 +39,7 @@ void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSynt
       "  vec4 wg_vertexColor = v_color;\n";
   if (s.interface->hasTexcoord1()) prologue += "  vec2 wg_texcoord1 = v_texcoord1;\n";
   out += syntax.frameCode(prologue, ShaderStage::Fragment);
+  std::size_t body = out.size();
   out += s.body;
   if (s.alphaTested) appendText(out, "  if (wg_opacity < ", formatFloat(s.alphaCutoff), ") discard;\n");
   out += syntax.frameCode(
@@ -52,6 +55,7 @@ void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSynt
     if (view.alpha.empty()) appendText(out, "wg_color = ", view.expression, ";\n");
     else appendText(out, "{ wg_color = ", view.expression, "; wg_alpha = ", view.alpha, "; }\n");
   }
+  return body;
 }
 
 }  // namespace wg

@@ -33,6 +33,9 @@ class StageWriter {
     collectLibraries(source.libraries);
     source.body.reserve(graph_.nodes.size() * kBytesPerStatement);
     emitBody(source.body);
+    std::sort(calls_.begin(), calls_.end(), [](auto a, auto b) { return a.data() < b.data(); });
+    calls_.erase(std::unique(calls_.begin(), calls_.end(), [](auto a, auto b) { return a.data() == b.data(); }), calls_.end());
+    source.bodyCalls = std::move(calls_);
     source.alphaTested = graph_.alphaTested();
     source.alphaCutoff = graph_.alphaCutoff;
     source.alphaBlended = graph_.alphaMode == AlphaMode::Blend;
@@ -205,7 +208,8 @@ class StageWriter {
     body += ' ';
     body += names_[index];
     body += " = ";
-    for (const TemplatePiece& piece : *pieces) appendPiece(body, piece, node);
+    for (const TemplatePiece& piece : pieces->pieces) appendPiece(body, piece, node);
+    calls_.insert(calls_.end(), pieces->calls.begin(), pieces->calls.end());
     body += ";\n";
   }
 
@@ -215,6 +219,7 @@ class StageWriter {
   ShaderStage stage_;
   const std::vector<std::string>& names_;
   std::vector<bool> needed_;
+  std::vector<std::string_view> calls_;  // of the emitted nodes' templates
 };
 
 }  // namespace

@@ -72,8 +72,8 @@ TEST(StageWriter, EverySymbolTheTemplateCheckAllowsIsSplit) {
   for (std::string_view symbol : templateSymbols()) {
     OpTemplate pieces;
     EXPECT_NO_THROW(pieces = splitOpTemplate(*op, "{@" + std::string(symbol) + "}")) << symbol;
-    ASSERT_EQ(pieces.size(), 1u) << symbol;
-    EXPECT_TRUE(pieces[0].kind != TemplatePiece::Kind::Text || !pieces[0].text.empty()) << symbol;
+    ASSERT_EQ(pieces.pieces.size(), 1u) << symbol;
+    EXPECT_TRUE(pieces.pieces[0].kind != TemplatePiece::Kind::Text || !pieces.pieces[0].text.empty()) << symbol;
   }
 }
 

@@ -1,0 +1,53 @@
+// A stage emits only the library functions it reaches. Each library's text is split
+// once into its top-level functions (each with the comments above it and the library
+// functions it calls); a stage's roots are the calls of its ops' templates (known per
+// op) and of its frame; the functions reached from those are emitted in library
+// order. glslang drops uncalled functions from the SPIR-V anyway, so the modules are
+// unchanged, but it must still parse them: the weather library was a third of a
+// weathered vertex stage's text.
+#pragma once
+#include <cctype>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "backends/shader_syntax.hpp"
+
+namespace wg {
+
+// Calls each library function named in text: every library function is named wg_...,
+// so these are the wg_ names followed by "(". Comments are not told apart.
+template <typename OnCall>
+void forEachLibraryCall(std::string_view text, OnCall&& onCall) {
+  auto identifierChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t at = text.find("wg_"); at != std::string_view::npos; at = text.find("wg_", at)) {
+    std::size_t end = at + 3;
+    while (end < text.size() && identifierChar(text[end])) ++end;
+    bool starts = at == 0 || !identifierChar(text[at - 1]);
+    std::size_t next = end;
+    while (next < text.size() && text[next] == ' ') ++next;
+    if (starts && next < text.size() && text[next] == '(') onCall(text.substr(at, end - at));
+    at = end;
+  }
+}
+
+// A stage's roots: its body's calls (from its ops' templates) and those of its frame,
+// found in main around the body, which starts at bodyStart.
+std::vector<std::string_view> libraryRoots(const StageSource& source, std::string_view main, std::size_t bodyStart);
+
+// Appends each library's functions that the roots call, directly or through others.
+// A library outside the op registry (tests make some) is appended whole.
+void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax,
+                            const std::vector<const ShaderLibrary*>& libraries,
+                            const std::vector<std::string_view>& roots);
+
+// The top-level pieces of a library text: a function with the comments above it and
+// the rest of its closing line, or loose text (comments, globals) with no name.
+struct LibraryPiece {
+  std::string_view text;
+  std::string_view function;  // empty: not a function, always kept
+  std::vector<std::string_view> calls;
+};
+std::vector<LibraryPiece> splitLibrary(std::string_view text);
+
+}  // namespace wg
