@@ -81,19 +81,15 @@ class GlslSyntax final : public ShaderSyntax {
       appendText(out, "layout(location = ", Decimal{v.location}, ") ", vertex ? "out " : "in ", glslInterfaceType(v.type),
                  ' ', v.identifier, ";\n");
     if (!vertex) out += "layout(location = 0) out vec4 out_color;\n";
-    std::string main;
-    main.reserve(s.body.size() + kFrameSizeHint);
-    std::size_t body = 0;
-    main += "\nvoid main() {\n";
+    appendReachedLibraries(out, *this, s);
+    out += "\nvoid main() {\n";
     if (vertex) {
-      body = appendVertexMain(main, s, *this);
+      appendVertexMain(out, s, *this);
     } else {
-      body = appendFragmentMain(main, s, *this);
-      main += "  out_color = vec4(wg_color, wg_alpha);\n";
+      appendFragmentMain(out, s, *this);
+      out += "  out_color = vec4(wg_color, wg_alpha);\n";
     }
-    main += "}\n";
-    appendReachedLibraries(out, *this, s.libraries, libraryRoots(s, main, body));
-    out += main;
+    out += "}\n";
     return out;
   }
 };

@@ -138,24 +138,20 @@ class HlslSyntax final : public ShaderSyntax {
     bool prelude = callsHlslPrelude(s.body);
     for (const ShaderLibrary* lib : s.libraries) prelude = prelude || derivedHlslCallsPrelude(*lib);
     if (prelude) out += hlslPrelude();
-    std::string main;
-    main.reserve(s.body.size() + kFrameSizeHint);
-    std::size_t body = 0;
+    appendReachedLibraries(out, *this, s);
     if (vertex) {
-      main += "\nVSOutput main(VSInput wg_in) {\n";
+      out += "\nVSOutput main(VSInput wg_in) {\n";
       for (const auto& a : mi.vertexInputs)
-        appendText(main, "  ", hlslInterfaceType(a.type), ' ', a.identifier, " = wg_in.", a.identifier, ";\n");
-      main += "  VSOutput wg_out;\n";
-      body = appendVertexMain(main, s, *this);
-      main += "  return wg_out;\n";
+        appendText(out, "  ", hlslInterfaceType(a.type), ' ', a.identifier, " = wg_in.", a.identifier, ";\n");
+      out += "  VSOutput wg_out;\n";
+      appendVertexMain(out, s, *this);
+      out += "  return wg_out;\n";
     } else {
-      main += "\nfloat4 main(PSInput wg_in, bool wg_frontFacing : SV_IsFrontFace) : SV_Target0 {\n";
-      body = appendFragmentMain(main, s, *this);
-      main += "  return float4(wg_color, wg_alpha);\n";
+      out += "\nfloat4 main(PSInput wg_in, bool wg_frontFacing : SV_IsFrontFace) : SV_Target0 {\n";
+      appendFragmentMain(out, s, *this);
+      out += "  return float4(wg_color, wg_alpha);\n";
     }
-    main += "}\n";
-    appendReachedLibraries(out, *this, s.libraries, libraryRoots(s, main, body));
-    out += main;
+    out += "}\n";
     return out;
   }
 };

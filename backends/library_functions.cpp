@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "backends/derived_hlsl.hpp"
+#include "backends/stage_frame.hpp"
 #include "nodes/core_library.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
@@ -118,22 +119,13 @@ std::vector<LibraryPiece> splitLibrary(std::string_view text) {
   return pieces;
 }
 
-std::vector<std::string_view> libraryRoots(const StageSource& source, std::string_view main, std::size_t bodyStart) {
-  std::vector<std::string_view> roots = source.bodyCalls;
-  auto add = [&](std::string_view name) { roots.push_back(name); };
-  forEachLibraryCall(main.substr(0, bodyStart), add);
-  forEachLibraryCall(main.substr(bodyStart + source.body.size()), add);
-  return roots;
-}
-
-void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax,
-                            const std::vector<const ShaderLibrary*>& libraries,
-                            const std::vector<std::string_view>& roots) {
+void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax, const StageSource& stage) {
   const LanguageIndex& index = indexFor(syntax.language());
   std::vector<bool> reached(index.callsOf.size(), false);
   std::vector<std::size_t> pending;
-  for (std::string_view root : roots)
-    if (auto id = index.functionIds.find(root); id != index.functionIds.end()) pending.push_back(id->second);
+  for (const auto* roots : {&stage.bodyCalls, &frameLibraryCalls(stage.stage)})
+    for (std::string_view root : *roots)
+      if (auto id = index.functionIds.find(root); id != index.functionIds.end()) pending.push_back(id->second);
   while (!pending.empty()) {
     std::size_t id = pending.back();
     pending.pop_back();
@@ -141,7 +133,7 @@ void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax,
     reached[id] = true;
     pending.insert(pending.end(), index.callsOf[id].begin(), index.callsOf[id].end());
   }
-  for (const ShaderLibrary* library : libraries) {
+  for (const ShaderLibrary* library : stage.libraries) {
     std::string_view text = syntax.libraryCode(*library);
     out += '\n';
     auto pieces = index.emittedByText.find(text.data());

@@ -1,7 +1,7 @@
 // A stage emits only the library functions it reaches. Each library's text is split
 // once into its top-level functions (each with the comments above it and the library
-// functions it calls); a stage's roots are the calls of its ops' templates (known per
-// op) and of its frame; the functions reached from those are emitted in library
+// functions it calls); a stage's roots are the calls of its ops' templates and of its
+// frame, both known once; the functions reached from those are emitted in library
 // order. glslang drops uncalled functions from the SPIR-V anyway, so the modules are
 // unchanged, but it must still parse them: the weather library was a third of a
 // weathered vertex stage's text.
@@ -31,15 +31,10 @@ void forEachLibraryCall(std::string_view text, OnCall&& onCall) {
   }
 }
 
-// A stage's roots: its body's calls (from its ops' templates) and those of its frame,
-// found in main around the body, which starts at bodyStart.
-std::vector<std::string_view> libraryRoots(const StageSource& source, std::string_view main, std::size_t bodyStart);
-
-// Appends each library's functions that the roots call, directly or through others.
-// A library outside the op registry (tests make some) is appended whole.
-void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax,
-                            const std::vector<const ShaderLibrary*>& libraries,
-                            const std::vector<std::string_view>& roots);
+// Appends each of the stage's libraries' functions that its body (through its ops'
+// templates) or its frame calls, directly or through others. A library outside the op
+// registry (tests make some) is appended whole.
+void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax, const StageSource& stage);
 
 // The top-level pieces of a library text: a function with the comments above it and
 // the rest of its closing line, or loose text (comments, globals) with no name.

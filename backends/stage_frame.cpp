@@ -1,53 +1,70 @@
 #include "backends/stage_frame.hpp"
 
+#include "backends/library_functions.hpp"
 #include "backends/source_text.hpp"
 
 namespace wg {
 
-std::size_t appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
-  bool texcoord1 = s.interface->hasTexcoord1();
-  std::string prologue =
-      "  vec3 wg_worldPosition = (frame_model * vec4(in_position, 1.0)).xyz;\n"
-      "  vec3 wg_worldNormal = wg_safe_normalize((frame_normalMatrix * vec4(in_normal, 0.0)).xyz);\n"
-      "  vec4 wg_worldTangent = vec4(wg_safe_normalize((frame_model * vec4(in_tangent.xyz, 0.0)).xyz), in_tangent.w);\n"
-      "  vec2 wg_texcoord = in_texcoord;\n"
-      "  vec4 wg_vertexColor = in_color;\n";
-  if (texcoord1) prologue += "  vec2 wg_texcoord1 = in_texcoord1;\n";
-  out += syntax.frameCode(prologue, ShaderStage::Vertex);
-  std::size_t body = out.size();
-  out += s.body;
-  std::string epilogue =
-      "  wg_worldPosition += wg_offset;\n"
-      "  v_worldPosition = wg_worldPosition;\n"
-      "  v_worldNormal = wg_worldNormal;\n"
-      "  v_worldTangent = wg_worldTangent;\n"
-      "  v_texcoord = wg_texcoord;\n"
-      "  v_color = wg_vertexColor;\n";
-  if (texcoord1) epilogue += "  v_texcoord1 = wg_texcoord1;\n";
-  epilogue += "  gl_Position = frame_viewProjection * vec4(wg_worldPosition, 1.0);\n";
-  out += syntax.frameCode(epilogue, ShaderStage::Vertex);
-  return body;
+namespace {
+constexpr std::string_view kVertexPrologue =
+    "  vec3 wg_worldPosition = (frame_model * vec4(in_position, 1.0)).xyz;\n"
+    "  vec3 wg_worldNormal = wg_safe_normalize((frame_normalMatrix * vec4(in_normal, 0.0)).xyz);\n"
+    "  vec4 wg_worldTangent = vec4(wg_safe_normalize((frame_model * vec4(in_tangent.xyz, 0.0)).xyz), in_tangent.w);\n"
+    "  vec2 wg_texcoord = in_texcoord;\n"
+    "  vec4 wg_vertexColor = in_color;\n";
+constexpr std::string_view kVertexEpilogue =
+    "  wg_worldPosition += wg_offset;\n"
+    "  v_worldPosition = wg_worldPosition;\n"
+    "  v_worldNormal = wg_worldNormal;\n"
+    "  v_worldTangent = wg_worldTangent;\n"
+    "  v_texcoord = wg_texcoord;\n"
+    "  v_color = wg_vertexColor;\n";
+constexpr std::string_view kVertexPosition = "  gl_Position = frame_viewProjection * vec4(wg_worldPosition, 1.0);\n";
+constexpr std::string_view kFragmentPrologue =
+    "  vec3 wg_worldPosition = v_worldPosition;\n"
+    "  vec3 wg_worldNormal = wg_safe_normalize(v_worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);\n"
+    "  vec3 wg_tangentAxis = wg_safe_normalize(v_worldTangent.xyz - wg_worldNormal * dot(wg_worldNormal, v_worldTangent.xyz));\n"
+    "  vec4 wg_worldTangent = vec4(wg_tangentAxis, v_worldTangent.w);\n"
+    "  vec2 wg_texcoord = v_texcoord;\n"
+    "  vec4 wg_vertexColor = v_color;\n";
+constexpr std::string_view kFragmentShading =
+    "  vec3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
+    "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
+    "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
+    "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
+
+std::vector<std::string_view> callsIn(std::initializer_list<std::string_view> texts) {
+  std::vector<std::string_view> calls;
+  for (std::string_view text : texts) forEachLibraryCall(text, [&](std::string_view name) { calls.push_back(name); });
+  return calls;
+}
+}  // namespace
+
+const std::vector<std::string_view>& frameLibraryCalls(ShaderStage stage) {
+  static const std::vector<std::string_view> kVertex = callsIn({kVertexPrologue, kVertexEpilogue, kVertexPosition});
+  static const std::vector<std::string_view> kFragment = callsIn({kFragmentPrologue, kFragmentShading});
+  return stage == ShaderStage::Vertex ? kVertex : kFragment;
 }
 
-std::size_t appendFragmentMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
-  std::string prologue =
-      "  vec3 wg_worldPosition = v_worldPosition;\n"
-      "  vec3 wg_worldNormal = wg_safe_normalize(v_worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);\n"
-      "  vec3 wg_tangentAxis = wg_safe_normalize(v_worldTangent.xyz - wg_worldNormal * dot(wg_worldNormal, v_worldTangent.xyz));\n"
-      "  vec4 wg_worldTangent = vec4(wg_tangentAxis, v_worldTangent.w);\n"
-      "  vec2 wg_texcoord = v_texcoord;\n"
-      "  vec4 wg_vertexColor = v_color;\n";
+void appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+  bool texcoord1 = s.interface->hasTexcoord1();
+  std::string prologue(kVertexPrologue);
+  if (texcoord1) prologue += "  vec2 wg_texcoord1 = in_texcoord1;\n";
+  out += syntax.frameCode(prologue, ShaderStage::Vertex);
+  out += s.body;
+  std::string epilogue(kVertexEpilogue);
+  if (texcoord1) epilogue += "  v_texcoord1 = wg_texcoord1;\n";
+  epilogue += kVertexPosition;
+  out += syntax.frameCode(epilogue, ShaderStage::Vertex);
+}
+
+void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+  std::string prologue(kFragmentPrologue);
   if (s.interface->hasTexcoord1()) prologue += "  vec2 wg_texcoord1 = v_texcoord1;\n";
   out += syntax.frameCode(prologue, ShaderStage::Fragment);
-  std::size_t body = out.size();
   out += s.body;
   if (s.alphaTested) appendText(out, "  if (wg_opacity < ", formatFloat(s.alphaCutoff), ") discard;\n");
-  out += syntax.frameCode(
-      "  vec3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
-      "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
-      "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
-      "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n",
-      ShaderStage::Fragment);
+  out += syntax.frameCode(kFragmentShading, ShaderStage::Fragment);
   out += ShaderSyntax::alphaStatement(s);
   // The views' expressions are already in the target language.
   for (const auto& view : s.debugViews) {
@@ -55,7 +72,6 @@ std::size_t appendFragmentMain(std::string& out, const StageSource& s, const Sha
     if (view.alpha.empty()) appendText(out, "wg_color = ", view.expression, ";\n");
     else appendText(out, "{ wg_color = ", view.expression, "; wg_alpha = ", view.alpha, "; }\n");
   }
-  return body;
 }
 
 }  // namespace wg
