@@ -53,12 +53,12 @@ class ShaderSyntax {
   virtual std::string_view opCode(const OpDef& op) const = 0;
   virtual std::string frameCode(std::string_view glsl, ShaderStage stage) const = 0;
 
-  std::string constant(const Value& value) const;
+  void appendConstant(std::string& out, const Value& value) const;
   // The fragment stage's output alpha: 1, or the opacity in the lit view of a blended
   // material (AOVs keep 1, so read-backs still tell surface from background).
   static std::string_view alphaStatement(const StageSource& source);
   // A parameter's value from its block member (bools are stored as uint).
-  std::string parameterRead(const BlockMember& member, ValueType type) const;
+  void appendParameterRead(std::string& out, const BlockMember& member, ValueType type) const;
 };
 
 const ShaderSyntax& glslSyntax();

@@ -160,7 +160,7 @@ class StageWriter {
   // Appends the operand's expression: the common cases write straight into out.
   void appendOperand(std::string& out, const Operand& operand, ValueType portType) const {
     switch (operand.kind) {
-      case Operand::Kind::Constant: out += syntax_.constant(operand.constant.convertedTo(portType)); return;
+      case Operand::Kind::Constant: syntax_.appendConstant(out, operand.constant.convertedTo(portType)); return;
       case Operand::Kind::Texture: out += mi_.textures[static_cast<std::size_t>(operand.texture)].textureIdentifier; return;
       case Operand::Kind::Node: break;
     }
@@ -190,7 +190,7 @@ class StageWriter {
       case Kind::SampleFn: body += syntax_.sampleFunction(stage_); return;
       case Kind::LodArg: body += syntax_.lodArgument(stage_); return;
       case Kind::Parameter:
-        body += syntax_.parameterRead(mi_.material.members[static_cast<std::size_t>(node.parameter)], node.valueType);
+        syntax_.appendParameterRead(body, mi_.material.members[static_cast<std::size_t>(node.parameter)], node.valueType);
         return;
       case Kind::Texture: body += textureOf(node).textureIdentifier; return;
       case Kind::Sampler: body += textureOf(node).samplerIdentifier; return;

@@ -12,13 +12,6 @@ void StableHasher::add(std::string_view bytes) {
   add(static_cast<std::uint64_t>(bytes.size()));  // length-prefix free: separates fields
 }
 
-void StableHasher::add(std::uint64_t value) {
-  for (int i = 0; i < 8; ++i) {
-    state_ ^= (value >> (8 * i)) & 0xFF;
-    state_ *= kPrime;
-  }
-}
-
 std::string StableHasher::hex() const {
   static const char* digits = "0123456789abcdef";
   std::string out(16, '0');

@@ -13,7 +13,13 @@ namespace wg {
 class StableHasher {
  public:
   void add(std::string_view bytes);
-  void add(std::uint64_t value);
+  // Inline: the IR hash adds several words per node.
+  void add(std::uint64_t value) {
+    for (int i = 0; i < 8; ++i) {
+      state_ ^= (value >> (8 * i)) & 0xFF;
+      state_ *= kPrime;
+    }
+  }
   std::uint64_t value() const { return state_; }
   std::string hex() const;
 

@@ -18,12 +18,18 @@ bool Value::allFinite() const {
   return true;
 }
 
-std::string formatFloat(float x) {
+void appendFloat(std::string& out, float x) {
   if (x == 0.f) x = 0.f;  // folds -0 into 0 so equal constants print alike
   char buf[64];
   auto res = std::to_chars(buf, buf + sizeof buf, x);
-  std::string s(buf, res.ptr);
-  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  std::string_view digits(buf, static_cast<std::size_t>(res.ptr - buf));
+  out += digits;
+  if (digits.find_first_of(".e") == std::string_view::npos) out += ".0";
+}
+
+std::string formatFloat(float x) {
+  std::string s;
+  appendFloat(s, x);
   return s;
 }
 

@@ -35,5 +35,7 @@ struct Value {
 // Shortest text that round-trips the float exactly, always with a '.' or exponent
 // ("1.0", "0.25", "1e-07"); locale-independent, so emitted code is deterministic.
 std::string formatFloat(float x);
+// formatFloat's text, appended to out without a temporary.
+void appendFloat(std::string& out, float x);
 
 }  // namespace wg
