@@ -97,11 +97,7 @@ class StageWriter {
       const Operand& base = graph_.weatherGuarded() ? graph_.unweathered[slot] : graph_.outputs[slot];
       body += "  ";
       body += syntax_.typeName(slotType(slot));
-      body += ' ';
-      body += slotLocal(slot);
-      body += " = ";
-      appendOperand(body, base, slotType(slot));
-      body += ";\n";
+      appendSlotAssignment(body, " ", slot, base);
     }
     bool anyGuarded = false;
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i) anyGuarded = anyGuarded || (needed_[i] && graph_.nodes[i].weather);
@@ -115,15 +111,17 @@ class StageWriter {
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
       if (needed_[i] && graph_.nodes[i].weather) emitNode(i, body, "    ");
     for (std::size_t slot : slots)
-      if (!(graph_.outputs[slot] == graph_.unweathered[slot]))
-      {
-        body += "    ";
-        body += slotLocal(slot);
-        body += " = ";
-        appendOperand(body, graph_.outputs[slot], slotType(slot));
-        body += ";\n";
-      }
+      if (!(graph_.outputs[slot] == graph_.unweathered[slot])) appendSlotAssignment(body, "    ", slot, graph_.outputs[slot]);
     body += "  }\n";
+  }
+
+  // "<lead><slot local> = <operand>;": the result locals' lines.
+  void appendSlotAssignment(std::string& body, std::string_view lead, std::size_t slot, const Operand& operand) const {
+    body += lead;
+    body += slotLocal(slot);
+    body += " = ";
+    appendOperand(body, operand, slotType(slot));
+    body += ";\n";
   }
 
   void markNeeded() {
@@ -228,7 +226,7 @@ class StageWriter {
 // and frame locals carry other prefixes (mat_, tex_, frame_, wg_, in_, v_...), and op
 // names are clean identifiers (a unit test checks every registered op), so no
 // identifier scope is needed.
-std::vector<std::string> nameNodes(const IrGraph& graph, const MaterialInterface&) {
+std::vector<std::string> nameNodes(const IrGraph& graph) {
   std::vector<std::string> names;
   names.reserve(graph.nodes.size());
   char digits[24];

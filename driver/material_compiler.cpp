@@ -187,7 +187,7 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
   material.contentHash = contentHash(*ir);
   material.fileStem = fileStemFor(ir->name) + (options.hashKeyedFileStem ? "." + material.contentHash : "");
   MaterialInterface mi = buildMaterialInterface(*ir);
-  std::vector<std::string> names = nameNodes(*ir, mi);
+  std::vector<std::string> names = nameNodes(*ir);
   for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
     for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
       material.stages.push_back(

@@ -27,7 +27,7 @@ IrGraph weatheredRock() {
 
 std::string fragmentText(const IrGraph& ir, ShaderLanguage language = ShaderLanguage::Glsl) {
   MaterialInterface mi = buildMaterialInterface(ir);
-  return writeStage(ir, mi, syntaxFor(language), ShaderStage::Fragment, "0", nameNodes(ir, mi));
+  return writeStage(ir, mi, syntaxFor(language), ShaderStage::Fragment, "0", nameNodes(ir));
 }
 
 TEST(StageWriter, WeatherGuardComesFromTheIr) {
@@ -59,7 +59,7 @@ TEST(StageWriter, NodeNamesAreCleanAndMeetNoGlobal) {
   for (const auto* list : {&mi.vertexInputs, &mi.varyings})
     for (const auto& v : *list) globals.insert(v.identifier);
   ASSERT_GT(globals.size(), 40u);
-  for (const std::string& name : nameNodes(ir, mi)) {
+  for (const std::string& name : nameNodes(ir)) {
     EXPECT_FALSE(globals.contains(name)) << name;
     EXPECT_FALSE(name.starts_with("wg_")) << name;  // the frame locals' prefix
   }
