@@ -5,9 +5,7 @@
 #include <unordered_map>
 
 #include "compiler/material_interface.hpp"
-#include "nodes/core_library.hpp"
 #include "nodes/op_registry.hpp"
-#include "nodes/pbr_shading.hpp"
 
 namespace wg {
 
@@ -21,20 +19,13 @@ struct DerivedHlsl {
   std::unordered_map<const OpDef*, std::string> ops;
 
   DerivedHlsl() {
-    addLibrary(kCoreLibrary);
-    addLibrary(kPbrShadingLibrary);
-    for (const OpDef* op : allOps()) {
+    for (const OpDef* op : allOps())
       ops.emplace(op, op->hlsl.empty() ? glslToHlsl(op->glsl, frameMatrixTranslation()) : std::string(op->hlsl));
-      for (const ShaderLibrary* library : op->libraries) addLibrary(*library);
+    for (const ShaderLibrary* library : allShaderLibraries()) {
+      std::string hlsl = glslToHlsl(library->glsl, frameMatrixTranslation());
+      librariesCallingPrelude.emplace(library, callsHlslPrelude(hlsl));
+      libraries.emplace(library, std::move(hlsl));
     }
-  }
-
-  void addLibrary(const ShaderLibrary& library) {
-    if (libraries.contains(&library)) return;
-    std::string hlsl = glslToHlsl(library.glsl, frameMatrixTranslation());
-    librariesCallingPrelude.emplace(&library, callsHlslPrelude(hlsl));
-    libraries.emplace(&library, std::move(hlsl));
-    for (const ShaderLibrary* dependency : library.dependencies) addLibrary(*dependency);
   }
 };
 

@@ -5,9 +5,7 @@
 
 #include "backends/derived_hlsl.hpp"
 #include "backends/stage_frame.hpp"
-#include "nodes/core_library.hpp"
 #include "nodes/op_registry.hpp"
-#include "nodes/pbr_shading.hpp"
 
 namespace wg {
 
@@ -79,12 +77,9 @@ struct LanguageIndex {
 struct LibraryIndex {
   std::array<LanguageIndex, 2> byLanguage;
   LibraryIndex() {
-    std::vector<const ShaderLibrary*> libraries = {&kCoreLibrary, &kPbrShadingLibrary};
-    for (const OpDef* op : allOps()) libraries.insert(libraries.end(), op->libraries.begin(), op->libraries.end());
-    for (std::size_t i = 0; i < libraries.size(); ++i) {
-      for (const ShaderLibrary* dependency : libraries[i]->dependencies) libraries.push_back(dependency);
-      byLanguage[0].add(libraries[i]->glsl);
-      byLanguage[1].add(derivedHlsl(*libraries[i]));
+    for (const ShaderLibrary* library : allShaderLibraries()) {
+      byLanguage[0].add(library->glsl);
+      byLanguage[1].add(derivedHlsl(*library));
     }
     for (auto& language : byLanguage) language.linkCalls();
   }

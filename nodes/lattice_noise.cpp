@@ -63,32 +63,32 @@ float gradientNoise(float x, float y) {
 
 const ShaderLibrary kLatticeNoiseLibrary = {
     "lattice_noise",
-    R"(uint wg_lattice_hash(ivec2 cell) {
+    R"(uint wg_lattice_hash(const ivec2 cell) {
   uvec2 q = uvec2(cell) * uvec2(1597334673u, 3812015801u);
   return (q.x ^ q.y) * 1597334673u;
 }
-float wg_hash_to_unit(uint n) { return float(n >> 8u) * (1.0 / 16777216.0); }
-vec2 wg_quintic(vec2 f) { return f * f * f * (f * (f * 6.0 - 15.0) + 10.0); }
+float wg_hash_to_unit(const uint n) { return float(n >> 8u) * (1.0 / 16777216.0); }
+vec2 wg_quintic(const vec2 f) { return f * f * f * (f * (f * 6.0 - 15.0) + 10.0); }
 // The four corner hashes in one uvec4: the same per-corner arithmetic as
 // wg_lattice_hash, in a quarter of the instructions.
-vec4 wg_corner_values(ivec2 i) {
+vec4 wg_corner_values(const ivec2 i) {
   uvec4 x = uvec4(ivec4(i.x, i.x + 1, i.x, i.x + 1)) * 1597334673u;
   uvec4 y = uvec4(ivec4(i.y, i.y, i.y + 1, i.y + 1)) * 3812015801u;
   return vec4((x ^ y) * 1597334673u >> 8u) * (1.0 / 16777216.0);
 }
-float wg_value_noise(vec2 p) {
+float wg_value_noise(const vec2 p) {
   vec2 cell = floor(p);
   vec2 u = wg_quintic(p - cell);
   vec4 c = wg_corner_values(ivec2(cell));
   vec2 edge = mix(c.xz, c.yw, u.x);
   return mix(edge.x, edge.y, u.y);
 }
-float wg_gradient_dot(ivec2 i, vec2 d) {
+float wg_gradient_dot(const ivec2 i, const vec2 d) {
   uint n = wg_lattice_hash(i);
   vec2 g = vec2(wg_hash_to_unit(n), wg_hash_to_unit(n * 747796405u + 2891336453u)) * 2.0 - 1.0;
   return g.x * d.x + g.y * d.y;
 }
-float wg_gradient_noise(vec2 p) {
+float wg_gradient_noise(const vec2 p) {
   vec2 cell = floor(p);
   vec2 f = p - cell;
   vec2 u = wg_quintic(f);

@@ -19,12 +19,12 @@ Value normalized3(float x, float y, float z) {
 
 const ShaderLibrary kNormalMapLibrary = {
     "normal_map",
-    R"(vec3 wg_unpack_normal(vec3 rgb, float strength) {
+    R"(vec3 wg_unpack_normal(const vec3 rgb, const float strength) {
   vec3 n = rgb * 2.0 - 1.0;
   n.xy *= strength;
   return n * inversesqrt(max(dot(n, n), 1e-12));
 }
-vec3 wg_blend_normals_rnm(vec3 base, vec3 detail) {
+vec3 wg_blend_normals_rnm(const vec3 base, const vec3 detail) {
   vec3 t = base + vec3(0.0, 0.0, 1.0);
   vec3 u = detail * vec3(-1.0, -1.0, 1.0);
   vec3 r = t * (dot(t, u) / max(t.z, 1e-4)) - u;

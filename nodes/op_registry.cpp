@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "nodes/core_library.hpp"
 #include "nodes/op_template_check.hpp"
+#include "nodes/pbr_shading.hpp"
 
 namespace wg {
 
@@ -23,6 +25,7 @@ namespace {
 struct Registry {
   std::vector<OpDef> ops;
   std::vector<const OpDef*> sorted;
+  std::vector<const ShaderLibrary*> libraries;
 
   Registry() {
     appendMathOps(ops);
@@ -40,6 +43,16 @@ struct Registry {
     }
     std::sort(sorted.begin(), sorted.end(),
               [](const OpDef* a, const OpDef* b) { return a->name < b->name; });
+    addLibrary(kCoreLibrary);
+    addLibrary(kPbrShadingLibrary);
+    for (const OpDef* op : sorted)
+      for (const ShaderLibrary* library : op->libraries) addLibrary(*library);
+  }
+
+  void addLibrary(const ShaderLibrary& library) {
+    if (std::find(libraries.begin(), libraries.end(), &library) != libraries.end()) return;
+    libraries.push_back(&library);
+    for (const ShaderLibrary* dependency : library.dependencies) addLibrary(*dependency);
   }
 };
 
@@ -57,6 +70,8 @@ const OpDef* findOp(std::string_view name) {
 }
 
 std::span<const OpDef* const> allOps() { return registry().sorted; }
+
+std::span<const ShaderLibrary* const> allShaderLibraries() { return registry().libraries; }
 
 std::vector<std::string_view> opNames() {
   std::vector<std::string_view> names;

@@ -12,6 +12,10 @@ const OpDef* findOp(std::string_view name);
 std::span<const OpDef* const> allOps();  // sorted by name
 std::vector<std::string_view> opNames();
 
+// Every shader library a stage can emit: the core and shading libraries, each op's and
+// their dependencies, each once, in a fixed order.
+std::span<const ShaderLibrary* const> allShaderLibraries();
+
 // Each family file contributes its ops.
 void appendMathOps(std::vector<OpDef>& ops);
 void appendVectorOps(std::vector<OpDef>& ops);

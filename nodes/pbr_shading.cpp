@@ -73,33 +73,33 @@ std::array<float, 3> shadeSurface(const ShadingInputs& in) {
 const ShaderLibrary kPbrShadingLibrary = {
     "pbr_shading",
     R"(// Seed 000, eq. 2.1-2.5: the UE4 shading model.
-float wg_pow5(float x) { return x * x * x * x * x; }
+float wg_pow5(const float x) { return x * x * x * x * x; }
 // Eq. 2.1: Burley diffuse with FD90 = 0.5 + 2 r cos^2(theta_d), energy-normalised.
-float wg_burley_diffuse(float roughness, float NoL, float NoV, float LoH) {
+float wg_burley_diffuse(const float roughness, const float NoL, const float NoV, const float LoH) {
   float fd90 = 0.5 + 2.0 * roughness * LoH * LoH;
   float lightScatter = 1.0 + (fd90 - 1.0) * wg_pow5(1.0 - NoL);
   float viewScatter = 1.0 + (fd90 - 1.0) * wg_pow5(1.0 - NoV);
   return lightScatter * viewScatter * (1.0 + (0.66225166 - 1.0) * roughness);
 }
 // Eq. 2.3: GGX with alpha = roughness^2.
-float wg_ggx(float NoH, float roughness) {
+float wg_ggx(const float NoH, const float roughness) {
   float a = roughness * roughness;
   float a2 = a * a;
   float d = NoH * NoH * (a2 - 1.0) + 1.0;
   return a2 / (3.14159265 * d * d);
 }
 // Eq. 2.4: Schlick-Smith with k = (r + 1)^2 / 8.
-float wg_smith_g(float NoL, float NoV, float roughness) {
+float wg_smith_g(const float NoL, const float NoV, const float roughness) {
   float k = (roughness + 1.0) * (roughness + 1.0) / 8.0;
   return (NoL / (NoL * (1.0 - k) + k)) * (NoV / (NoV * (1.0 - k) + k));
 }
 // Eq. 2.5: spherical-Gaussian Schlick Fresnel.
-vec3 wg_fresnel(vec3 f0, float VoH) {
+vec3 wg_fresnel(const vec3 f0, const float VoH) {
   return f0 + (1.0 - f0) * exp2((-5.55473 * VoH - 6.98316) * VoH);
 }
 // Sun shadow: 2x2 percentage-closer filtering of the shadow map's depth. The normal
 // offset and depth bias keep lit surfaces from shadowing themselves.
-float wg_sun_shadow(vec3 p, vec3 n) {
+float wg_sun_shadow(const vec3 p, const vec3 n) {
   if (frame_shadowMapTexel <= 0.0) return 1.0;
   vec4 clip = frame_lightViewProjection * vec4(p + n * 0.04, 1.0);
   if (clip.w <= 0.0) return 1.0;
@@ -115,8 +115,8 @@ float wg_sun_shadow(vec3 p, vec3 n) {
   return lit * 0.25;
 }
 // Eq. 2.2 plus Burley diffuse, sun (times its shadow) and sky ambient, metallic workflow.
-vec3 wg_shade(vec3 baseColor, float metallic, float roughness, float specular, float ao, vec3 emissive,
-              vec3 N, vec3 V, float shadow) {
+vec3 wg_shade(const vec3 baseColor, const float metallic, float roughness, const float specular, const float ao,
+              const vec3 emissive, const vec3 N, const vec3 V, const float shadow) {
   roughness = clamp(roughness, 0.02, 1.0);
   vec3 L = frame_sunDirection;
   vec3 H = wg_safe_normalize(V + L);

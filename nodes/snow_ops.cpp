@@ -57,7 +57,7 @@ const ShaderLibrary kSnowGroundLibrary = {
     "snow_ground",
     R"(// Height (m) and the level layer's tangent-space normal (x along +x, y along +z) of
 // the terrain, from its map at the point and kStep east, west, north and south.
-vec4 wg_snow_ground(float h, float east, float west, float north, float south) {
+vec4 wg_snow_ground(const float h, const float east, const float west, const float north, const float south) {
   const float kStep = 0.5;
   float s = frame_terrainHeightScale;
   return vec4(h * s, wg_safe_normalize(vec3((west - east) * s, (south - north) * s, 2.0 * kStep)));
@@ -66,7 +66,7 @@ vec4 wg_snow_ground(float h, float east, float west, float north, float south) {
 // weather library's exposure (open when nothing is 10 cm above, sheltered under 50 cm),
 // one tap without its filtering, so the layer carries no weather code; outside the
 // map's region, open.
-float wg_snow_sky_open(vec3 p, float occluder, vec2 uv) {
+float wg_snow_sky_open(const vec3 p, const float occluder, const vec2 uv) {
   bool inside = frame_skyExposureRegion.z > 0.0 && all(equal(uv, clamp(uv, 0.0, 1.0)));
   return inside ? 1.0 - smoothstep(p.y + 0.1, p.y + 0.5, occluder) : 1.0;
 }
@@ -89,7 +89,7 @@ constexpr float kSparkleRadius = 0.25f;  // cells
 const ShaderLibrary kSnowGlitterLibrary = {
     "snow_glitter",
     R"(// s: the bump's spread (S's xx, xy, yy) in this level's cells squared.
-float wg_sparkle_level(vec2 g, float density, uint salt, vec3 s) {
+float wg_sparkle_level(const vec2 g, const float density, const uint salt, const vec3 s) {
   vec2 b = floor(g - 0.5);
   vec4 cx = b.x + vec4(0.0, 1.0, 0.0, 1.0);
   vec4 cy = b.y + vec4(0.0, 0.0, 1.0, 1.0);
@@ -106,7 +106,7 @@ float wg_sparkle_level(vec2 g, float density, uint salt, vec3 s) {
 // base cells is r0^2 I + r^2 J J' (r0 = 0.25 cell, r = 1.5 pixels); level n divides the
 // footprint's part by 4^n. At level f - 1 that part's trace is 0.5, so the bump is at
 // most sqrt(0.0625 + 0.5) = 0.75 cell in radius; floor(f) and floor(f) + 1 fit too.
-float wg_snow_sparkle(vec2 xz, float density, float cellsPerMetre, vec2 ex, vec2 ey) {
+float wg_snow_sparkle(const vec2 xz, const float density, const float cellsPerMetre, const vec2 ex, const vec2 ey) {
   vec2 jx = vec2(ex.x, ey.x) * (1.5 * cellsPerMetre), jy = vec2(ex.y, ey.y) * (1.5 * cellsPerMetre);
   vec3 jj = vec3(dot(jx, jx), dot(jx, jy), dot(jy, jy));
   float f = clamp(0.5 * log2(max(jj.x + jj.z, 1e-12)) + 1.5, 0.0, 16.0);
