@@ -89,21 +89,21 @@ TEST(StageWriter, DebugViewsComeFromTheIr) {
   IrGraph ir = weatheredRock();
   ASSERT_EQ(ir.debugViews.size(), kDebugViews.size() - 1);  // every view but "lit"
   std::string text = fragmentText(ir);
-  EXPECT_NE(text.find("if (frame_debugView == 4u) wg_color = vec3(wg_coverage_snow);"), std::string::npos);
-  EXPECT_NE(text.find("if (frame_debugView == 14u) { wg_color = wg_worldTangent.xyz; wg_alpha = wg_worldTangent.w; }"),
+  EXPECT_NE(text.find("case 4u: wg_color = vec3(wg_coverage_snow); break;"), std::string::npos);
+  EXPECT_NE(text.find("case 14u: wg_color = wg_worldTangent.xyz; wg_alpha = wg_worldTangent.w; break;"),
             std::string::npos);
 
   ir.debugViews[3].source = DebugSource::WorldPosition;  // view 4, "snow"
   text = fragmentText(ir);
-  EXPECT_NE(text.find("if (frame_debugView == 4u) wg_color = wg_worldPosition;"), std::string::npos);
+  EXPECT_NE(text.find("case 4u: wg_color = wg_worldPosition; break;"), std::string::npos);
   ir.debugViews.clear();
-  EXPECT_EQ(fragmentText(ir).find("frame_debugView =="), std::string::npos);
+  EXPECT_EQ(fragmentText(ir).find("switch (frame_debugView)"), std::string::npos);
 }
 
 TEST(StageWriter, DebugViewsSplatScalarSlotsInEachLanguage) {
   IrGraph ir = weatheredRock();
-  EXPECT_NE(fragmentText(ir).find("if (frame_debugView == 2u) wg_color = vec3(wg_roughness);"), std::string::npos);
-  EXPECT_NE(fragmentText(ir, ShaderLanguage::Hlsl).find("if (frame_debugView == 2u) wg_color = ((float3)(wg_roughness));"),
+  EXPECT_NE(fragmentText(ir).find("case 2u: wg_color = vec3(wg_roughness); break;"), std::string::npos);
+  EXPECT_NE(fragmentText(ir, ShaderLanguage::Hlsl).find("case 2u: wg_color = ((float3)(wg_roughness)); break;"),
             std::string::npos);
 }
 
