@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -17,17 +18,22 @@
 #include "compiler/literal.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "runtime/material_compile_error.hpp"
+#include "runtime/scene/graph_path.hpp"
+#include "runtime/scene/preview_stand.hpp"
 #include "runtime/scene_renderer.hpp"
 
 namespace wg {
 
 namespace {
 
-constexpr const char* kUsage = R"(Usage: weathergen bench-render [--scene NAME|all | --model MODEL.gltf [--model-scale S]]
+constexpr const char* kUsage = R"(Usage: weathergen bench-render [--scene NAME|all | --material GRAPH.json |
+                               --model MODEL.gltf [--model-scale S]]
                               [--frames N] [--size WxH] [--samples N] [--device NAME]
 
-Renders each scene (or the glTF model on its stage, as 'render --model' draws it) N times (default 30, after 3 warm-up frames) per configuration and
-prints the median GPU time of the colour pass, from Vulkan timestamp queries:
+Renders each scene (or the graph on the preview stand, as 'render --material' draws
+it, or the glTF model on its stage, as 'render --model' does) N times (default 30,
+after 3 warm-up frames) per configuration and prints the median GPU time of the colour pass, from Vulkan timestamp queries:
   none      every material compiled with weather preset "none" (the baseline)
   neutral   dry and warm (every level 0): the runtime binds the unweathered variant
   neutral*  the same weather drawn with the weathered shaders (their uniform branch)
@@ -43,7 +49,7 @@ double median(std::vector<double> v) {
 }
 
 struct BenchRenderOptions {
-  std::string sceneArg = "all", device, size = "1920x1080", modelPath;
+  std::string sceneArg = "all", device, size = "1920x1080", materialPath, modelPath;
   float modelScale = 1.f;
   int frames = 30;
   unsigned samples = kDefaultColourSamples;
@@ -60,6 +66,7 @@ std::string setModelScale(const std::string& v, float& modelScale) {
 OptionTable benchRenderOptionTable(BenchRenderOptions& o) {
   return {.options = {
       {"--scene", "", "NAME|all", "a bundled scene, or all of them (default)", storeValue(o.sceneArg)},
+      {"--material", "", "GRAPH.json", "a graph on the preview stand instead of the scenes", storeValue(o.materialPath)},
       {"--model", "", "MODEL.gltf", "a glTF model on its stage instead of the scenes", storeValue(o.modelPath)},
       {"--model-scale", "", "S", "with --model: metres per model unit",
        [&o](const std::string& v) { return setModelScale(v, o.modelScale); }},
@@ -73,9 +80,16 @@ OptionTable benchRenderOptionTable(BenchRenderOptions& o) {
   }};
 }
 
-// The scenes to measure: the model on its stage, or the bundled scenes --scene names.
-// Returns the exit code when there are none.
+// The scenes to measure: the graph on the stand, the model on its stage, or the bundled
+// scenes --scene names. Returns the exit code when there are none.
 int chooseScenes(const BenchRenderOptions& o, ModelScene& model, std::vector<scene::Scene>& scenes) {
+  if (!o.materialPath.empty() && !o.modelPath.empty()) return briefUsageError("--material and --model exclude each other");
+  if (!o.materialPath.empty()) {
+    if (!scene::isGraphFilePath(o.materialPath))
+      return briefUsageError("--material takes a graph file ending in .json, not '" + quoteUserText(o.materialPath) + "'");
+    scenes.push_back(scene::previewStand(o.materialPath, "stand-" + std::filesystem::path(o.materialPath).stem().string()));
+    return kExitOk;
+  }
   if (!o.modelPath.empty()) {
     if (int e = loadModelScene(o.modelPath, {}, o.modelScale, model)) return e;
     scenes.push_back(std::move(model.scene));
@@ -138,8 +152,13 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | active / none |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   std::size_t gpuBytes = 0;
-  for (auto& scene : scenes)
-    gpuBytes = std::max(gpuBytes, measureScene(*ctx, std::move(scene), graphsDir, width, height, o));
+  try {
+    for (auto& scene : scenes)
+      gpuBytes = std::max(gpuBytes, measureScene(*ctx, std::move(scene), graphsDir, width, height, o));
+  } catch (const MaterialCompileError& e) {  // a user's graph (--material) that does not compile
+    printDiagnostics(e.diagnostics(), false);
+    return kExitBadInput;
+  }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   std::printf("\nPeak resident memory of the process: %.1f MiB (ru_maxrss). Largest scene's device allocations "

@@ -1,6 +1,6 @@
-// weathergen render --material, --camera orbit: and --watch through the CLI: any graph
-// (bundled or a user's, with its own PNG) on the preview stand, the roof keeping its
-// ground dry, framed orbit views of the stand and of a bundled scene, usage errors,
+// weathergen render --material (and bench-render --material), --camera orbit: and
+// --watch through the CLI: any graph (bundled or a user's, with its own PNG) on the
+// preview stand, the roof keeping its ground dry, framed orbit views of the stand and of a bundled scene, usage errors,
 // graph errors as diagnostics, and a watch session that re-renders after edits and
 // keeps the last good image through a broken one.
 #include <gtest/gtest.h>
@@ -185,6 +185,29 @@ TEST(RenderMaterialCli, GraphErrorsPrintDiagnosticsAndExitOne) {
   EXPECT_NE(r.output.find("[/nodes/1/op]"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("hint: did you mean 'sample'?"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir.path() / "out.png"));
+}
+
+// bench-render --material: the weather's frame cost for a user's graph on the stand, one
+// row named after the graph; a graph that does not compile is bad input, as for render.
+TEST(RenderMaterialCli, BenchRenderMeasuresAUserGraphOnTheStand) {
+  TempDir dir("material-cli-bench");
+  fs::path graph = writeUserGraph(dir.path());
+  const std::string bench = cli() + " bench-render --size 32x18 --frames 1 --material ";
+  CommandResult r = runCommand(bench + shellQuote(graph.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("\n| stand-user | "), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("| valley |"), std::string::npos) << r.output;  // the stand alone
+
+  fs::create_directories(dir.path() / "broken");
+  fs::path broken = writeUserGraph(dir.path() / "broken", "sampel");
+  r = runCommand(bench + shellQuote(broken.string()));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("user.json:6:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("error WG2001"), std::string::npos) << r.output;
+
+  r = runCommand(bench + shellQuote(graph.string()) + " --model model.glb");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--material and --model exclude each other"), std::string::npos) << r.output;
 }
 
 TEST(RenderMaterialCli, TimelineWritesTheSheetStripAndFramesOfTheStand) {
