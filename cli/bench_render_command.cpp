@@ -4,9 +4,9 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -33,7 +33,8 @@ constexpr const char* kUsage = R"(Usage: weathergen bench-render [--scene NAME|a
 
 Renders each scene (or the graph on the preview stand, as 'render --material' draws
 it, or the glTF model on its stage, as 'render --model' does) N times (default 30,
-after 3 warm-up frames) per configuration and prints the median GPU time of the colour pass, from Vulkan timestamp queries:
+after 3 warm-up frames) per configuration and prints the median GPU time of the
+colour pass, from Vulkan timestamp queries:
   none      every material compiled with weather preset "none" (the baseline)
   neutral   dry and warm (every level 0): the runtime binds the unweathered variant
   neutral*  the same weather drawn with the weathered shaders (their uniform branch)
@@ -136,8 +137,9 @@ std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string
   };
   double tNone = measure(requests.none), tNeutral = measure(requests.neutral), tBranch = measure(requests.branchOnly),
          tActive = measure(requests.active);
-  std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f |\n", name.c_str(), tNone, tNeutral, tBranch, tActive,
-              tNeutral / tNone, tBranch / tNone, tActive / tNone);
+  // The stand's and a model's names carry the file's stem: user text, escaped.
+  std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f |\n", quoteUserText(name, 200).c_str(), tNone,
+              tNeutral, tBranch, tActive, tNeutral / tNone, tBranch / tNone, tActive / tNone);
   std::fflush(stdout);
   return renderer.gpuMemoryBytes();
 }

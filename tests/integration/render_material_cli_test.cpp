@@ -205,6 +205,13 @@ TEST(RenderMaterialCli, BenchRenderMeasuresAUserGraphOnTheStand) {
   EXPECT_NE(r.output.find("user.json:6:"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("error WG2001"), std::string::npos) << r.output;
 
+  fs::path oddName = dir.path() / "us\x1b[31mer.json";  // the row names the file: escaped
+  fs::copy_file(graph, oddName);
+  r = runCommand(bench + shellQuote(oddName.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("| stand-us"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+
   r = runCommand(bench + shellQuote(graph.string()) + " --model model.glb");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("--material and --model exclude each other"), std::string::npos) << r.output;
