@@ -38,6 +38,7 @@ class GlslSyntax final : public ShaderSyntax {
     constexpr std::array<std::string_view, 6> kNames = {"float", "vec2", "vec3", "vec4", "bool", "texture2D"};
     return kNames[static_cast<int>(type)];
   }
+  std::string stageVariable(std::string_view identifier, ShaderStage) const override { return std::string(identifier); }
   std::string splat(ValueType to, std::string_view scalar) const override {
     return std::string(typeName(to)) + "(" + std::string(scalar) + ")";
   }

@@ -81,6 +81,10 @@ class HlslSyntax final : public ShaderSyntax {
     constexpr std::array<std::string_view, 6> kNames = {"float", "float2", "float3", "float4", "bool", "Texture2D"};
     return kNames[static_cast<int>(type)];
   }
+  // Stage IO lives in the entry point's structs (stageIoTranslation).
+  std::string stageVariable(std::string_view identifier, ShaderStage stage) const override {
+    return (stage == ShaderStage::Vertex ? "wg_out." : "wg_in.") + std::string(identifier);
+  }
   std::string splat(ValueType to, std::string_view scalar) const override {
     return "((" + std::string(typeName(to)) + ")(" + std::string(scalar) + "))";
   }

@@ -52,6 +52,9 @@ class ShaderSyntax {
   virtual std::string_view libraryCode(const ShaderLibrary& library) const = 0;
   virtual std::string_view opCode(const OpDef& op) const = 0;
   virtual std::string frameCode(std::string_view glsl, ShaderStage stage) const = 0;
+  // A varying as the stage's code reads or writes it: the vertex stage's output, the
+  // fragment stage's input.
+  virtual std::string stageVariable(std::string_view identifier, ShaderStage stage) const = 0;
 
   void appendConstant(std::string& out, const Value& value) const;
   // The fragment stage's output alpha: 1, or the opacity in the lit view of a blended

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "backends/op_template.hpp"
+#include "backends/source_text.hpp"
 #include "nodes/core_library.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
@@ -92,6 +93,7 @@ class StageWriter {
   void emitBody(std::string& body) {
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
       if (needed_[i] && !graph_.nodes[i].weather) emitNode(i, body, "  ");
+    appendInterpolantWrites(body, "  ", /*weather=*/false);
     const auto slots = stageSlots();
     for (std::size_t slot : slots) {
       const Operand& base = graph_.weatherGuarded() ? graph_.unweathered[slot] : graph_.outputs[slot];
@@ -102,6 +104,7 @@ class StageWriter {
     bool anyGuarded = false;
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i) anyGuarded = anyGuarded || (needed_[i] && graph_.nodes[i].weather);
     if (!graph_.weatherGuarded() || !anyGuarded) return;
+    appendInterpolantDefaults(body);
     body += "  if (";
     for (std::size_t i = 0; i < graph_.weatherGuard.size(); ++i) {
       if (i) body += " + ";
@@ -110,9 +113,32 @@ class StageWriter {
     body += " > 0.0) {\n";
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
       if (needed_[i] && graph_.nodes[i].weather) emitNode(i, body, "    ");
+    appendInterpolantWrites(body, "    ", /*weather=*/true);
     for (std::size_t slot : slots)
       if (!(graph_.outputs[slot] == graph_.unweathered[slot])) appendSlotAssignment(body, "    ", slot, graph_.outputs[slot]);
     body += "  }\n";
+  }
+
+  // The interpolants, in the target language's spelling of this stage's varying.
+  std::string interpolantVariable(std::size_t k) const {
+    return syntax_.stageVariable(mi_.varyings[mi_.interpolantVaryings[k]].identifier, stage_);
+  }
+  // The vertex stage writes each interpolant where its node was emitted: the weather's
+  // inside the weather branch, after a zero for when the branch is skipped.
+  void appendInterpolantWrites(std::string& body, std::string_view lead, bool weather) const {
+    if (stage_ != ShaderStage::Vertex) return;
+    for (std::size_t k = 0; k < graph_.interpolants.size(); ++k) {
+      std::uint32_t node = graph_.interpolants[k];
+      if (graph_.nodes[node].weather != weather) continue;
+      appendText(body, lead, interpolantVariable(k), " = ", names_[node], ";\n");
+    }
+  }
+  void appendInterpolantDefaults(std::string& body) const {
+    if (stage_ != ShaderStage::Vertex) return;
+    for (std::size_t k = 0; k < graph_.interpolants.size(); ++k) {
+      const IrNode& node = graph_.nodes[graph_.interpolants[k]];
+      if (node.weather) appendText(body, "  ", interpolantVariable(k), " = ", syntax_.splat(node.valueType, "0.0"), ";\n");
+    }
   }
 
   // "<lead><slot local> = <operand>;": the result locals' lines.
@@ -124,16 +150,23 @@ class StageWriter {
     body += ";\n";
   }
 
+  // The stage's nodes. The fragment stage reads an interpolant and needs nothing of its
+  // inputs for it; the vertex stage computes it.
   void markNeeded() {
     needed_.assign(graph_.nodes.size(), false);
+    interpolated_.assign(graph_.nodes.size(), false);
     for (std::size_t slot : stageSlots()) {
       for (const Operand* o : {&graph_.outputs[slot], &graph_.unweathered[slot]}) {
         if (o == &graph_.unweathered[slot] && !graph_.weatherGuarded()) continue;
         if (o->kind == Operand::Kind::Node) needed_[o->node] = true;
       }
     }
+    for (std::uint32_t node : graph_.interpolants) {
+      if (stage_ == ShaderStage::Vertex) needed_[node] = true;
+      else interpolated_[node] = true;
+    }
     for (std::size_t i = graph_.nodes.size(); i-- > 0;)
-      if (needed_[i])
+      if (needed_[i] && !interpolated_[i])
         for (const auto& o : graph_.nodes[i].inputs)
           if (o.kind == Operand::Kind::Node) needed_[o.node] = true;
   }
@@ -197,6 +230,7 @@ class StageWriter {
 
   void emitNode(std::size_t index, std::string& body, std::string_view indent) {
     const IrNode& node = graph_.nodes[index];
+    if (interpolated_[index]) return emitInterpolantRead(index, body, indent);
     const OpDef& op = *node.op;
     const OpTemplate* pieces = registeredOpTemplate(syntax_, op);
     OpTemplate unregistered;
@@ -211,12 +245,20 @@ class StageWriter {
     body += ";\n";
   }
 
+  void emitInterpolantRead(std::size_t index, std::string& body, std::string_view indent) const {
+    auto k = static_cast<std::size_t>(
+        std::find(graph_.interpolants.begin(), graph_.interpolants.end(), index) - graph_.interpolants.begin());
+    appendText(body, indent, syntax_.typeName(graph_.nodes[index].valueType), ' ', names_[index], " = ",
+               interpolantVariable(k), ";\n");
+  }
+
   const IrGraph& graph_;
   const MaterialInterface& mi_;
   const ShaderSyntax& syntax_;
   ShaderStage stage_;
   const std::vector<std::string>& names_;
   std::vector<bool> needed_;
+  std::vector<bool> interpolated_;  // fragment stage: read from an interpolant
   std::vector<std::string_view> calls_;  // of the emitted nodes' templates
 };
 

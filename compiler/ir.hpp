@@ -90,6 +90,9 @@ struct IrGraph {
   // weather is off and nothing is guarded.
   std::vector<std::string_view> weatherGuard;
   std::vector<IrDebugView> debugViews;  // the fragment stage's views besides "lit"
+  // Nodes the vertex stage computes and the fragment stage reads interpolated, in index
+  // order. Set by the last pass (vertex-rate), since it records node indices.
+  std::vector<std::uint32_t> interpolants;
 
   bool weatherGuarded() const { return !weatherGuard.empty(); }
 

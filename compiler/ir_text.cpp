@@ -1,5 +1,7 @@
 #include "compiler/ir_text.hpp"
 
+#include <algorithm>
+
 #include "compiler/literal.hpp"
 
 namespace wg {
@@ -38,7 +40,8 @@ std::string nodeText(const IrGraph& graph, std::size_t index) {
     out += (port ? ", " : "") + std::string(spec.name) + ": ";
     out += spec.type == PortType::Text ? "'" + quoteUserText(node.text) + "'" : operandText(graph, node.inputs[port]);
   }
-  return out + ")" + (node.weather ? " [weather]" : "") + "\n";
+  bool perVertex = std::find(graph.interpolants.begin(), graph.interpolants.end(), index) != graph.interpolants.end();
+  return out + ")" + (node.weather ? " [weather]" : "") + (perVertex ? " [per vertex]" : "") + "\n";
 }
 
 std::string rootsText(const IrGraph& graph, const std::array<Operand, kIrOutputCount>& roots) {

@@ -124,6 +124,18 @@ std::string checkRoots(const IrGraph& graph, const std::array<Operand, kIrOutput
   return "";
 }
 
+// Interpolants: vertex-rate nodes, each named once, in index order.
+std::string checkInterpolants(const IrGraph& graph) {
+  for (std::size_t k = 0; k < graph.interpolants.size(); ++k) {
+    std::uint32_t node = graph.interpolants[k];
+    std::string label = "interpolant " + std::to_string(k) + " (node " + std::to_string(node) + ")";
+    if (node >= graph.nodes.size()) return label + " does not exist";
+    if (k > 0 && node <= graph.interpolants[k - 1]) return label + " is out of index order";
+    if (graph.nodes[node].op->rate != OpRate::Vertex) return label + " is not a vertex-rate op";
+  }
+  return "";
+}
+
 std::string checkCanonicalOrder(const IrGraph& graph) {
   std::vector<std::uint32_t> order = canonicalNodeOrder(graph);
   if (order.size() != graph.nodes.size())
@@ -142,6 +154,7 @@ std::string verifyIr(const IrGraph& graph, const IrVerifyOptions& options) {
   if (std::string problem = checkRoots(graph, graph.outputs, "output"); !problem.empty()) return problem;
   if (graph.weatherGuarded())
     if (std::string problem = checkRoots(graph, graph.unweathered, "unweathered output"); !problem.empty()) return problem;
+  if (std::string problem = checkInterpolants(graph); !problem.empty()) return problem;
   return options.canonicalOrder ? checkCanonicalOrder(graph) : "";
 }
 

@@ -139,6 +139,13 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
     mi.vertexInputs.push_back({"texcoord1", "in_texcoord1", InterfaceType::Vec2, static_cast<std::uint32_t>(kAttributes.size())});
     mi.varyings.push_back({"texcoord1", "v_texcoord1", InterfaceType::Vec2, static_cast<std::uint32_t>(kVaryings.size())});
   }
+  // The vertex-rate pass's values, named by their order alone.
+  for (std::size_t k = 0; k < graph.interpolants.size(); ++k) {
+    std::string name = "interpolant" + std::to_string(k);
+    mi.interpolantVaryings.push_back(mi.varyings.size());
+    mi.varyings.push_back({name, "v_" + name, interfaceTypeOf(graph.nodes[graph.interpolants[k]].valueType),
+                           static_cast<std::uint32_t>(mi.varyings.size())});
+  }
   return mi;
 }
 

@@ -55,6 +55,8 @@ struct MaterialInterface {
   std::vector<TextureBinding> weatherMaps;
   std::vector<StageVariable> vertexInputs;  // "texcoord1" only when the graph reads it
   std::vector<StageVariable> varyings;
+  // IrGraph::interpolants[k] travels in varyings[interpolantVaryings[k]].
+  std::vector<std::size_t> interpolantVaryings;
   bool hasTexcoord1() const;
 };
 

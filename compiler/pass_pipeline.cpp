@@ -14,6 +14,8 @@ constexpr Pass kPasses[] = {
     {"dead-node-elim", "removes nodes no output depends on", eliminateDeadNodes},
     {"topo-order", "orders nodes by a depth-first walk from the outputs, so order depends only on content",
      orderTopologically, /*ordersCanonically=*/true},
+    {"vertex-rate", "moves smooth values the fragment stage needs (terrain slope) to the vertex stage, read interpolated",
+     hoistVertexRate},
 };
 }  // namespace
 

@@ -56,6 +56,7 @@ void simplifyAlgebra(IrGraph& graph);
 void eliminateCommonSubexpressions(IrGraph& graph);
 void eliminateDeadNodes(IrGraph& graph);
 void orderTopologically(IrGraph& graph);
+void hoistVertexRate(IrGraph& graph);
 
 // The order topo-order sorts into: old node indices, reachable nodes only.
 std::vector<std::uint32_t> canonicalNodeOrder(const IrGraph& graph);

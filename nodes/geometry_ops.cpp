@@ -25,6 +25,7 @@ void appendGeometryOps(std::vector<OpDef>& ops) {
                             const auto& p = c.surface->worldPosition;
                             return Value::vec3(p[0], p[1], p[2]);
                           }));
+  ops.back().rate = OpRate::Any;  // the vertex stage's is before its offset (snow depth)
   ops.push_back(surfaceOp("world_normal", "interpolated world-space geometric normal, unit length",
                           ValueType::Vec3, "{@worldNormal}", [](const Value*, const EvalContext& c) {
                             const auto& n = c.surface->worldNormal;

@@ -40,6 +40,7 @@ OpDef unary(std::string_view name, std::string_view summary, std::string_view gl
 }  // namespace
 
 void appendMathOps(std::vector<OpDef>& ops) {
+  const std::size_t first = ops.size();
   ops.push_back(binary("add", "a + b", "({a} + {b})", "", 0.f, 0.f, [](const Value* in, const EvalContext&) {
     return mapComponents(in[0], in[1], [](float a, float b) { return a + b; });
   }));
@@ -158,6 +159,8 @@ void appendMathOps(std::vector<OpDef>& ops) {
                  {{"condition", PortType::Bool, std::nullopt}, genRequired("ifTrue"), genRequired("ifFalse")},
                  ValueRule::Generic, ValueType::Float, "({condition} ? {ifTrue} : {ifFalse})", "", singleOutput(),
                  [](const Value* in, const EvalContext&) { return in[0].asBool() ? in[1] : in[2]; }});
+  // Functions of their inputs alone: the same in either stage.
+  for (std::size_t i = first; i < ops.size(); ++i) ops[i].rate = OpRate::Any;
 }
 
 }  // namespace wg

@@ -78,6 +78,13 @@ enum class OpPurity : std::uint8_t {
   Varying,  // reads geometry, time, textures or parameters: never folded
 };
 
+// Which stage may compute an op's value (compiler/passes/vertex_rate.cpp).
+enum class OpRate : std::uint8_t {
+  Pixel,   // the fragment stage only: derivatives, mip-mapped samples, the facing-corrected frame
+  Any,     // the vertex stage computes the same expression (geometry before the vertex offset)
+  Vertex,  // as Any, and smooth across a triangle: the fragment stage may read it interpolated
+};
+
 // How the op's value type is found.
 enum class ValueRule : std::uint8_t {
   Fixed,        // OpDef::valueType
@@ -107,6 +114,7 @@ struct OpDef {
   // Shared weather maps the op samples (set 0): "terrainHeight", "skyExposure",
   // "snowDeformation".
   std::vector<std::string_view> weatherMaps;
+  OpRate rate = OpRate::Pixel;  // Pixel unless vetted for the vertex stage
 
   const PortSpec* findInput(std::string_view port) const;
   int findOutput(std::string_view output) const;

@@ -119,6 +119,7 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                             return Value::vec2((in[0].v[0] - r[0]) * r[2], (in[0].v[2] - r[1]) * r[3]);
                           },
                           V));
+  ops.back().rate = OpRate::Any;
   {
     OpDef height = weatherOp("terrain_height", "the shared terrain height map at uv (0 where none is bound)",
                              {{"uv", PortType::Vec2, std::nullopt}}, F,
@@ -129,6 +130,7 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                              },
                              V);
     height.weatherMaps.push_back("terrainHeight");
+    height.rate = OpRate::Any;  // the map has one level: mip 0 in either stage
     ops.push_back(std::move(height));
   }
   ops.push_back(weatherOp("weather_terrain_slope", "eq. 3.12: slope from the height map shifted by 0.05",
@@ -137,6 +139,8 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                           [](const Value* in, const EvalContext&) {
                             return out3(terrainSlope(in[0].x(), in[1].x(), in[2].x(), in[3].x()));
                           }));
+  // Differences over a twentieth of the height map: smooth across any triangle.
+  ops.back().rate = OpRate::Vertex;
   ops.push_back(weatherOp("weather_terrain_orientation", "eq. 3.13: ((slope (1,1,0)) . N) (TN . (0,0,1)) intensity",
                           {vec3Required("slope"), vec3Required("normal"), floatPort("tangentNormalZ", 1.f), floatPort("intensity", 1.f)},
                           F, "wg_terrain_orientation({slope}, {normal}, {tangentNormalZ}, {intensity})",

@@ -56,7 +56,7 @@ TEST(DumpIrCli, AllPrintsAfterEveryPassInPipelineOrder) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::vector<std::string> expected;
   for (const char* variant : {"moss=off,quality=high", "moss=on,quality=high"})
-    for (const char* pass : {"weather-inject", "constant-fold", "algebraic-simplify", "cse", "dead-node-elim", "topo-order"})
+    for (const char* pass : {"weather-inject", "constant-fold", "algebraic-simplify", "cse", "dead-node-elim", "topo-order", "vertex-rate"})
       expected.push_back("# " + kRock + " [" + variant + "] after " + pass);
   EXPECT_EQ(headerLines(r.output), expected);
 }

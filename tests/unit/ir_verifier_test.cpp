@@ -46,6 +46,14 @@ std::string violationIn(const IrGraph& g, IrVerifyOptions options = {}) {
   return problem;
 }
 
+TEST(IrVerifier, CatchesAnInterpolantThatIsNoVertexRateNode) {
+  IrGraph g = sampleIr();
+  g.interpolants = {nodeOf(g, "multiply")};
+  EXPECT_EQ(verifyIr(g), "interpolant 0 (node 2) is not a vertex-rate op");
+  g.interpolants = {99};
+  EXPECT_EQ(verifyIr(g), "interpolant 0 (node 99) does not exist");
+}
+
 TEST(IrVerifier, AcceptsTheBuiltIrAndEveryPassResult) {
   IrGraph g = sampleIr();
   ASSERT_EQ(g.nodes.size(), 6u);

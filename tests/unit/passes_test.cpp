@@ -120,7 +120,7 @@ TEST(TopoOrderPass, InputsPrecedeUsersAndOrderFollowsOutputs) {
 TEST(PassPipeline, IsOneNamedOrderedList) {
   std::vector<std::string_view> names;
   for (const auto& p : passPipeline()) names.push_back(p.name);
-  EXPECT_EQ(names, (std::vector<std::string_view>{"weather-inject", "constant-fold", "algebraic-simplify", "cse", "dead-node-elim", "topo-order"}));
+  EXPECT_EQ(names, (std::vector<std::string_view>{"weather-inject", "constant-fold", "algebraic-simplify", "cse", "dead-node-elim", "topo-order", "vertex-rate"}));
 }
 
 TEST(PassPipeline, ResultDependsOnContentNotSpellingOrOrder) {
