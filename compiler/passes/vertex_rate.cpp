@@ -9,6 +9,10 @@ namespace wg {
 
 namespace {
 
+// Vulkan guarantees 64 components, 16 locations, between the stages; the fixed varyings
+// take up to 6 of them. Beyond this many, values stay in the fragment stage.
+constexpr std::size_t kMaxInterpolants = 8;
+
 // Whether the vertex stage can compute each node: its op allows it and so do its inputs.
 std::vector<bool> vertexComputable(const IrGraph& graph) {
   std::vector<bool> ok(graph.nodes.size(), false);
@@ -52,7 +56,8 @@ void hoistVertexRate(IrGraph& graph) {
     if (!needed[i]) continue;
     const IrNode& node = graph.nodes[i];
     bool interpolable = node.valueType != ValueType::Bool && node.valueType != ValueType::Texture;
-    if (node.op->rate == OpRate::Vertex && computable[i] && interpolable) {
+    bool room = graph.interpolants.size() < kMaxInterpolants;
+    if (node.op->rate == OpRate::Vertex && computable[i] && interpolable && room) {
       graph.interpolants.insert(graph.interpolants.begin(), static_cast<std::uint32_t>(i));
       continue;
     }

@@ -49,6 +49,30 @@ TEST(VertexRatePass, ASlopeOfTheTerrainMapIsComputedPerVertex) {
       << formatIrText(g);
 }
 
+// Every slope a different intensity, so none merge: more than the stages can pass.
+TEST(VertexRatePass, AtMostEightValuesAreInterpolatedAndTheRestStayPerPixel) {
+  std::string nodes = kSlopeNodes;
+  std::string sum = "0";
+  for (int i = 0; i < 12; ++i) {
+    std::string id = "s" + std::to_string(i);
+    nodes += R"(, {"id": ")" + id + R"(", "op": "weather_terrain_slope", "inputs": {"h0": "h0.out", "hShiftU": "hu.out", "hShiftV": "hv.out", "intensity": )" +
+             std::to_string(i + 2) + "}}";
+    nodes += R"(, {"id": "a)" + std::to_string(i) + R"(", "op": "add", "inputs": {"a": )" +
+             (i ? "\"a" + std::to_string(i - 1) + ".out\"" : std::string("0")) + R"(, "b": ")" + id + R"(.out"}})";
+    sum = "a" + std::to_string(i) + ".out";
+  }
+  std::string json = graphJson(nodes, R"("baseColor": ")" + sum + R"(")");
+  EXPECT_EQ(optimized(json).interpolants.size(), 8u);
+  CompileResult r = compileMaterialText("t.json", json, {});
+  ASSERT_TRUE(r.material);
+  const CompiledMaterial& m = *r.material;
+  for (const auto& stage : m.stages) EXPECT_FALSE(stage.spirv.empty());  // validated
+  std::string fragment = source(m, ShaderLanguage::Glsl, ShaderStage::Fragment);
+  EXPECT_TRUE(contains(fragment, "layout(location = 12) in vec3 v_interpolant7;"));
+  EXPECT_FALSE(contains(fragment, "v_interpolant8"));
+  EXPECT_TRUE(contains(fragment, "sampler2D(wg_terrain_height_map, wg_terrain_height_sampler)"));
+}
+
 TEST(VertexRatePass, ASlopeFromAMaterialTextureStaysInTheFragmentStage) {
   // The fragment stage samples a material texture with its mips: the vertex stage cannot.
   IrGraph g = optimized(graphJson(
