@@ -55,19 +55,26 @@ void appendStageVariable(std::string& out, const StageVariable& v) {
 
 // Stage IO lives in the entry point's structs, where the frame's GLSL (stage_frame.cpp)
 // names the varyings, gl_Position and gl_FrontFacing as globals.
+// A varying in the entry point's struct: the vertex stage's output, the fragment's input.
+std::string stageStructMember(std::string_view identifier, ShaderStage stage) {
+  return (stage == ShaderStage::Vertex ? "wg_out." : "wg_in.") + std::string(identifier);
+}
+
 HlslTranslation stageIoTranslation(ShaderStage stage) {
   static constexpr std::array<std::string_view, 6> kVaryings = {"v_worldPosition", "v_worldNormal", "v_worldTangent",
                                                                 "v_texcoord",      "v_color",       "v_texcoord1"};
-  static constexpr std::array<std::string_view, 6> kInputs = {"wg_in.v_worldPosition", "wg_in.v_worldNormal",
-                                                              "wg_in.v_worldTangent",  "wg_in.v_texcoord",
-                                                              "wg_in.v_color",         "wg_in.v_texcoord1"};
-  static constexpr std::array<std::string_view, 6> kOutputs = {"wg_out.v_worldPosition", "wg_out.v_worldNormal",
-                                                               "wg_out.v_worldTangent",  "wg_out.v_texcoord",
-                                                               "wg_out.v_color",         "wg_out.v_texcoord1"};
+  // The renames are views, so the spelled members live as long as the program.
+  static const auto kMembers = [] {
+    std::array<std::array<std::string, kVaryings.size()>, 2> members;
+    for (std::size_t i = 0; i < kVaryings.size(); ++i) {
+      members[0][i] = stageStructMember(kVaryings[i], ShaderStage::Vertex);
+      members[1][i] = stageStructMember(kVaryings[i], ShaderStage::Fragment);
+    }
+    return members;
+  }();
   bool vertex = stage == ShaderStage::Vertex;
   HlslTranslation translation = frameMatrixTranslation();
-  for (std::size_t i = 0; i < kVaryings.size(); ++i)
-    translation.renames.emplace_back(kVaryings[i], vertex ? kOutputs[i] : kInputs[i]);
+  for (std::size_t i = 0; i < kVaryings.size(); ++i) translation.renames.emplace_back(kVaryings[i], kMembers[vertex ? 0 : 1][i]);
   if (vertex) translation.renames.emplace_back("gl_Position", "wg_out.wg_clipPosition");
   else translation.renames.emplace_back("gl_FrontFacing", "wg_frontFacing");
   return translation;
@@ -81,9 +88,8 @@ class HlslSyntax final : public ShaderSyntax {
     constexpr std::array<std::string_view, 6> kNames = {"float", "float2", "float3", "float4", "bool", "Texture2D"};
     return kNames[static_cast<int>(type)];
   }
-  // Stage IO lives in the entry point's structs (stageIoTranslation).
   std::string stageVariable(std::string_view identifier, ShaderStage stage) const override {
-    return (stage == ShaderStage::Vertex ? "wg_out." : "wg_in.") + std::string(identifier);
+    return stageStructMember(identifier, stage);
   }
   std::string splat(ValueType to, std::string_view scalar) const override {
     return "((" + std::string(typeName(to)) + ")(" + std::string(scalar) + "))";
