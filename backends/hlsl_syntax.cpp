@@ -53,13 +53,13 @@ void appendStageVariable(std::string& out, const StageVariable& v) {
              " : TEXCOORD", Decimal{v.location}, ";\n");
 }
 
-// Stage IO lives in the entry point's structs, where the frame's GLSL (stage_frame.cpp)
-// names the varyings, gl_Position and gl_FrontFacing as globals.
 // A varying in the entry point's struct: the vertex stage's output, the fragment's input.
 std::string stageStructMember(std::string_view identifier, ShaderStage stage) {
   return (stage == ShaderStage::Vertex ? "wg_out." : "wg_in.") + std::string(identifier);
 }
 
+// Stage IO lives in the entry point's structs, where the frame's GLSL (stage_frame.cpp)
+// names the varyings, gl_Position and gl_FrontFacing as globals.
 HlslTranslation stageIoTranslation(ShaderStage stage) {
   static constexpr std::array<std::string_view, 6> kVaryings = {"v_worldPosition", "v_worldNormal", "v_worldTangent",
                                                                 "v_texcoord",      "v_color",       "v_texcoord1"};
