@@ -33,13 +33,14 @@ constexpr const char* kUsage = R"(Usage: weathergen bench-render [--scene NAME|a
 
 Renders each scene (or the graph on the preview stand, as 'render --material' draws
 it, or the glTF model on its stage, as 'render --model' does) N times (default 30,
-after 3 warm-up frames) per configuration and prints the median GPU time of the
-colour pass, from Vulkan timestamp queries:
+after 3 warm-up rounds) per configuration, the four in turn, and prints the median
+GPU time of the colour pass, from Vulkan timestamp queries:
   none      every material compiled with weather preset "none" (the baseline)
   neutral   dry and warm (every level 0): the runtime binds the unweathered variant
   neutral*  the same weather drawn with the weathered shaders (their uniform branch)
   active    the materials' own presets in mixed snow, rain, moss, frost and puddles
-and the overheads against none, then the process's peak memory.
+and the overheads against none (each the median of one round's ratios, so a machine
+whose speed drifts slows both sides alike), then the process's peak memory.
 )";
 
 constexpr int kWarmUpFrames = 3;
@@ -121,25 +122,34 @@ BenchRequests benchRequests(glm::vec3 sun, unsigned width, unsigned height) {
   return r;
 }
 
+// One configuration's frame times, and each against the same round's "none".
+struct Series {
+  std::vector<double> ms, overNone;
+};
+
 // Measures one scene and prints its row; returns its device allocations in bytes.
+// The configurations take turns frame by frame: on shared cores whose speed drifts,
+// measuring them one after another made "none" alone vary by a fifth between runs.
 std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string& graphsDir, unsigned width,
                          unsigned height, const BenchRenderOptions& o) {
   const BenchRequests requests = benchRequests(scene.towardsSun, width, height);
+  const RenderRequest* order[] = {&requests.none, &requests.neutral, &requests.branchOnly, &requests.active};
   std::string name = scene.name;
   SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(o.samples));
-  auto measure = [&](const RenderRequest& request) {
-    std::vector<double> times;
-    for (int i = 0; i < kWarmUpFrames + o.frames; ++i) {
-      double ms = renderer.render(request).gpuMilliseconds;
-      if (i >= kWarmUpFrames) times.push_back(ms);
+  Series series[4];
+  for (int round = 0; round < kWarmUpFrames + o.frames; ++round) {
+    double ms[4];
+    for (int c = 0; c < 4; ++c) ms[c] = renderer.render(*order[c]).gpuMilliseconds;
+    if (round < kWarmUpFrames) continue;
+    for (int c = 0; c < 4; ++c) {
+      series[c].ms.push_back(ms[c]);
+      if (ms[0] > 0.0) series[c].overNone.push_back(ms[c] / ms[0]);
     }
-    return median(times);
-  };
-  double tNone = measure(requests.none), tNeutral = measure(requests.neutral), tBranch = measure(requests.branchOnly),
-         tActive = measure(requests.active);
+  }
   // The stand's and a model's names carry the file's stem: user text, escaped.
-  std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f |\n", quoteUserText(name, 200).c_str(), tNone,
-              tNeutral, tBranch, tActive, tNeutral / tNone, tBranch / tNone, tActive / tNone);
+  std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f |\n", quoteUserText(name, 200).c_str(),
+              median(series[0].ms), median(series[1].ms), median(series[2].ms), median(series[3].ms),
+              median(series[1].overNone), median(series[2].overNone), median(series[3].overNone));
   std::fflush(stdout);
   return renderer.gpuMemoryBytes();
 }
@@ -149,7 +159,8 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   std::string error;
   auto ctx = vk::Context::create({o.device, false}, error);
   if (!ctx) return deviceUnavailable(error, o.device);
-  std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames (after %d warm-up frames), colour pass only.\n\n",
+  std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
+              "warm-up rounds), colour pass only.\n\n",
               ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpFrames);
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | active / none |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
