@@ -46,17 +46,6 @@ class StageWriter {
   }
 
  private:
-  // The stage's roots: its PBR fields (and, in the fragment stage, the coverage terms),
-  // as output slots.
-  std::vector<std::size_t> stageSlots() const {
-    std::vector<std::size_t> slots;
-    for (const auto& info : pbrFields())
-      if (info.stage == stage_) slots.push_back(static_cast<std::size_t>(info.field));
-    if (stage_ == ShaderStage::Fragment)
-      for (std::size_t t = 0; t < kCoverageCount; ++t) slots.push_back(kPbrFieldCount + t);
-    return slots;
-  }
-
   // A view's colour and, for the tangent, its alpha, in the target language.
   DebugView debugView(const IrDebugView& view) const {
     switch (view.source) {
@@ -94,7 +83,7 @@ class StageWriter {
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
       if (needed_[i] && !graph_.nodes[i].weather) emitNode(i, body, "  ");
     appendInterpolantWrites(body, "  ", /*weather=*/false);
-    const auto slots = stageSlots();
+    const auto slots = stageOutputSlots(stage_);
     for (std::size_t slot : slots) {
       const Operand& base = graph_.weatherGuarded() ? graph_.unweathered[slot] : graph_.outputs[slot];
       body += "  ";
@@ -155,7 +144,7 @@ class StageWriter {
   void markNeeded() {
     needed_.assign(graph_.nodes.size(), false);
     interpolated_.assign(graph_.nodes.size(), false);
-    for (std::size_t slot : stageSlots()) {
+    for (std::size_t slot : stageOutputSlots(stage_)) {
       for (const Operand* o : {&graph_.outputs[slot], &graph_.unweathered[slot]}) {
         if (o == &graph_.unweathered[slot] && !graph_.weatherGuarded()) continue;
         if (o->kind == Operand::Kind::Node) needed_[o->node] = true;

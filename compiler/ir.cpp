@@ -17,6 +17,15 @@ const std::array<CoverageInfo, kCoverageCount>& coverageTerms() {
   return kTerms;
 }
 
+std::vector<std::size_t> stageOutputSlots(ShaderStage stage) {
+  std::vector<std::size_t> slots;
+  for (const auto& info : pbrFields())
+    if (info.stage == stage) slots.push_back(static_cast<std::size_t>(info.field));
+  if (stage == ShaderStage::Fragment)
+    for (std::size_t t = 0; t < kCoverageCount; ++t) slots.push_back(kPbrFieldCount + t);
+  return slots;
+}
+
 std::optional<ValueType> signatureValueType(PortType type) {
   switch (type) {
     case PortType::Float: return ValueType::Float;

@@ -60,6 +60,10 @@ const std::array<CoverageInfo, kCoverageCount>& coverageTerms();
 // Every root of the graph: the PBR fields, then the coverage terms.
 inline constexpr std::size_t kIrOutputCount = kPbrFieldCount + kCoverageCount;
 
+// A stage's roots as output slots: its PBR fields and, in the fragment stage, the
+// coverage terms.
+std::vector<std::size_t> stageOutputSlots(ShaderStage stage);
+
 // What a fragment debug view (frame_debugView) shows instead of the lit colour: an
 // output slot, or a value the stage frame computes.
 enum class DebugSource : std::uint8_t { Slot, ShadingNormal, WorldPosition, GeometricNormal, Texcoord, Tangent };

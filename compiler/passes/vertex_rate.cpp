@@ -28,19 +28,16 @@ std::vector<bool> vertexComputable(const IrGraph& graph) {
   return ok;
 }
 
-// The fragment stage's roots: its PBR fields and the coverage terms, weathered and not.
+// The fragment stage's roots, weathered and not.
 std::vector<bool> fragmentRoots(const IrGraph& graph) {
   std::vector<bool> needed(graph.nodes.size(), false);
   auto mark = [&](const Operand& o) {
     if (o.kind == Operand::Kind::Node) needed[o.node] = true;
   };
-  auto markSlot = [&](std::size_t slot) {
+  for (std::size_t slot : stageOutputSlots(ShaderStage::Fragment)) {
     mark(graph.outputs[slot]);
     if (graph.weatherGuarded()) mark(graph.unweathered[slot]);
-  };
-  for (const auto& info : pbrFields())
-    if (info.stage == ShaderStage::Fragment) markSlot(static_cast<std::size_t>(info.field));
-  for (std::size_t t = 0; t < kCoverageCount; ++t) markSlot(kPbrFieldCount + t);
+  }
   return needed;
 }
 
