@@ -79,6 +79,15 @@ std::string contentHash(const IrGraph& graph) {
   // Later fields are hashed only when set, so graphs without them keep their hashes.
   if (graph.alphaMode == AlphaMode::Blend) h.add(alphaModeName(graph.alphaMode));
   if (graph.doubleSided) h.add("doubleSided");
+  // Effects switched away from the preset's: the reflection lists them even where the
+  // shaders come out the same (relief on a preset without snow or ice). Without weather
+  // it lists none.
+  if (auto preset = weatherPreset(graph.weather.preset); preset && graph.weather.active())
+    for (const auto& f : weatherEffectFlags())
+      if (graph.weather.effects.*(f.flag) != preset->effects.*(f.flag)) {
+        h.add(f.name);
+        h.add(static_cast<std::uint64_t>(graph.weather.effects.*(f.flag)));
+      }
   return h.hex();
 }
 

@@ -60,12 +60,8 @@ Json stageVariablesJson(const std::vector<StageVariable>& vars) {
 Json weatherJson(const IrGraph& graph) {
   const WeatherConfig& w = graph.weather;
   Json effects = Json::object();
-  const WeatherEffects& e = w.effects;
-  for (auto [name, on] : {std::pair<const char*, bool>{"snow", e.snow}, {"displacement", e.displacement},
-                          {"terrainOrientation", e.terrainOrientation}, {"moss", e.moss}, {"wetness", e.wetness},
-                          {"puddles", e.puddles}, {"ice", e.ice}, {"hoarfrost", e.hoarfrost},
-                          {"foliageDensity", e.foliageDensity}, {"skyExposure", e.skyExposure}})
-    if (w.active()) effects[name] = on;
+  if (w.active())
+    for (const auto& f : weatherEffectFlags()) effects[std::string(f.name)] = w.effects.*(f.flag);
   return {{"preset", w.preset}, {"effects", std::move(effects)}};
 }
 

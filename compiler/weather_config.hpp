@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compiler/diagnostic.hpp"
@@ -25,7 +26,20 @@ struct WeatherEffects {
   bool hoarfrost = false;  // frost crystals on exposed ground
   bool foliageDensity = false;  // foliage thins under snow
   bool skyExposure = true;      // sheltered points get no snow, rain or puddles
+  // Looks beyond the seed's equations, on wherever their layer is; each costs texture
+  // lookups or derivatives per pixel (docs/BENCHMARKS.md, "Where the weather's cost goes").
+  bool relief = true;                // snow's and ice's own lit micro-relief
+  bool ripple = true;                // eq. 3.18's rain ripple on wet surfaces
+  bool specularAntiAliasing = true;  // wet roughness widened by the normal's pixel variance
 };
+
+// Each effect's key in a graph's "effects" block and in the reflection.
+struct WeatherEffectFlag {
+  std::string_view name;
+  bool WeatherEffects::*flag;
+};
+inline constexpr std::size_t kWeatherEffectCount = 13;
+const std::array<WeatherEffectFlag, kWeatherEffectCount>& weatherEffectFlags();
 
 struct WeatherConfig {
   std::string preset = "none";

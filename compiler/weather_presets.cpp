@@ -38,11 +38,7 @@ WeatherConfig makePreset(std::string name) {
 
 constexpr std::array<std::string_view, 6> kPresets = {"foliage", "none", "river", "road", "rock", "terrain"};
 
-struct EffectFlag {
-  std::string_view name;
-  bool WeatherEffects::*flag;
-};
-constexpr std::array<EffectFlag, 10> kEffectFlags = {{
+constexpr std::array<WeatherEffectFlag, kWeatherEffectCount> kEffectFlags = {{
     {"snow", &WeatherEffects::snow},
     {"displacement", &WeatherEffects::displacement},
     {"terrainOrientation", &WeatherEffects::terrainOrientation},
@@ -53,6 +49,9 @@ constexpr std::array<EffectFlag, 10> kEffectFlags = {{
     {"hoarfrost", &WeatherEffects::hoarfrost},
     {"foliageDensity", &WeatherEffects::foliageDensity},
     {"skyExposure", &WeatherEffects::skyExposure},
+    {"relief", &WeatherEffects::relief},
+    {"ripple", &WeatherEffects::ripple},
+    {"specularAntiAliasing", &WeatherEffects::specularAntiAliasing},
 }};
 
 struct NumberSetting {
@@ -125,7 +124,7 @@ void applyEffects(const nlohmann::json& value, const std::string& at, WeatherCon
   }
   for (const auto& [effect, on] : value.items()) {
     const std::string& effectName = effect;  // clang 14 cannot capture structured bindings
-    auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [&](const EffectFlag& f) { return f.name == effectName; });
+    auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [&](const WeatherEffectFlag& f) { return f.name == effectName; });
     std::string effectAt = appendPointer(at, effect);
     if (flag == kEffectFlags.end()) {
       std::vector<std::string_view> names;
@@ -216,6 +215,8 @@ void applyOverrides(const nlohmann::json& overrides, const std::string& pointer,
 }
 
 }  // namespace
+
+const std::array<WeatherEffectFlag, kWeatherEffectCount>& weatherEffectFlags() { return kEffectFlags; }
 
 std::vector<std::string_view> weatherPresetNames() { return {kPresets.begin(), kPresets.end()}; }
 

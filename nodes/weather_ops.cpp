@@ -167,12 +167,16 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
   ops.push_back(weatherOp("weather_wet_diffuse", "eq. 3.16: diffuse * Lerp(1, 0.7, p)",
                           {vec3Required("diffuse"), floatRequired("p")}, V3, "wg_wet_diffuse({diffuse}, {p})",
                           [](const Value* in, const EvalContext&) { return out3(wetDiffuse(v3(in[0]), in[1].x())); }));
-  ops.push_back(weatherOp("weather_wet_roughness",
-                          "eq. 3.17: Clamp(roughness - p), widened by the normal's variance over the pixel in lit "
-                          "frames (specular anti-aliasing; fragment stage)",
-                          {floatRequired("roughness"), floatRequired("p"), vec3Port("normal", {0.f, 0.f, 1.f})}, F,
-                          "wg_specular_aa(wg_wet_roughness({roughness}, {p}), dFdx({normal}), dFdy({normal}))",
+  ops.push_back(weatherOp("weather_wet_roughness", "eq. 3.17: Clamp(roughness - p)",
+                          {floatRequired("roughness"), floatRequired("p")}, F, "wg_wet_roughness({roughness}, {p})",
                           [](const Value* in, const EvalContext&) { return Value::scalar(wetRoughness(in[0].x(), in[1].x())); }));
+  // The CPU evaluator sees one point, no pixel footprint: the roughness as it is.
+  ops.push_back(weatherOp("weather_specular_aa",
+                          "specular anti-aliasing: roughness widened by the tangent normal's variance over the pixel "
+                          "in lit frames (fragment stage)",
+                          {floatRequired("roughness"), vec3Port("normal", {0.f, 0.f, 1.f})}, F,
+                          "wg_specular_aa({roughness}, dFdx({normal}), dFdy({normal}))",
+                          [](const Value* in, const EvalContext&) { return Value::scalar(in[0].x()); }));
   ops.push_back(weatherOp("weather_wet_normal", "eq. 3.18: tangent normal + panning ripple while it rains, faded by the pixel footprint (fragment stage)",
                           {vec3Required("normal"), vec3Required("position"), floatRequired("p")}, V3,
                           "wg_wet_normal({normal}, {position}.xz, {p}, frame_precipitation, frame_time, fwidth({position}.xz))",

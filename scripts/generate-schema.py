@@ -274,7 +274,7 @@ defs["weatherPreset"] = {"enum": ["rock", "terrain", "foliage", "river", "road",
                                         "terrain (detail, height, wind), foliage (detail mask, density), river (frost then ice), "
                                         "road (wetness, puddles, frost), none"}
 effectNames = ["snow", "displacement", "terrainOrientation", "moss", "wetness", "puddles", "ice", "hoarfrost",
-               "foliageDensity", "skyExposure"]
+               "foliageDensity", "skyExposure", "relief", "ripple", "specularAntiAliasing"]
 defs["weatherBlock"] = {
     "type": "object", "required": ["preset"], "additionalProperties": False,
     "properties": {

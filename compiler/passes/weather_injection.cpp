@@ -128,6 +128,13 @@ class WeatherInjector {
     return b_.output(*noise_, channel);
   }
 
+  // A layer's own normal: the transition noise as a height field of `amplitude` metres,
+  // or flat with the relief effect off.
+  Operand relief(float amplitude) {
+    if (!cfg_.effects.relief) return flatNormal();
+    return b_.add("weather_noise_relief", {{"position", position_}, {"height", noise("transition")}, {"amplitude", k(amplitude)}});
+  }
+
   Operand terrainTerm() {
     // Eq. 3.11-3.13: slope of the shared height map under the object.
     Operand uv = b_.add("terrain_coord", {{"position", position_}});
@@ -149,9 +156,8 @@ class WeatherInjector {
                                                         {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
                                                         {"terms", terms_}, {"noise", noise("transition")}});
     // Snow's own lit micro-relief replaces the surface's detail under it.
-    Operand relief = b_.add("weather_noise_relief", {{"position", position_}, {"height", noise("transition")},
-                                                     {"amplitude", k(weather::kSnowReliefAmplitude)}});
-    cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), k(weather::kSnowRoughness), k(0.5f), 0.7f, relief);
+    Operand layerNormal = relief(weather::kSnowReliefAmplitude);
+    cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), k(weather::kSnowRoughness), k(0.5f), 0.7f, layerNormal);
     g_.coverage(CoverageTerm::Snow) = coverage;
     if (cfg_.effects.displacement) {
       Operand offset = b_.add("weather_snow_offset", {{"normal", normal_}, {"position", position_}, {"exposure", exposure_},
@@ -184,8 +190,11 @@ class WeatherInjector {
     if (cfg_.effects.ice)
       p = b_.add("multiply", {{"a", p}, {"b", b_.add("one_minus", {{"in", b_.add("smoothstep", {{"edge0", k(0.f)}, {"edge1", k(kWetBank)}, {"x", frostMap()}})}})}});
     color_ = b_.add("weather_wet_diffuse", {{"diffuse", color_}, {"p", p}});
-    roughness_ = b_.add("weather_wet_roughness", {{"roughness", roughness_}, {"p", p}, {"normal", tangentNormal_}});
-    tangentNormal_ = b_.add("weather_wet_normal", {{"normal", tangentNormal_}, {"position", position_}, {"p", p}});
+    roughness_ = b_.add("weather_wet_roughness", {{"roughness", roughness_}, {"p", p}});
+    if (cfg_.effects.specularAntiAliasing)
+      roughness_ = b_.add("weather_specular_aa", {{"roughness", roughness_}, {"normal", tangentNormal_}});
+    if (cfg_.effects.ripple)
+      tangentNormal_ = b_.add("weather_wet_normal", {{"normal", tangentNormal_}, {"position", position_}, {"p", p}});
     g_.coverage(CoverageTerm::Wet) = p;
   }
 
@@ -207,9 +216,8 @@ class WeatherInjector {
     // Ice keeps the frozen surface's bends (its normal map) as cracks and bubbles, and 40 %
     // of its relief; the rest is ice's own slight undulation.
     Operand albedo = b_.add("weather_ice_albedo", {{"diffuse", diffuse_}, {"normal", tangentNormal_}});
-    Operand relief = b_.add("weather_noise_relief", {{"position", position_}, {"height", noise("transition")},
-                                                     {"amplitude", k(weather::kIceReliefAmplitude)}});
-    cover(coverage, albedo, k(weather::kIceRoughness), k(weather::kIceSpecular), kIceFlattening, relief);
+    Operand layerNormal = relief(weather::kIceReliefAmplitude);
+    cover(coverage, albedo, k(weather::kIceRoughness), k(weather::kIceSpecular), kIceFlattening, layerNormal);
     g_.coverage(CoverageTerm::Frost) = coverage;
     g_.coverage(CoverageTerm::Ice) = coverage;
   }

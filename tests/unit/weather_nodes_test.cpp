@@ -71,7 +71,7 @@ TEST(WeatherNodes, EveryWeatherOpIsRegistered) {
         "weather_frost_mask", "weather_puddle_mask", "tangent_to_world", "sky_exposure", "weather_levels",
         "weather_conditions", "weather_snow_coverage", "weather_snow_offset", "weather_moss_coverage",
         "weather_puddle_coverage", "weather_frost_coverage", "weather_hoarfrost_coverage", "weather_noise",
-        "weather_noise_relief"}) {
+        "weather_noise_relief", "weather_specular_aa"}) {
     const OpDef* op = findOp(name);
     ASSERT_NE(op, nullptr) << name;
     EXPECT_NE(op->eval, nullptr) << name;
@@ -269,9 +269,19 @@ TEST(WeatherNodes, WetDiffuseAndRoughness) {
   // Fully wet: 70 %.
   expectValue(eval("weather_wet_diffuse", {v3(1, 0.5f, 0), s(1)}), v3(0.7f, 0.35f, 0));
   expectValue(eval("weather_wet_diffuse", {kDiffuse, s(0)}), kDiffuse);
-  // A point has no footprint: no specular anti-aliasing, whatever the normal.
-  expectValue(eval("weather_wet_roughness", {s(0.8f), s(0.3f), v3(0, 0, 1)}), s(0.5f));  // 0.8 - 0.3
-  expectValue(eval("weather_wet_roughness", {s(0.2f), s(0.5f), v3(0.3f, 0, 0.95f)}), s(0));  // -0.3 -> 0
+  expectValue(eval("weather_wet_roughness", {s(0.8f), s(0.3f)}), s(0.5f));  // 0.8 - 0.3
+  expectValue(eval("weather_wet_roughness", {s(0.2f), s(0.5f)}), s(0));     // -0.3 -> 0
+}
+
+// A point has no footprint: the CPU's specular anti-aliasing keeps the roughness,
+// whatever the normal. The lit frame widens it from the normal's pixel derivatives.
+TEST(WeatherNodes, SpecularAntiAliasingKeepsAPointsRoughness) {
+  expectValue(eval("weather_specular_aa", {s(0.5f), v3(0, 0, 1)}), s(0.5f));
+  expectValue(eval("weather_specular_aa", {s(0.05f), v3(0.3f, 0, 0.95f)}), s(0.05f));
+  const OpDef* op = findOp("weather_specular_aa");
+  ASSERT_NE(op, nullptr);
+  EXPECT_NE(op->glsl.find("dFdx({normal})"), std::string::npos);
+  EXPECT_NE(op->glsl.find("dFdy({normal})"), std::string::npos);
 }
 
 // Eq. 3.18 as read: N + pan * 2 * 0.25 * rain with one lookup n of the noise texture's
