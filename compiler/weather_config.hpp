@@ -26,8 +26,8 @@ struct WeatherEffects {
   bool hoarfrost = false;  // frost crystals on exposed ground
   bool foliageDensity = false;  // foliage thins under snow
   bool skyExposure = true;      // sheltered points get no snow, rain or puddles
-  // Looks beyond the seed's equations, on wherever their layer is; each costs texture
-  // lookups or derivatives per pixel (docs/BENCHMARKS.md, "Where the weather's cost goes").
+  // Per-pixel looks, on wherever their layer is; each costs texture lookups or
+  // derivatives (docs/weather-model.md, "Looks beyond the seed").
   bool relief = true;                // snow's and ice's own lit micro-relief
   bool ripple = true;                // eq. 3.18's rain ripple on wet surfaces
   bool specularAntiAliasing = true;  // wet roughness widened by the normal's pixel variance
