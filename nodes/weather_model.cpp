@@ -106,9 +106,13 @@ float windFlow(glm::vec2 xz, glm::vec2 direction, float time) {
   return sampleNoise(uv + pan).y + 0.5f * sampleNoise(uv + glm::vec2(pan.y, pan.x)).y;
 }
 
-float windInfluence(glm::vec3 normal, glm::vec2 xz, glm::vec2 direction, float intensity, float time) {
+float windFromFlow(glm::vec3 normal, glm::vec2 direction, float flow, float intensity) {
   // N . (d.x, 0, d.y) f_wind, with the zero term left out as the shaders do.
-  return clamp01(glm::dot(glm::vec2(normal.x, normal.z), direction) * windFlow(xz, direction, time) + intensity);
+  return clamp01(glm::dot(glm::vec2(normal.x, normal.z), direction) * flow + intensity);
+}
+
+float windInfluence(glm::vec3 normal, glm::vec2 xz, glm::vec2 direction, float intensity, float time) {
+  return windFromFlow(normal, direction, windFlow(xz, direction, time), intensity);
 }
 
 float height(float y, float minHeight, float maxHeight) {
@@ -216,7 +220,7 @@ glm::vec2 toVec2(const std::array<float, 2>& a) { return {a[0], a[1]}; }
 // weight (w1 = 2 balances a typical f_sun of 0.5, w3 = 2 a mid height; without the term
 // the balance goes too); a switched-off sum term counts as 0.
 float shapedPrediction(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
-                       float terrain, const SnowShape& shape) {
+                       float terrain, float windFlow, const SnowShape& shape) {
   glm::vec4 weights = shape.weights;
   const glm::vec4& on = shape.terms;  // each switch is on above 0.5
   weights.x = on.y > 0.5f ? weights.x : 1.f;
@@ -224,24 +228,22 @@ float shapedPrediction(const FrameState& frame, glm::vec3 normal, glm::vec3 deta
   float inc = on.x > 0.5f ? inclination(normal, detailNormal, shape.inclinationIntensity) : 1.f;
   float sun = on.y > 0.5f ? sunFacing(normal, toVec3(frame.sunDirection), frame.sunMelt) : 1.f;
   float h = on.z > 0.5f ? height(position.y, shape.minHeight, shape.maxHeight) : 1.f;
-  float wind = on.w > 0.5f ? windInfluence(normal, {position.x, position.z}, toVec2(frame.windDirection),
-                                           frame.windIntensity, frame.time)
-                           : 0.f;
+  float wind = on.w > 0.5f ? windFromFlow(normal, toVec2(frame.windDirection), windFlow, frame.windIntensity) : 0.f;
   return prediction(inc, sun, h, terrain, wind, weights);
 }
 }  // namespace
 
 float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
-                   glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape, float noise) {
+                   glm::vec3 diffuse, float terrain, float windFlow, float exposure, const SnowShape& shape, float noise) {
   float level = clamp01(frame.snowLevel) * clamp01(exposure);
-  float fp = shapedPrediction(frame, normal, detailNormal, position, terrain, shape);
+  float fp = shapedPrediction(frame, normal, detailNormal, position, terrain, windFlow, shape);
   return transition(0.5f * noise + 0.5f * (1.f - detailMask(diffuse)), fp * level);
 }
 
-glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure,
+glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float windFlow, float exposure,
                      const SnowShape& shape, float maxSnowHeight, float noise) {
   float level = clamp01(frame.snowLevel) * clamp01(exposure);
-  float fp = shapedPrediction(frame, normal, normal, position, 0.f, shape);
+  float fp = shapedPrediction(frame, normal, normal, position, 0.f, windFlow, shape);
   return snowDisplacement(noise, fp * level, maxSnowHeight, normal);
 }
 

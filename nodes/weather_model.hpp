@@ -52,7 +52,9 @@ float sunShade(glm::vec3 normal, glm::vec3 towardsSun, float melt);
 // Eq. 3.6: f_pan(h, v) = flow(xz + (h, v) * time); f_wind(d) = f_pan(d.x, d.y) + 0.5 f_pan(d.y, d.x),
 // flow the noise texture's g channel (nodes/weather_noise.hpp), panned (h, v) * time cells.
 float windFlow(glm::vec2 xz, glm::vec2 direction, float time);
-// Eq. 3.7: Clamp(N . (d.x, 0, d.y) * f_wind(d) + windIntensity).
+// Eq. 3.7 with f_wind given: Clamp(N . (d.x, 0, d.y) * flow + windIntensity).
+float windFromFlow(glm::vec3 normal, glm::vec2 direction, float flow, float intensity);
+// Eq. 3.6-3.7: windFromFlow of windFlow at xz.
 float windInfluence(glm::vec3 normal, glm::vec2 xz, glm::vec2 direction, float intensity, float time);
 float height(float y, float minHeight, float maxHeight);          // eq. 3.8
 float heightInverted(float y, float minHeight, float maxHeight);  // eq. 3.9
@@ -99,9 +101,10 @@ struct SnowShape {
   // does its weight (w1 for the sun, w3 for the height): the weights are renormalised.
   glm::vec4 terms{1.f, 1.f, 1.f, 1.f};
 };
+// `windFlow` is eq. 3.6's f_wind at the point (windFlow()), read where the wind term is on.
 float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
-                   glm::vec3 diffuse, float terrain, float exposure, const SnowShape& shape, float noise);
-glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float exposure,
+                   glm::vec3 diffuse, float terrain, float windFlow, float exposure, const SnowShape& shape, float noise);
+glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float windFlow, float exposure,
                      const SnowShape& shape, float maxSnowHeight, float noise);
 float mossCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, glm::vec3 diffuse,
                    const SnowShape& shape, float noise);

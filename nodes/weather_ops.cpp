@@ -94,6 +94,16 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                                                                {f.windDirection[0], f.windDirection[1]}, f.windIntensity, f.time));
                           },
                           V));
+  // f_wind alone, for the effect ops' windFlow port: 4 m flow cells, smooth across a
+  // triangle, so the vertex stage computes it and the fragment stage reads it interpolated.
+  ops.push_back(weatherOp("weather_wind_flow", "eq. 3.6: the two-phase panning wind flow f_wind at a point",
+                          {vec3Required("position")}, F, "wg_wind_flow({position}.xz, frame_windDirection, frame_time)",
+                          [](const Value* in, const EvalContext& c) {
+                            const FrameState& f = *c.frame;
+                            return Value::scalar(windFlow({in[0].v[0], in[0].v[2]}, {f.windDirection[0], f.windDirection[1]}, f.time));
+                          },
+                          V));
+  ops.back().rate = OpRate::Vertex;
   ops.push_back(weatherOp("weather_height", "eq. 3.8: Clamp((y - minHeight) / (maxHeight - minHeight))",
                           {vec3Required("position"), floatPort("minHeight", -50.f), floatPort("maxHeight", 50.f)}, F,
                           "wg_height({position}.y, {minHeight}, {maxHeight})", [](const Value* in, const EvalContext&) {
@@ -269,28 +279,30 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                  V, {&kWeatherNoiseLibrary}, {"weatherNoise"}});
 
   // Effect ops: each early-outs while its level is 0.
-  ops.push_back(weatherOp("weather_snow_coverage", "snow cover: eq. 3.1 prediction, eq. 3.14 noisy edges, detail mask",
+  ops.push_back(weatherOp("weather_snow_coverage", "snow cover: eq. 3.1 prediction (windFlow: eq. 3.6's f_wind, weather_wind_flow), eq. 3.14 noisy edges, detail mask",
                           {vec3Required("normal"), vec3Required("detailNormal"), vec3Required("position"), vec3Required("diffuse"),
-                           floatPort("terrain", 0.f), floatPort("exposure", 1.f, 0.f, 1.f), vec4Port("weights", kDefaultShape.weights),
-                           vec4Port("shape", kDefaultShapeVector), vec4Port("terms", kDefaultShape.terms), floatRequired("noise")},
+                           floatPort("terrain", 0.f), floatPort("windFlow", 0.f), floatPort("exposure", 1.f, 0.f, 1.f),
+                           vec4Port("weights", kDefaultShape.weights), vec4Port("shape", kDefaultShapeVector),
+                           vec4Port("terms", kDefaultShape.terms), floatRequired("noise")},
                           F,
-                          "wg_snow_coverage({normal}, {detailNormal}, {position}, {diffuse}, {terrain}, {exposure}, {weights}, "
-                          "{shape}, {terms}, {noise})",
+                          "wg_snow_coverage({normal}, {detailNormal}, {position}, {diffuse}, {terrain}, {windFlow}, {exposure}, "
+                          "{weights}, {shape}, {terms}, {noise})",
                           [](const Value* in, const EvalContext& c) {
                             return Value::scalar(snowCoverage(*c.frame, v3(in[0]), v3(in[1]), v3(in[2]), v3(in[3]), in[4].x(),
-                                                              in[5].x(), shapeFrom(in[6], in[7], &in[8]), in[9].x()));
+                                                              in[5].x(), in[6].x(), shapeFrom(in[7], in[8], &in[9]), in[10].x()));
                           },
                           V));
   ops.push_back(weatherOp("weather_snow_offset", "snow displacement along the normal (eq. 3.10), vertex stage",
-                          {vec3Required("normal"), vec3Required("position"), floatPort("exposure", 1.f, 0.f, 1.f),
-                           vec4Port("weights", kDefaultShape.weights), vec4Port("shape", kDefaultShapeVector),
-                           vec4Port("terms", kDefaultShape.terms), floatPort("maxSnowHeight", 0.25f, 0.f, 10.f),
-                           floatRequired("noise")},
+                          {vec3Required("normal"), vec3Required("position"), floatPort("windFlow", 0.f),
+                           floatPort("exposure", 1.f, 0.f, 1.f), vec4Port("weights", kDefaultShape.weights),
+                           vec4Port("shape", kDefaultShapeVector), vec4Port("terms", kDefaultShape.terms),
+                           floatPort("maxSnowHeight", 0.25f, 0.f, 10.f), floatRequired("noise")},
                           V3,
-                          "wg_snow_offset({normal}, {position}, {exposure}, {weights}, {shape}, {terms}, {maxSnowHeight}, {noise})",
+                          "wg_snow_offset({normal}, {position}, {windFlow}, {exposure}, {weights}, {shape}, {terms}, "
+                          "{maxSnowHeight}, {noise})",
                           [](const Value* in, const EvalContext& c) {
-                            return out3(snowOffset(*c.frame, v3(in[0]), v3(in[1]), in[2].x(), shapeFrom(in[3], in[4], &in[5]),
-                                                   in[6].x(), in[7].x()));
+                            return out3(snowOffset(*c.frame, v3(in[0]), v3(in[1]), in[2].x(), in[3].x(),
+                                                   shapeFrom(in[4], in[5], &in[6]), in[7].x(), in[8].x()));
                           },
                           V));
   ops.push_back(weatherOp("weather_moss_coverage", "moss: least sun (eq. 3.5), low ground (eq. 3.9), noisy edges (eq. 3.14)",

@@ -38,9 +38,12 @@ float wg_wind_flow(const vec2 xz, const vec2 d, const float t) {
   vec2 pan = d * (t * 0.125);
   return wg_weather_noise(uv + pan).y + 0.5 * wg_weather_noise(uv + pan.yx).y;
 }
-// Eq. 3.7: N . (d.x, 0, d.y) f_wind, with the zero term left out.
+// Eq. 3.7 with f_wind given: N . (d.x, 0, d.y) f_wind, with the zero term left out.
+float wg_wind_from_flow(const vec3 n, const vec2 d, const float flow, const float intensity) {
+  return wg_clamp01(dot(n.xz, d) * flow + intensity);
+}
 float wg_wind_influence(const vec3 n, const vec2 xz, const vec2 d, const float intensity, const float t) {
-  return wg_clamp01(dot(n.xz, d) * wg_wind_flow(xz, d, t) + intensity);
+  return wg_wind_from_flow(n, d, wg_wind_flow(xz, d, t), intensity);
 }
 // Eq. 3.8
 float wg_height(const float y, const float lo, const float hi) {
@@ -126,15 +129,16 @@ float wg_puddle_mask(const vec3 n, const float noise, const float level) {
 // Eq. 3.1 with switches: shape = (minHeight, maxHeight, inclination intensity, unused),
 // terms = (inclination, sun, height, wind), each on above 0.5.
 // A switched-off factor counts as 1, and so does its weight (w1 sun, w3 height).
-float wg_shaped_prediction(const vec3 n, const vec3 nd, const vec3 p, const float terrain, vec4 w, const vec4 shape,
-                           const vec4 terms) {
+// windFlow is eq. 3.6's f_wind at p (weather_wind_flow, computed per vertex).
+float wg_shaped_prediction(const vec3 n, const vec3 nd, const vec3 p, const float terrain, const float windFlow, vec4 w,
+                           const vec4 shape, const vec4 terms) {
   // Selects, not lerps: the injected terms are constants, so spirv-opt drops what is off.
   w.x = terms.y > 0.5 ? w.x : 1.0;
   w.z = terms.z > 0.5 ? w.z : 1.0;
   float inc = terms.x > 0.5 ? wg_inclination(n, nd, shape.z) : 1.0;
   float sun = terms.y > 0.5 ? wg_sun_facing(n, frame_sunDirection, frame_sunMelt) : 1.0;
   float h = terms.z > 0.5 ? wg_height(p.y, shape.x, shape.y) : 1.0;
-  float wind = terms.w > 0.5 ? wg_wind_influence(n, vec2(p.x, p.z), frame_windDirection, frame_windIntensity, frame_time) : 0.0;
+  float wind = terms.w > 0.5 ? wg_wind_from_flow(n, frame_windDirection, windFlow, frame_windIntensity) : 0.0;
   return wg_prediction(inc, sun, h, terrain, wind, w);
 }
 // No effect branches on its level: at level 0 its transition (eq. 3.14) of a noise of at
@@ -142,15 +146,16 @@ float wg_shaped_prediction(const vec3 n, const vec3 nd, const vec3 p, const floa
 // level is 0.
 // `noise` is the shared transition noise (eq. 3.14's NoiseMap, wg_weather_noise_at(p).x).
 float wg_snow_coverage(const vec3 n, const vec3 nd, const vec3 p, const vec3 diffuse, const float terrain,
-                       const float exposure, const vec4 w, const vec4 shape, const vec4 terms, const float noise) {
+                       const float windFlow, const float exposure, const vec4 w, const vec4 shape, const vec4 terms,
+                       const float noise) {
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
-  float fp = wg_shaped_prediction(n, nd, p, terrain, w, shape, terms);
+  float fp = wg_shaped_prediction(n, nd, p, terrain, windFlow, w, shape, terms);
   return wg_transition(0.5 * noise + 0.5 * (1.0 - wg_detail_mask(diffuse)), fp * level);
 }
-vec3 wg_snow_offset(const vec3 n, const vec3 p, const float exposure, const vec4 w, const vec4 shape,
-                    const vec4 terms, const float maxSnowHeight, const float noise) {
+vec3 wg_snow_offset(const vec3 n, const vec3 p, const float windFlow, const float exposure, const vec4 w,
+                    const vec4 shape, const vec4 terms, const float maxSnowHeight, const float noise) {
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
-  float fp = wg_shaped_prediction(n, n, p, 0.0, w, shape, terms);
+  float fp = wg_shaped_prediction(n, n, p, 0.0, windFlow, w, shape, terms);
   return wg_snow_displacement(noise, fp * level, maxSnowHeight, n);
 }
 float wg_moss_coverage(const vec3 n, const vec3 p, const vec3 diffuse, const vec4 w, const vec4 shape,

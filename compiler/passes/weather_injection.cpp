@@ -135,6 +135,14 @@ class WeatherInjector {
     return b_.add("weather_noise_relief", {{"position", position_}, {"height", noise("transition")}, {"amplitude", k(amplitude)}});
   }
 
+  // Eq. 3.6's flow where the wind term is on (the vertex-rate pass moves it per vertex);
+  // with the term off it is never read.
+  Operand windFlow() {
+    if (cfg_.terms[3] <= 0.5f) return k(0.f);
+    if (!windFlow_) windFlow_ = b_.add("weather_wind_flow", {{"position", position_}});
+    return *windFlow_;
+  }
+
   Operand terrainTerm() {
     // Eq. 3.11-3.13: slope of the shared height map under the object.
     Operand uv = b_.add("terrain_coord", {{"position", position_}});
@@ -153,14 +161,15 @@ class WeatherInjector {
     Operand terrain = cfg_.effects.terrainOrientation ? terrainTerm() : k(0.f);
     Operand coverage = b_.add("weather_snow_coverage", {{"normal", normal_}, {"detailNormal", detailNormal},
                                                         {"position", position_}, {"diffuse", diffuse_}, {"terrain", terrain},
-                                                        {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
+                                                        {"windFlow", windFlow()}, {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
                                                         {"terms", terms_}, {"noise", noise("transition")}});
     // Snow's own lit micro-relief replaces the surface's detail under it.
     Operand layerNormal = relief(weather::kSnowReliefAmplitude);
     cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), k(weather::kSnowRoughness), k(0.5f), 0.7f, layerNormal);
     g_.coverage(CoverageTerm::Snow) = coverage;
     if (cfg_.effects.displacement) {
-      Operand offset = b_.add("weather_snow_offset", {{"normal", normal_}, {"position", position_}, {"exposure", exposure_},
+      Operand offset = b_.add("weather_snow_offset", {{"normal", normal_}, {"position", position_}, {"windFlow", windFlow()},
+                                                      {"exposure", exposure_},
                                                       {"weights", weights_}, {"shape", shape_}, {"terms", terms_},
                                                       {"maxSnowHeight", paramNodes_[4]}, {"noise", noise("transition")}});
       g_.output(PbrField::WorldPositionOffset) =
@@ -255,7 +264,7 @@ class WeatherInjector {
   std::vector<Operand> paramNodes_;
   Operand position_, normal_, exposure_, diffuse_, color_, roughness_, specular_, metallic_, tangentNormal_;
   Operand weights_, shape_, terms_;
-  std::optional<Operand> noise_;
+  std::optional<Operand> noise_, windFlow_;
 };
 
 }  // namespace

@@ -120,10 +120,47 @@ TEST(VertexRatePass, RocksFragmentStageReadsTheSlopeInsteadOfSamplingTheHeightMa
   for (const auto& stage : m.stages) EXPECT_FALSE(stage.spirv.empty());
 
   json reflection = json::parse(m.reflectionJson);
-  const json& last = reflection["varyings"].back();
-  EXPECT_EQ(last["name"], "interpolant0");
-  EXPECT_EQ(last["location"], 5);
-  EXPECT_EQ(last["type"], "vec3");
+  const json* slope = nullptr;
+  for (const json& v : reflection["varyings"])
+    if (v["name"] == "interpolant0") slope = &v;
+  ASSERT_NE(slope, nullptr);
+  EXPECT_EQ((*slope)["location"], 5);
+  EXPECT_EQ((*slope)["type"], "vec3");
+}
+
+// Eq. 3.6's wind flow (4 m cells) runs per vertex: its two noise lookups leave every
+// fragment stage whose snow has the wind term, and the vertex stage writes the flow.
+TEST(VertexRatePass, TheWindFlowIsComputedPerVertex) {
+  for (std::string graph : {"rock", "terrain"}) {
+    CompileResult r = compileMaterialFile(std::string(WG_SOURCE_DIR) + "/graphs/" + graph + ".json", {});
+    ASSERT_TRUE(r.material) << graph;
+    const CompiledMaterial& m = *r.material;
+    for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl}) {
+      std::string fragment = source(m, language, ShaderStage::Fragment);
+      std::string vertex = source(m, language, ShaderStage::Vertex);
+      EXPECT_FALSE(contains(fragment, "wg_wind_flow(")) << graph;  // neither called nor defined
+      EXPECT_TRUE(contains(fragment, "wg_wind_from_flow(")) << graph;
+      EXPECT_TRUE(contains(fragment, "_weather_wind_flow = ")) << graph;
+      EXPECT_TRUE(contains(vertex, "_weather_wind_flow = wg_wind_flow(")) << graph;
+    }
+    json reflection = json::parse(m.reflectionJson);
+    bool flow = false;
+    for (const json& v : reflection["varyings"]) flow |= v["type"] == "float" && v["name"].get<std::string>().starts_with("interpolant");
+    EXPECT_TRUE(flow) << graph;
+    for (const auto& stage : m.stages) EXPECT_FALSE(stage.spirv.empty());
+  }
+}
+
+// Foliage's snow has no wind term: no flow is computed anywhere.
+TEST(VertexRatePass, SnowWithoutTheWindTermComputesNoFlow) {
+  CompileResult r = compileMaterialFile(std::string(WG_SOURCE_DIR) + "/graphs/foliage.json", {});
+  ASSERT_TRUE(r.material);
+  for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+    std::string text = source(*r.material, ShaderLanguage::Glsl, stage);
+    EXPECT_FALSE(contains(text, "wg_wind_flow("));
+    EXPECT_FALSE(contains(text, "_weather_wind_flow"));
+    EXPECT_FALSE(contains(text, "v_interpolant"));
+  }
 }
 
 TEST(VertexRatePass, WithoutTheWeatherNothingIsInterpolated) {

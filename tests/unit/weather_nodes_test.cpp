@@ -71,7 +71,7 @@ TEST(WeatherNodes, EveryWeatherOpIsRegistered) {
         "weather_frost_mask", "weather_puddle_mask", "tangent_to_world", "sky_exposure", "weather_levels",
         "weather_conditions", "weather_snow_coverage", "weather_snow_offset", "weather_moss_coverage",
         "weather_puddle_coverage", "weather_frost_coverage", "weather_hoarfrost_coverage", "weather_noise",
-        "weather_noise_relief", "weather_specular_aa"}) {
+        "weather_noise_relief", "weather_specular_aa", "weather_wind_flow"}) {
     const OpDef* op = findOp(name);
     ASSERT_NE(op, nullptr) << name;
     EXPECT_NE(op->eval, nullptr) << name;
@@ -449,9 +449,9 @@ TEST(WeatherNodes, SkyExposureLevelsAndConditions) {
 TEST(WeatherNodes, SnowCoverage) {
   Env env;
   auto coverage = [&](const Value& n, const Value& nd, float exposure, const Value& terms = kAllTerms,
-                      const Value& position = kOrigin, float terrain = 0) {
-    return eval("weather_snow_coverage", {n, nd, position, kDiffuse, s(terrain), s(exposure), kWeights, kShape, terms, s(0)},
-                env);
+                      const Value& position = kOrigin, float terrain = 0, float windFlow = 0) {
+    return eval("weather_snow_coverage",
+                {n, nd, position, kDiffuse, s(terrain), s(windFlow), s(exposure), kWeights, kShape, terms, s(0)}, env);
   };
   // Level 0: the early-out, however favourable everything else is.
   env.frame.snowLevel = 0;
@@ -485,6 +485,39 @@ TEST(WeatherNodes, SnowCoverage) {
   expectValue(coverage(v3(-0.6f, 0.8f, 0), v3(-0.6f, 0.8f, 0), 1), s(0.196f));
   // Switching the sun off (terms.y = 0) makes both sides alike.
   expectValue(coverage(v3(0.6f, 0.8f, 0), v3(0.6f, 0.8f, 0), 1, v4(1, 0, 1, 1)), s(0.196f));
+  // The wind term reads the flow it is given (eq. 3.7): wind towards +x, flow 1, a face
+  // (0.6, 0.8, 0) 40 m down the snow line (height 0.1) with the sun off: inc 1, wind
+  // Clamp(0.6 * 1) = 0.6, f_p = 1 * 2 * 0.1 + 0.5 * 0.6 = 0.5 -> transition(0.296, 0.5) =
+  // 0.796; without flow f_p = 0.2 -> 0.296 - 1 + 0.6 < 0 -> 0.
+  env.frame.snowLevel = 1;
+  env.frame.windDirection = {1, 0};
+  const Value leeward = v3(0.6f, 0.8f, 0);
+  const Value low = v3(0, -40, 0);
+  expectValue(coverage(leeward, leeward, 1, v4(1, 0, 1, 1), low, 0, 1.f), s(0.796f));
+  expectValue(coverage(leeward, leeward, 1, v4(1, 0, 1, 1), low, 0, 0.f), s(0));
+  // With the wind term off the flow is never read.
+  expectValue(coverage(leeward, leeward, 1, v4(1, 0, 1, 0), low, 0, 1.f), s(0));
+}
+
+// Eq. 3.6 alone: weather_wind_flow is the f_wind that weather_wind's eq. 3.7 uses, so the
+// injected snow (flow per vertex, eq. 3.7 per pixel) matches weather_wind at a point.
+TEST(WeatherNodes, WindFlowIsTheFlowOfTheWindTerm) {
+  using weather::sampleNoise;
+  Env env;
+  env.frame.windDirection = {0.8f, 0.6f};
+  env.frame.windIntensity = 0.1f;
+  env.frame.time = 3.f;
+  const Value p = v3(5, 2, -7);
+  // xz / 32 + d * time / 8, and the swapped phase at half weight.
+  glm::vec2 uv(5.f / 32.f, -7.f / 32.f);
+  glm::vec2 pan = glm::vec2(0.8f, 0.6f) * (3.f / 8.f);
+  float flow = sampleNoise(uv + pan).y + 0.5f * sampleNoise(uv + glm::vec2(pan.y, pan.x)).y;
+  expectValue(eval("weather_wind_flow", {p}, env), s(flow));
+  const OpDef* op = findOp("weather_wind_flow");
+  ASSERT_NE(op, nullptr);
+  EXPECT_EQ(op->rate, OpRate::Vertex);
+  const Value n = v3(0.48f, 0.6f, 0.64f);
+  expectValue(eval("weather_wind", {n, p}, env), s(std::clamp((0.48f * 0.8f + 0.64f * 0.6f) * flow + 0.1f, 0.f, 1.f)));
 }
 
 // Snow offset (vertex stage): eq. 3.10 with f_p (detail normal = geometric normal, no
@@ -492,7 +525,8 @@ TEST(WeatherNodes, SnowCoverage) {
 TEST(WeatherNodes, SnowOffset) {
   Env env;
   auto offset = [&](const Value& n, float exposure, float maxSnowHeight) {
-    return eval("weather_snow_offset", {n, kOrigin, s(exposure), kWeights, kShape, kAllTerms, s(maxSnowHeight), s(0)}, env);
+    return eval("weather_snow_offset", {n, kOrigin, s(0), s(exposure), kWeights, kShape, kAllTerms, s(maxSnowHeight), s(0)},
+                env);
   };
   env.frame.snowLevel = 0;
   expectValue(offset(kUp, 1, 0.25f), v3(0, 0, 0));
