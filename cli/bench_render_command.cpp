@@ -43,7 +43,7 @@ and the overheads against none (each the median of one round's ratios, so a mach
 whose speed drifts slows both sides alike), then the process's peak memory.
 )";
 
-constexpr int kWarmUpFrames = 3;
+constexpr int kWarmUpRounds = 3;  // rounds of all four configurations, not timed
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -137,10 +137,10 @@ std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string
   std::string name = scene.name;
   SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(o.samples));
   Series series[4];
-  for (int round = 0; round < kWarmUpFrames + o.frames; ++round) {
+  for (int round = 0; round < kWarmUpRounds + o.frames; ++round) {
     double ms[4];
     for (int c = 0; c < 4; ++c) ms[c] = renderer.render(*order[c]).gpuMilliseconds;
-    if (round < kWarmUpFrames) continue;
+    if (round < kWarmUpRounds) continue;
     for (int c = 0; c < 4; ++c) {
       series[c].ms.push_back(ms[c]);
       if (ms[0] > 0.0) series[c].overNone.push_back(ms[c] / ms[0]);
@@ -161,7 +161,7 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   if (!ctx) return deviceUnavailable(error, o.device);
   std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
               "warm-up rounds), colour pass only.\n\n",
-              ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpFrames);
+              ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpRounds);
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | active / none |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   std::size_t gpuBytes = 0;
