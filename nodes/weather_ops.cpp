@@ -279,7 +279,9 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                  V, {&kWeatherNoiseLibrary}, {"weatherNoise"}});
 
   // Effect ops: each early-outs while its level is 0.
-  ops.push_back(weatherOp("weather_snow_coverage", "snow cover: eq. 3.1 prediction (windFlow: eq. 3.6's f_wind, weather_wind_flow), eq. 3.14 noisy edges, detail mask",
+  ops.push_back(weatherOp("weather_snow_coverage",
+                          "snow cover: eq. 3.1 prediction (windFlow: eq. 3.6's f_wind, weather_wind_flow), eq. 3.14 noisy "
+                          "edges, detail mask",
                           {vec3Required("normal"), vec3Required("detailNormal"), vec3Required("position"), vec3Required("diffuse"),
                            floatPort("terrain", 0.f), floatPort("windFlow", 0.f), floatPort("exposure", 1.f, 0.f, 1.f),
                            vec4Port("weights", kDefaultShape.weights), vec4Port("shape", kDefaultShapeVector),

@@ -161,16 +161,17 @@ class WeatherInjector {
     Operand terrain = cfg_.effects.terrainOrientation ? terrainTerm() : k(0.f);
     Operand coverage = b_.add("weather_snow_coverage", {{"normal", normal_}, {"detailNormal", detailNormal},
                                                         {"position", position_}, {"diffuse", diffuse_}, {"terrain", terrain},
-                                                        {"windFlow", windFlow()}, {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
-                                                        {"terms", terms_}, {"noise", noise("transition")}});
+                                                        {"windFlow", windFlow()}, {"exposure", exposure_},
+                                                        {"weights", weights_}, {"shape", shape_}, {"terms", terms_},
+                                                        {"noise", noise("transition")}});
     // Snow's own lit micro-relief replaces the surface's detail under it.
     Operand layerNormal = relief(weather::kSnowReliefAmplitude);
     cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), k(weather::kSnowRoughness), k(0.5f), 0.7f, layerNormal);
     g_.coverage(CoverageTerm::Snow) = coverage;
     if (cfg_.effects.displacement) {
       Operand offset = b_.add("weather_snow_offset", {{"normal", normal_}, {"position", position_}, {"windFlow", windFlow()},
-                                                      {"exposure", exposure_},
-                                                      {"weights", weights_}, {"shape", shape_}, {"terms", terms_},
+                                                      {"exposure", exposure_}, {"weights", weights_}, {"shape", shape_},
+                                                      {"terms", terms_},
                                                       {"maxSnowHeight", paramNodes_[4]}, {"noise", noise("transition")}});
       g_.output(PbrField::WorldPositionOffset) =
           b_.add("add", {{"a", g_.output(PbrField::WorldPositionOffset)}, {"b", offset}});
