@@ -40,7 +40,8 @@ GPU time of the colour pass, from Vulkan timestamp queries:
   neutral*  the same weather drawn with the weathered shaders (their uniform branch)
   active    the materials' own presets in mixed snow, rain, moss, frost and puddles
 and the overheads against none (each the median of one round's ratios, so a machine
-whose speed drifts slows both sides alike), then the process's peak memory.
+whose speed drifts slows both sides alike), the weather's absolute cost (active - none,
+the median of one round's differences), then the process's peak memory.
 )";
 
 constexpr int kWarmUpRounds = 3;  // rounds of all four configurations, not timed
@@ -122,9 +123,10 @@ BenchRequests benchRequests(glm::vec3 sun, unsigned width, unsigned height) {
   return r;
 }
 
-// One configuration's frame times, and each against the same round's "none".
+// One configuration's frame times, and each against the same round's "none": as a ratio
+// and as a difference in milliseconds.
 struct Series {
-  std::vector<double> ms, overNone;
+  std::vector<double> ms, overNone, aboveNone;
 };
 
 // Measures one scene and prints its row; returns its device allocations in bytes.
@@ -144,12 +146,14 @@ std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string
     for (int c = 0; c < 4; ++c) {
       series[c].ms.push_back(ms[c]);
       if (ms[0] > 0.0) series[c].overNone.push_back(ms[c] / ms[0]);
+      series[c].aboveNone.push_back(ms[c] - ms[0]);
     }
   }
   // The stand's and a model's names carry the file's stem: user text, escaped.
-  std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f |\n", quoteUserText(name, 200).c_str(),
+  std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f | %.2f |\n", quoteUserText(name, 200).c_str(),
               median(series[0].ms), median(series[1].ms), median(series[2].ms), median(series[3].ms),
-              median(series[1].overNone), median(series[2].overNone), median(series[3].overNone));
+              median(series[1].overNone), median(series[2].overNone), median(series[3].overNone),
+              median(series[3].aboveNone));
   std::fflush(stdout);
   return renderer.gpuMemoryBytes();
 }
@@ -162,8 +166,9 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
               "warm-up rounds), colour pass only.\n\n",
               ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpRounds);
-  std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | active / none |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+  std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | "
+              "active / none | active - none (ms) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   std::size_t gpuBytes = 0;
   try {
     for (auto& scene : scenes)

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <sstream>
 #include <thread>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -187,6 +188,17 @@ TEST(RenderMaterialCli, GraphErrorsPrintDiagnosticsAndExitOne) {
   EXPECT_FALSE(fs::exists(dir.path() / "out.png"));
 }
 
+// The numbers of a bench-render table's row for `name`, in column order.
+std::vector<double> tableRow(const std::string& output, const std::string& name) {
+  std::vector<double> values;
+  const std::size_t at = output.find("\n| " + name + " | ");
+  if (at == std::string::npos) return values;
+  std::istringstream row(output.substr(at + 4 + name.size(), output.find('\n', at + 1) - at - 4 - name.size()));
+  for (std::string cell; std::getline(row, cell, '|');)
+    if (cell.find_first_not_of(' ') != std::string::npos) values.push_back(std::stod(cell));
+  return values;
+}
+
 // bench-render --material: the weather's frame cost for a user's graph on the stand, one
 // row named after the graph; a graph that does not compile is bad input, as for render.
 TEST(RenderMaterialCli, BenchRenderMeasuresAUserGraphOnTheStand) {
@@ -197,6 +209,11 @@ TEST(RenderMaterialCli, BenchRenderMeasuresAUserGraphOnTheStand) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("\n| stand-user | "), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("| valley |"), std::string::npos) << r.output;  // the stand alone
+  // The last column is the weather's absolute cost; of one frame, active less none.
+  EXPECT_NE(r.output.find("| active / none | active - none (ms) |\n"), std::string::npos) << r.output;
+  const std::vector<double> row = tableRow(r.output, "stand-user");
+  ASSERT_EQ(row.size(), 8u) << r.output;
+  EXPECT_NEAR(row[7], row[3] - row[0], 0.011) << r.output;
 
   fs::create_directories(dir.path() / "broken");
   fs::path broken = writeUserGraph(dir.path() / "broken", "sampel");
