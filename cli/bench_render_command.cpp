@@ -18,6 +18,7 @@
 #include "compiler/literal.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/effect_overrides_option.hpp"
 #include "runtime/material_compile_error.hpp"
 #include "runtime/scene/graph_path.hpp"
 #include "runtime/scene/preview_stand.hpp"
@@ -30,6 +31,7 @@ namespace {
 constexpr const char* kUsage = R"(Usage: weathergen bench-render [--scene NAME|all | --material GRAPH.json |
                                --model MODEL.gltf [--model-scale S]]
                               [--frames N] [--size WxH] [--samples N] [--device NAME]
+                              [--effects NAME=on|off,...]
 
 Renders each scene (or the graph on the preview stand, as 'render --material' draws
 it, or the glTF model on its stage, as 'render --model' does) N times (default 30,
@@ -41,7 +43,9 @@ GPU time of the colour pass, from Vulkan timestamp queries:
   active    the materials' own presets in mixed snow, rain, moss, frost and puddles
 and the overheads against none (each the median of one round's ratios, so a machine
 whose speed drifts slows both sides alike), the weather's absolute cost (active - none,
-the median of one round's differences), then the process's peak memory.
+the median of one round's differences), then the process's peak memory. --effects
+switches looks on or off in every weathered configuration, so two runs tell what a
+look costs on this device (docs/weather-model.md, "Looks beyond the seed").
 )";
 
 constexpr int kWarmUpRounds = 3;  // rounds of all four configurations, not timed
@@ -54,6 +58,7 @@ double median(std::vector<double> v) {
 struct BenchRenderOptions {
   std::string sceneArg = "all", device, size = "1920x1080", materialPath, modelPath;
   float modelScale = 1.f;
+  WeatherEffectOverrides effects;
   int frames = 30;
   unsigned samples = kDefaultColourSamples;
   bool help = false;
@@ -79,6 +84,7 @@ OptionTable benchRenderOptionTable(BenchRenderOptions& o) {
       {"--samples", "", "N", "MSAA samples per pixel of the lit pass, 1 for none (default 4)",
        [&o](const std::string& v) { return setSampleCount(v, o.samples); }},
       {"--device", "", "NAME", "Vulkan device, as render takes it", storeValue(o.device)},
+      {"--effects", "", "LIST", kEffectsOptionHelp, [&o](const std::string& v) { return addEffectOverrides(v, o.effects); }},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
   }};
 }
@@ -108,10 +114,11 @@ struct BenchRequests {
   RenderRequest none, neutral, branchOnly, active;
 };
 
-BenchRequests benchRequests(glm::vec3 sun, unsigned width, unsigned height) {
+BenchRequests benchRequests(glm::vec3 sun, unsigned width, unsigned height, const WeatherEffectOverrides& effects) {
   RenderRequest base;
   base.width = width;
   base.height = height;
+  base.weatherEffects = effects;  // "none" compiles without weather, so without them
   base.weather.conditions.sunDirection = {sun.x, sun.y, sun.z};
   base.weather.conditions.temperature = 15.f;  // neutral: dry and warm, every level 0
   BenchRequests r{base, base, base, base};
@@ -134,7 +141,7 @@ struct Series {
 // measuring them one after another made "none" alone vary by a fifth between runs.
 std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string& graphsDir, unsigned width,
                          unsigned height, const BenchRenderOptions& o) {
-  const BenchRequests requests = benchRequests(scene.towardsSun, width, height);
+  const BenchRequests requests = benchRequests(scene.towardsSun, width, height, o.effects);
   const RenderRequest* order[] = {&requests.none, &requests.neutral, &requests.branchOnly, &requests.active};
   std::string name = scene.name;
   SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(o.samples));
@@ -166,6 +173,7 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
               "warm-up rounds), colour pass only.\n\n",
               ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpRounds);
+  if (!o.effects.empty()) std::printf("Effects switched in every weathered configuration: %s.\n\n", effectOverridesText(o.effects).c_str());
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | "
               "active / none | active - none (ms) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");

@@ -18,6 +18,7 @@
 #include "compiler/variant_index.hpp"
 #include "driver/batch_compile.hpp"
 #include "cli/depfile.hpp"
+#include "cli/effect_overrides_option.hpp"
 #include "cli/staged_directory.hpp"
 #include "compiler/material_input_files.hpp"
 #include "cli/progress_line.hpp"
@@ -82,6 +83,7 @@ struct Options {
   bool quiet = false;
   bool help = false;
   std::optional<std::string> weatherPreset;
+  WeatherEffectOverrides effects;
   int jobs = 0;  // 0: one per core
   std::string depfile;
   std::optional<VariantSelection> variants;
@@ -150,6 +152,7 @@ std::vector<Option> materialAndReportOptions(Options& o) {
       {"--weather-preset", "", "NAME",
        "weather preset for every graph, replacing the graph's own\n(rock, terrain, foliage, river, road, none)",
        storeChecked(o.weatherPreset, checkWeatherPresetName)},
+      {"--effects", "", "LIST", kEffectsOptionHelp, [&o](const std::string& v) { return addEffectOverrides(v, o.effects); }},
       {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
        [&o](const std::string& v) { return setDiagnosticsFormat(v, o.json); }},
       {"--quiet", "-q", "", "print nothing but diagnostics", storeFlag(o.quiet)},
@@ -271,6 +274,7 @@ CompileOptions compileOptionsFor(const Options& o) {
   options.emitCppHeader = o.targets.header;
   options.optimize = o.optimize;
   options.weatherPreset = o.weatherPreset;
+  options.weatherEffects = o.effects;
   options.hashKeyedFileStem = o.variants.has_value();
   return options;
 }

@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/effect_overrides_option.hpp"
 #include "cli/eval_inputs.hpp"
 #include "cli/option_table.hpp"
 #include "compiler/content_hash.hpp"
@@ -46,6 +47,7 @@ struct Options {
   std::vector<std::string> graphs;  // one, checked after parsing
   std::string graph;
   std::optional<std::string> weatherPreset;
+  WeatherEffectOverrides effects;
   std::vector<std::pair<std::string, std::string>> lists;  // flag, "name=value,..." in order
   bool help = false;
   bool json = false;
@@ -64,6 +66,8 @@ OptionTable evalOptionTable(Options& o) {
               {"--weather-preset", "", "NAME",
                "weather preset, replacing the graph's own\n(rock, terrain, foliage, river, road, none)",
                storeChecked(o.weatherPreset, checkWeatherPresetName)},
+              {"--effects", "", "LIST", kEffectsOptionHelp,
+               [&o](const std::string& v) { return addEffectOverrides(v, o.effects); }},
               {"--weather", "", "name=value,...", "frame block weather members (below)", storeList(o, "--weather")},
               {"--at", "", "name=value,...", "surface inputs at the point (below)", storeList(o, "--at")},
               {"--param", "", "name=value,...", "material parameters (with GRAPH, --help lists them)",
@@ -189,7 +193,7 @@ std::optional<IrGraph> buildEvalGraph(const Options& o) {
   DiagnosticList diagnostics;
   std::optional<IrGraph> ir;
   if (auto text = readGraphFile(o.graph, diagnostics))
-    ir = buildOptimizedIr(o.graph, std::move(*text), diagnostics, CompileOptions{.weatherPreset = o.weatherPreset});
+    ir = buildOptimizedIr(o.graph, std::move(*text), diagnostics, CompileOptions{.weatherPreset = o.weatherPreset, .weatherEffects = o.effects});
   if (!diagnostics.empty()) printDiagnostics(diagnostics.items(), o.json);
   if (!ir || diagnostics.hasErrors()) return std::nullopt;
   return ir;

@@ -9,6 +9,7 @@
 #include "cli/bundled_graphs_directory.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/effect_overrides_option.hpp"
 #include "cli/option_table.hpp"
 #include "cli/orbit_camera_option.hpp"
 #include "compiler/literal.hpp"
@@ -128,6 +129,8 @@ std::vector<Option> weatherOptions(RenderOptions& o) {
          o.weatherPreset = v;
          return checkWeatherPresetName(v);
        }},
+      {"--effects", "", "LIST", kEffectsOptionHelp,
+       [&o](const std::string& v) { return addEffectOverrides(v, o.request.weatherEffects); }},
   };
 }
 

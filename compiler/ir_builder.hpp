@@ -20,6 +20,7 @@ struct IrLimits {
 
 struct IrBuildOptions {
   std::optional<std::string> weatherPreset;  // the CLI's --weather-preset, replacing the graph's
+  WeatherEffectOverrides weatherEffects;    // the CLI's --effects, over the graph's own
   IrLimits limits;
 };
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "compiler/diagnostic.hpp"
@@ -57,15 +58,22 @@ struct WeatherConfig {
   bool active() const { return preset != "none"; }
 };
 
+// Effects a caller switches on or off over every graph's own, after the graph's
+// "effects" block: compile, render and bench-render's --effects, Options::effects.
+using WeatherEffectOverrides = std::vector<std::pair<std::string, bool>>;
+
 std::vector<std::string_view> weatherPresetNames();
 std::optional<WeatherConfig> weatherPreset(std::string_view name);
 
 // Resolves the graph's "weather" value (a preset name or an object with "preset" and
-// overrides), with presetOverride (the CLI's --weather-preset) replacing the preset.
-// Reports WG4001/WG4002 and returns nullopt on errors.
+// overrides), with presetOverride (the CLI's --weather-preset) replacing the preset and
+// effectOverrides applied last while the weather is active. Reports WG4001-WG4009 (an
+// unknown overridden effect as WG4006, without a location, whether or not the weather
+// is active) and returns nullopt on errors.
 std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::json>& block,
                                                   const std::string& pointer,
                                                   const std::optional<std::string>& presetOverride,
+                                                  const WeatherEffectOverrides& effectOverrides,
                                                   const JsonDocument& document, DiagnosticList& diagnostics);
 
 }  // namespace wg

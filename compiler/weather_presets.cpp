@@ -116,6 +116,18 @@ NamedPreset namedPreset(const std::optional<nlohmann::json>& block, const std::s
   return named;
 }
 
+const WeatherEffectFlag* findEffectFlag(std::string_view name) {
+  auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [name](const WeatherEffectFlag& f) { return f.name == name; });
+  return flag == kEffectFlags.end() ? nullptr : &*flag;
+}
+
+// "unknown weather effect 'x'", with the nearest names as its hint.
+void reportUnknownEffect(DiagnosticList& diags, SourceLocation at, const std::string& name) {
+  std::vector<std::string_view> names;
+  for (const auto& f : kEffectFlags) names.push_back(f.name);
+  diags.report(DiagCode::UnknownWeatherKey, std::move(at), {"effect", quoteUserText(name), unknownNameHint(name, names, "effects")});
+}
+
 // "effects": {"moss": false, ...}
 void applyEffects(const nlohmann::json& value, const std::string& at, WeatherConfig& config, SettingErrors& errors) {
   if (!value.is_object()) {
@@ -123,13 +135,11 @@ void applyEffects(const nlohmann::json& value, const std::string& at, WeatherCon
     return;
   }
   for (const auto& [effect, on] : value.items()) {
-    const std::string& effectName = effect;  // clang 14 cannot capture structured bindings
-    auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [&](const WeatherEffectFlag& f) { return f.name == effectName; });
+    const WeatherEffectFlag* flag = findEffectFlag(effect);
     std::string effectAt = appendPointer(at, effect);
-    if (flag == kEffectFlags.end()) {
-      std::vector<std::string_view> names;
-      for (const auto& f : kEffectFlags) names.push_back(f.name);
-      errors.report(DiagCode::UnknownWeatherKey, effectAt, {"effect", quoteUserText(effect), unknownNameHint(effect, names, "effects")});
+    if (!flag) {
+      reportUnknownEffect(errors.diags, errors.doc.locate(effectAt), effect);
+      errors.ok = false;
     } else if (!on.is_boolean()) {
       errors.wrongKind(effectAt, "effect '" + std::string(flag->name) + "'", "true or false", describeJsonKind(on));
     } else {
@@ -214,6 +224,21 @@ void applyOverrides(const nlohmann::json& overrides, const std::string& pointer,
     errors.report(DiagCode::WeatherHeightRange, pointer, {formatFloat(config.minHeight), formatFloat(config.maxHeight)});
 }
 
+// The caller's effect switches, over the graph's, while the weather is active. An
+// unknown name is an error either way; it has no place in the graph, so no location.
+bool applyEffectOverrides(const WeatherEffectOverrides& overrides, WeatherConfig& config, DiagnosticList& diags) {
+  bool ok = true;
+  for (const auto& [name, on] : overrides) {
+    if (const WeatherEffectFlag* flag = findEffectFlag(name)) {
+      if (config.active()) config.effects.*(flag->flag) = on;
+    } else {
+      reportUnknownEffect(diags, SourceLocation{}, name);
+      ok = false;
+    }
+  }
+  return ok;
+}
+
 }  // namespace
 
 const std::array<WeatherEffectFlag, kWeatherEffectCount>& weatherEffectFlags() { return kEffectFlags; }
@@ -227,6 +252,7 @@ std::optional<WeatherConfig> weatherPreset(std::string_view name) {
 
 std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::json>& block, const std::string& pointer,
                                                   const std::optional<std::string>& presetOverride,
+                                                  const WeatherEffectOverrides& effectOverrides,
                                                   const JsonDocument& doc, DiagnosticList& diags) {
   SettingErrors errors{doc, diags};
   NamedPreset named = namedPreset(block, pointer, errors);
@@ -238,6 +264,7 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
     return std::nullopt;
   }
   if (named.overrides) applyOverrides(*named.overrides, pointer, *config, errors);
+  if (!applyEffectOverrides(effectOverrides, *config, diags)) return std::nullopt;
   return errors.ok ? config : std::nullopt;
 }
 

@@ -55,6 +55,7 @@ std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string tex
   if (!graph || !resolveStaticSwitches(*graph, options.switches, *document, diagnostics)) return std::nullopt;
   IrBuildOptions buildOptions;
   buildOptions.weatherPreset = options.weatherPreset;
+  buildOptions.weatherEffects = options.weatherEffects;
   auto ir = buildIr(*graph, *document, diagnostics, buildOptions);
   if (!ir) return std::nullopt;
   if (auto violation = runPassPipeline(*ir, options.passes)) {

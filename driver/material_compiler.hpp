@@ -21,6 +21,7 @@ struct CompileOptions {
   bool emitDisassembly = false;  // .spvasm text of each SPIR-V module (compile --target spirv)
   bool optimize = false;  // spirv-opt performance passes (-O)
   std::optional<std::string> weatherPreset;  // replaces the graph's preset (--weather-preset)
+  WeatherEffectOverrides weatherEffects;     // switched over the graph's own effects (--effects)
   bool emitReflection = true;  // off for callers that only want shader text
   bool emitCppHeader = false;  // C++ std140 structs of the uniform blocks (--emit-header)
   // SPIRV-Cross translations of each stage's validated, pre-optimisation SPIR-V

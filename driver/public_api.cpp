@@ -58,6 +58,7 @@ Result compileOrThrow(std::string_view fileName, std::string_view json, const Op
   internal.emitSpirv = options.spirv;
   internal.optimize = options.optimize;
   if (!options.weatherPreset.empty()) internal.weatherPreset = options.weatherPreset;
+  internal.weatherEffects.assign(options.effects.begin(), options.effects.end());
   internal.emitCppHeader = options.cppHeader;
   internal.switches = wg::SwitchValues(options.switches.begin(), options.switches.end());
   wg::CompileResult compiled = wg::compileMaterialText(std::string(fileName), std::string(json), internal);

@@ -118,12 +118,19 @@ void SceneRenderer::uploadTerrain() {
   terrainHeight_.upload(ctx_, scene_.terrainHeights.data(), scene_.terrainHeights.size() * sizeof(float));
 }
 
-MaterialResources& SceneRenderer::material(const std::string& graph, const std::optional<std::string>& preset) {
+// One compiled material per graph, preset and effect overrides; the unweathered variant
+// ignores the overrides, so every request shares it.
+MaterialResources& SceneRenderer::material(const std::string& graph, const std::optional<std::string>& preset,
+                                           const WeatherEffectOverrides& effects) {
+  const bool unweathered = preset == "none";
   std::string key = graph + "|" + preset.value_or("");
+  if (!unweathered)
+    for (const auto& [name, on] : effects) key += "|" + name + (on ? "=on" : "=off");
   auto& slot = materials_[key];
   if (!slot) {
     CompileOptions options;
     options.weatherPreset = preset;
+    if (!unweathered) options.weatherEffects = effects;
     slot = std::make_unique<MaterialResources>(ctx_, scene::graphFilePath(graph, graphsDirectory_), options);
   }
   return *slot;
@@ -182,7 +189,7 @@ std::vector<MaterialResources*> SceneRenderer::materialsFor(const RenderRequest&
   std::optional<std::string> preset = request.weatherPreset;
   if (!preset && neutral && request.unweatheredVariantWhenNeutral) preset = "none";
   std::vector<MaterialResources*> mats;
-  for (const auto& o : scene_.objects) mats.push_back(&material(o.graph, preset));
+  for (const auto& o : scene_.objects) mats.push_back(&material(o.graph, preset, request.weatherEffects));
   return mats;
 }
 

@@ -40,6 +40,7 @@ struct RenderRequest {
   std::uint32_t debugView = 0;  // compiler/debug_views.hpp: 0 lit, 1 albedo, ...
   WeatherState weather;
   std::optional<std::string> weatherPreset;  // replaces every material's preset ("none" for baselines)
+  WeatherEffectOverrides weatherEffects;     // switched over every weathered material's own effects
   bool shadows = true;
   // Draw only this object (the others still cast shadows and shelter from the sky);
   // "" draws all. Lets tests know which material covers a pixel.
@@ -104,7 +105,8 @@ class SceneRenderer {
   struct Object;
   struct Pass;
   struct Frame;
-  MaterialResources& material(const std::string& graph, const std::optional<std::string>& preset);
+  MaterialResources& material(const std::string& graph, const std::optional<std::string>& preset,
+                              const WeatherEffectOverrides& effects);
   vk::MaterialPipeline& pipelineOf(MaterialResources& material, const RenderRequest& request);
   void uploadTerrain();
   // The sky-exposure map, drawn once (sky_exposure_map.cpp).

@@ -37,6 +37,9 @@ struct Options {
   bool spirv = true;           // compile every stage to validated SPIR-V
   bool optimize = false;       // spirv-opt's performance passes
   std::string weatherPreset;   // "" keeps the graph's own preset
+  // Weather effects switched on or off over the graph's own, by name ("relief",
+  // "specularAntiAliasing"...; docs/weather-model.md); an unknown name is a diagnostic.
+  std::map<std::string, bool> effects;
   bool cppHeader = false;      // fill Result::cppHeader (std140 structs with static_asserts)
   // The variant: static switch name -> value (docs/graph-format.md, "Static switches");
   // switches not named keep their default. Unknown names or values are diagnostics.

@@ -7,6 +7,7 @@ function(weathergen_add_cli_options_case target)
     ${PROJECT_SOURCE_DIR}/cli/bundled_graphs_directory.cpp
     ${PROJECT_SOURCE_DIR}/cli/command_line.cpp
     ${PROJECT_SOURCE_DIR}/cli/diagnostic_output.cpp
+    ${PROJECT_SOURCE_DIR}/cli/effect_overrides_option.cpp
     ${PROJECT_SOURCE_DIR}/cli/eval_inputs.cpp
     ${PROJECT_SOURCE_DIR}/cli/number_text.cpp
     ${PROJECT_SOURCE_DIR}/cli/option_table.cpp

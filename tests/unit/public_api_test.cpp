@@ -138,6 +138,28 @@ TEST(PublicApi, SwitchesChooseTheVariant) {
   EXPECT_TRUE(hasCode(weathergen::compile(g.file, g.text, options), "WG2015"));
 }
 
+TEST(PublicApi, EffectsSwitchTheGraphsOwn) {
+  Graph g = rock();
+  weathergen::Options options;
+  options.spirv = false;
+  weathergen::Result full = weathergen::compile(g.file, g.text, options);
+  options.effects = {{"specularAntiAliasing", false}};
+  weathergen::Result lean = weathergen::compile(g.file, g.text, options);
+  ASSERT_TRUE(full.ok && lean.ok) << describe(lean);
+  EXPECT_NE(full.contentHash, lean.contentHash);
+  auto fragment = [](const weathergen::Result& r) {
+    for (const auto& s : r.stages)
+      if (s.language == "glsl" && s.stage == "frag") return s.source;
+    return std::string();
+  };
+  EXPECT_NE(fragment(full).find("wg_specular_aa("), std::string::npos);
+  EXPECT_EQ(fragment(lean).find("wg_specular_aa("), std::string::npos);
+  options.effects = {{"specularAA", false}};
+  weathergen::Result unknown = weathergen::compile(g.file, g.text, options);
+  EXPECT_FALSE(unknown.ok);
+  EXPECT_TRUE(hasCode(unknown, "WG4006")) << describe(unknown);
+}
+
 TEST(PublicApi, BadInputComesBackAsDiagnostics) {
   weathergen::Result r = weathergen::compile("broken.json", "{ \"name\": ");
   EXPECT_FALSE(r.ok);
