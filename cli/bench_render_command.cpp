@@ -84,7 +84,8 @@ OptionTable benchRenderOptionTable(BenchRenderOptions& o) {
       {"--samples", "", "N", "MSAA samples per pixel of the lit pass, 1 for none (default 4)",
        [&o](const std::string& v) { return setSampleCount(v, o.samples); }},
       {"--device", "", "NAME", "Vulkan device, as render takes it", storeValue(o.device)},
-      {"--effects", "", "LIST", kEffectsOptionHelp, [&o](const std::string& v) { return addEffectOverrides(v, o.effects); }},
+      {"--effects", "", "LIST", kEffectsOptionHelp,
+       [&o](const std::string& v) { return addEffectOverrides(v, o.effects); }},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
   }};
 }
@@ -173,7 +174,8 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
               "warm-up rounds), colour pass only.\n\n",
               ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpRounds);
-  if (!o.effects.empty()) std::printf("Effects switched in every weathered configuration: %s.\n\n", effectOverridesText(o.effects).c_str());
+  if (!o.effects.empty())
+    std::printf("Effects switched in every weathered configuration: %s.\n\n", effectOverridesText(o.effects).c_str());
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | "
               "active / none | active - none (ms) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");

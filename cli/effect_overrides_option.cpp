@@ -16,18 +16,13 @@ std::string effectNameList() {
   return names;
 }
 
-bool isEffectName(std::string_view name) {
-  const auto& flags = weatherEffectFlags();
-  return std::any_of(flags.begin(), flags.end(), [name](const WeatherEffectFlag& f) { return f.name == name; });
-}
-
 // One NAME=on|off item: "" or the message.
 std::string addEffectOverride(std::string_view item, WeatherEffectOverrides& effects) {
   const std::size_t equals = item.find('=');
   if (equals == std::string_view::npos) return std::string(kForm) + "; '" + quoteUserText(item) + "' has no '='";
   const std::string name(item.substr(0, equals));
   const std::string_view value = item.substr(equals + 1);
-  if (!isEffectName(name))
+  if (!findWeatherEffectFlag(name))
     return "--effects: unknown effect '" + quoteUserText(name) + "' (effects: " + effectNameList() + ")";
   if (std::any_of(effects.begin(), effects.end(), [&name](const auto& e) { return e.first == name; }))
     return "--effects names '" + name + "' twice; give each effect once";

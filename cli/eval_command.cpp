@@ -193,7 +193,8 @@ std::optional<IrGraph> buildEvalGraph(const Options& o) {
   DiagnosticList diagnostics;
   std::optional<IrGraph> ir;
   if (auto text = readGraphFile(o.graph, diagnostics))
-    ir = buildOptimizedIr(o.graph, std::move(*text), diagnostics, CompileOptions{.weatherPreset = o.weatherPreset, .weatherEffects = o.effects});
+    ir = buildOptimizedIr(o.graph, std::move(*text), diagnostics,
+                          CompileOptions{.weatherPreset = o.weatherPreset, .weatherEffects = o.effects});
   if (!diagnostics.empty()) printDiagnostics(diagnostics.items(), o.json);
   if (!ir || diagnostics.hasErrors()) return std::nullopt;
   return ir;

@@ -41,6 +41,7 @@ struct WeatherEffectFlag {
 };
 inline constexpr std::size_t kWeatherEffectCount = 13;
 const std::array<WeatherEffectFlag, kWeatherEffectCount>& weatherEffectFlags();
+const WeatherEffectFlag* findWeatherEffectFlag(std::string_view name);  // nullptr: no such effect
 
 struct WeatherConfig {
   std::string preset = "none";

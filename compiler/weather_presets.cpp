@@ -116,16 +116,12 @@ NamedPreset namedPreset(const std::optional<nlohmann::json>& block, const std::s
   return named;
 }
 
-const WeatherEffectFlag* findEffectFlag(std::string_view name) {
-  auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(), [name](const WeatherEffectFlag& f) { return f.name == name; });
-  return flag == kEffectFlags.end() ? nullptr : &*flag;
-}
-
 // "unknown weather effect 'x'", with the nearest names as its hint.
 void reportUnknownEffect(DiagnosticList& diags, SourceLocation at, const std::string& name) {
   std::vector<std::string_view> names;
   for (const auto& f : kEffectFlags) names.push_back(f.name);
-  diags.report(DiagCode::UnknownWeatherKey, std::move(at), {"effect", quoteUserText(name), unknownNameHint(name, names, "effects")});
+  diags.report(DiagCode::UnknownWeatherKey, std::move(at),
+               {"effect", quoteUserText(name), unknownNameHint(name, names, "effects")});
 }
 
 // "effects": {"moss": false, ...}
@@ -135,7 +131,7 @@ void applyEffects(const nlohmann::json& value, const std::string& at, WeatherCon
     return;
   }
   for (const auto& [effect, on] : value.items()) {
-    const WeatherEffectFlag* flag = findEffectFlag(effect);
+    const WeatherEffectFlag* flag = findWeatherEffectFlag(effect);
     std::string effectAt = appendPointer(at, effect);
     if (!flag) {
       reportUnknownEffect(errors.diags, errors.doc.locate(effectAt), effect);
@@ -229,7 +225,7 @@ void applyOverrides(const nlohmann::json& overrides, const std::string& pointer,
 bool applyEffectOverrides(const WeatherEffectOverrides& overrides, WeatherConfig& config, DiagnosticList& diags) {
   bool ok = true;
   for (const auto& [name, on] : overrides) {
-    if (const WeatherEffectFlag* flag = findEffectFlag(name)) {
+    if (const WeatherEffectFlag* flag = findWeatherEffectFlag(name)) {
       if (config.active()) config.effects.*(flag->flag) = on;
     } else {
       reportUnknownEffect(diags, SourceLocation{}, name);
@@ -242,6 +238,12 @@ bool applyEffectOverrides(const WeatherEffectOverrides& overrides, WeatherConfig
 }  // namespace
 
 const std::array<WeatherEffectFlag, kWeatherEffectCount>& weatherEffectFlags() { return kEffectFlags; }
+
+const WeatherEffectFlag* findWeatherEffectFlag(std::string_view name) {
+  auto flag = std::find_if(kEffectFlags.begin(), kEffectFlags.end(),
+                           [name](const WeatherEffectFlag& f) { return f.name == name; });
+  return flag == kEffectFlags.end() ? nullptr : &*flag;
+}
 
 std::vector<std::string_view> weatherPresetNames() { return {kPresets.begin(), kPresets.end()}; }
 
