@@ -25,10 +25,11 @@ constexpr std::string_view kFragmentPrologue =
     "  vec3 wg_worldNormal = wg_safe_normalize(v_worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);\n"
     "  vec3 wg_tangentAxis = wg_safe_normalize(v_worldTangent.xyz - wg_worldNormal * dot(wg_worldNormal, v_worldTangent.xyz));\n"
     "  vec4 wg_worldTangent = vec4(wg_tangentAxis, v_worldTangent.w);\n"
+    // Before the weather, written as its tangent frames write it, so spirv-opt shares one.
+    "  vec3 wg_bitangent = cross(wg_worldNormal, wg_worldTangent.xyz) * wg_worldTangent.w;\n"
     "  vec2 wg_texcoord = v_texcoord;\n"
     "  vec4 wg_vertexColor = v_color;\n";
 constexpr std::string_view kFragmentShading =
-    "  vec3 wg_bitangent = cross(wg_worldNormal, wg_tangentAxis) * wg_worldTangent.w;\n"
     "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
     "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
     "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";

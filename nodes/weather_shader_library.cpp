@@ -61,7 +61,7 @@ vec3 wg_terrain_slope(const float h0, const float hu, const float hv, const floa
 }
 // Eq. 3.13: the slope's height-map (u, v) lie along world (x, z).
 float wg_terrain_orientation(const vec3 slope, const vec3 n, const float tangentNormalZ, const float intensity) {
-  return dot(vec3(slope.x, 0.0, slope.y), n) * tangentNormalZ * intensity;
+  return dot(slope.xy, n.xz) * tangentNormalZ * intensity;
 }
 float wg_transition(const float noise, const float p) { return wg_clamp01(noise - 1.0 + 3.0 * p); }  // eq. 3.14
 // Eq. 3.1: inclination gates every other term.
@@ -81,8 +81,10 @@ float wg_wet_roughness(const float r, const float p) { return wg_clamp01(r - p);
 // capped at 0.18). Only the lit frame: AOVs show a point's value, as the CPU does.
 float wg_specular_aa(const float r, const vec3 dndx, const vec3 dndy) {
   float variance = 0.25 * (dot(dndx, dndx) + dot(dndy, dndy));
-  float kernel = frame_debugView != 0u ? 0.0 : min(2.0 * variance, 0.18);
-  return kernel > 0.0 ? sqrt(sqrt(min(r * r * r * r + kernel, 1.0))) : r;
+  // Selects, not branches: both sides are a few instructions.
+  float kernel = min(2.0 * variance, 0.18) * float(frame_debugView == 0u);
+  float widened = sqrt(sqrt(min(r * r * r * r + kernel, 1.0)));
+  return kernel > 0.0 ? widened : r;
 }
 // Eq. 3.18: a panning ripple added to the tangent-space normal while it rains. Its two
 // slopes are two smooth noise fields at the panned point (the ripple b and the transition
@@ -96,8 +98,8 @@ vec3 wg_wet_normal(const vec3 n, const vec2 xz, const float p, const float preci
   vec2 uv = xz * 0.03125 + vec2(0.5, 0.01) * (p * t * 0.015625);  // ripple cells: 64 per tile
   vec4 noise = wg_weather_noise(uv);
   float cellsPerPixel = 2.0 * max(footprint.x, footprint.y);
-  vec2 pan = vec2(noise.z - 0.5, noise.x - 0.5) * (1.0 - smoothstep(0.25, 0.75, cellsPerPixel));
-  return n + vec3(pan * strength, 0.0);
+  vec2 pan = (noise.zx - 0.5) * ((1.0 - smoothstep(0.25, 0.75, cellsPerPixel)) * strength);
+  return n + vec3(pan, 0.0);
 }
 // Eq. 3.19
 vec3 wg_desaturate(const vec3 c, const float p) { return p * dot(vec3(0.3, 0.59, 0.11), c) + (1.0 - p) * c; }
@@ -188,11 +190,15 @@ float wg_hoarfrost_coverage(const float noise, const float exposure) {
 // (12.5 cm, kReliefStep) along x and z, tilted into the tangent frame (n the geometric
 // normal, tangent its tangent): a tangent-space normal for cover().
 vec3 wg_noise_relief(const vec3 p, const float height, const float amplitude, const vec3 n, const vec4 tangent) {
-  float hx = wg_weather_noise_at(p + vec3(0.125, 0.0, 0.0)).x;
-  float hz = wg_weather_noise_at(p + vec3(0.0, 0.0, 0.125)).x;
-  vec3 slope = vec3(hx - height, 0.0, hz - height) * (amplitude / 0.125);  // metres per metre
+  // The shared lookup's uv, offset by kReliefStep (1/256 of a tile): the same bits as
+  // offsetting p, since the tile scale is a power of two.
+  vec2 uv = p.xz * 0.03125;
+  float hx = wg_weather_noise(uv + vec2(0.00390625, 0.0)).x;
+  float hz = wg_weather_noise(uv + vec2(0.0, 0.00390625)).x;
+  // The slope negated (height minus neighbour), so the normal needs no negation.
+  vec3 downhill = vec3(height - hx, 0.0, height - hz) * (amplitude / 0.125);  // metres per metre
   vec3 b = cross(n, tangent.xyz) * tangent.w;
-  return vec3(-dot(slope, tangent.xyz), -dot(slope, b), 1.0);
+  return vec3(dot(downhill, tangent.xyz), dot(downhill, b), 1.0);
 }
 // Tangent-space normal to world space; the fragment stage's frame is already orthonormal.
 vec3 wg_tangent_to_world(const vec3 n, const vec3 normal, const vec4 tangent) {
@@ -208,7 +214,7 @@ vec3 wg_tangent_to_world(const vec3 n, const vec3 normal, const vec4 tangent) {
 // w (0,0)) are each compared with the point, then weighted bilinearly.
 // 2048.0 is weather::kSkyExposureResolution, 1.5 kSkyExposureNormalOffset.
 vec2 wg_sky_exposure_uv(const vec3 p, const vec3 n) {
-  return (vec2(p.x, p.z) - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw + n.xz * (1.5 / 2048.0);
+  return (p.xz - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw + n.xz * (1.5 / 2048.0);
 }
 float wg_exposure_from_map(const vec3 p, const vec3 n, const vec4 occluderHeights) {
   vec2 uv = wg_sky_exposure_uv(p, n);
