@@ -398,14 +398,15 @@ Mesh rock(std::uint32_t seed, float radius, int detail) {
   shared.indices = sphere.indices;
   computeNormals(shared);
 
-  // Each triangle goes to the cube chart its undisplaced centre faces; vertices used by
-  // several charts are duplicated, one per chart.
+  // Each triangle goes to the cube chart its displaced face faces (a facet cut turns a
+  // side of the sphere upwards, and projecting it along its old axis streaks the
+  // texture); vertices used by several charts are duplicated, one per chart.
   Mesh m;
   std::map<std::pair<std::uint32_t, int>, std::uint32_t> chartVertex;
   for (std::size_t f = 0; f < sphere.indices.size(); f += 3) {
-    glm::vec3 centre = sphere.dirs[sphere.indices[f]] + sphere.dirs[sphere.indices[f + 1]] +
-                       sphere.dirs[sphere.indices[f + 2]];
-    int chart = dominantAxis(centre);
+    const glm::vec3& a = shared.positions[sphere.indices[f]];
+    int chart = dominantAxis(glm::cross(shared.positions[sphere.indices[f + 1]] - a,
+                                        shared.positions[sphere.indices[f + 2]] - a));
     const FaceFrame& frame = kAxisFrames[chart];
     for (int k = 0; k < 3; ++k) {
       std::uint32_t v = sphere.indices[f + k];

@@ -349,6 +349,26 @@ TEST(SceneShapes, RocksAreClosedSeededAndDeterministic) {
   EXPECT_LT(b.max.x - b.min.x, 8.f);
 }
 
+// A rock's texture is cube-projected per triangle, so a triangle projected along an axis
+// its face does not face stretches the texture into streaks: uv area per world area falls
+// towards 0. On the chart its face normal picks, it stays within a factor sqrt(3).
+TEST(SceneShapes, RockTextureChartsFollowTheDisplacedFaces) {
+  for (std::uint32_t seed : {1u, 7u, 8u, 23u}) {
+    Mesh m = rock(seed, 2.f, 3);
+    double least = 1e30, most = 0.0;
+    for (std::size_t t = 0; t < triangleCount(m); ++t) {
+      std::uint32_t i = m.indices[t * 3], j = m.indices[t * 3 + 1], k = m.indices[t * 3 + 2];
+      double world = glm::length(glm::cross(m.positions[j] - m.positions[i], m.positions[k] - m.positions[i]));
+      glm::vec2 du = m.texcoords[j] - m.texcoords[i], dv = m.texcoords[k] - m.texcoords[i];
+      double uv = std::abs(du.x * dv.y - du.y * dv.x);
+      if (world < 1e-8) continue;
+      least = std::min(least, uv / world);
+      most = std::max(most, uv / world);
+    }
+    EXPECT_LE(most / least, std::sqrt(3.0) * 1.001) << "seed " << seed;
+  }
+}
+
 TEST(SceneShapes, RoadMeshFollowsItsLayout) {
   RoadLayout road;
   road.start = {-10.f, 2.f, 5.f};
