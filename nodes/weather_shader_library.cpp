@@ -192,7 +192,7 @@ float wg_hoarfrost_coverage(const float noise, const float exposure) {
 vec3 wg_noise_relief(const vec3 p, const float height, const float amplitude, const vec3 n, const vec4 tangent) {
   // The shared lookup's uv, offset by kReliefStep (1/256 of a tile): the same bits as
   // offsetting p, since the tile scale is a power of two.
-  vec2 uv = p.xz * 0.03125;
+  vec2 uv = wg_weather_noise_uv(p);
   float hx = wg_weather_noise(uv + vec2(0.00390625, 0.0)).x;
   float hz = wg_weather_noise(uv + vec2(0.0, 0.00390625)).x;
   // The slope negated (height minus neighbour), so the normal needs no negation.

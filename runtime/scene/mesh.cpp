@@ -35,13 +35,14 @@ glm::vec3 orthogonalise(glm::vec3 t, glm::vec3 n) {
   return t;
 }
 
+}  // namespace
+
 glm::vec3 faceNormal(const Mesh& m, std::size_t tri) {
   glm::vec3 a = m.positions[m.indices[tri * 3]];
   glm::vec3 b = m.positions[m.indices[tri * 3 + 1]];
   glm::vec3 c = m.positions[m.indices[tri * 3 + 2]];
-  return glm::cross(b - a, c - a);  // length = twice the area
+  return glm::cross(b - a, c - a);
 }
-}  // namespace
 
 std::size_t triangleCount(const Mesh& mesh) { return mesh.indices.size() / 3; }
 

@@ -48,6 +48,8 @@ struct SurfaceHit {
 };
 
 std::size_t triangleCount(const Mesh& mesh);
+// Triangle `tri`'s face normal by its winding, unnormalised: its length is twice the area.
+glm::vec3 faceNormal(const Mesh& mesh, std::size_t tri);
 
 // Adds a vertex with the given attributes; the tangent is left for computeTangents.
 std::uint32_t addVertex(Mesh& mesh, glm::vec3 position, glm::vec3 normal, glm::vec2 texcoord,

@@ -404,9 +404,7 @@ Mesh rock(std::uint32_t seed, float radius, int detail) {
   Mesh m;
   std::map<std::pair<std::uint32_t, int>, std::uint32_t> chartVertex;
   for (std::size_t f = 0; f < sphere.indices.size(); f += 3) {
-    const glm::vec3& a = shared.positions[sphere.indices[f]];
-    int chart = dominantAxis(glm::cross(shared.positions[sphere.indices[f + 1]] - a,
-                                        shared.positions[sphere.indices[f + 2]] - a));
+    int chart = dominantAxis(faceNormal(shared, f / 3));
     const FaceFrame& frame = kAxisFrames[chart];
     for (int k = 0; k < 3; ++k) {
       std::uint32_t v = sphere.indices[f + k];

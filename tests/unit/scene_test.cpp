@@ -123,10 +123,6 @@ float distanceToMesh(const Mesh& m, glm::vec3 p) {
   return best;
 }
 
-glm::vec3 faceNormal(const Mesh& m, std::size_t t) {
-  glm::vec3 a = m.positions[m.indices[t * 3]], b = m.positions[m.indices[t * 3 + 1]], c = m.positions[m.indices[t * 3 + 2]];
-  return glm::cross(b - a, c - a);
-}
 float triangleArea(const Mesh& m, std::size_t t) { return 0.5f * glm::length(faceNormal(m, t)); }
 glm::vec3 centroid(const Mesh& m, std::size_t t) {
   return (m.positions[m.indices[t * 3]] + m.positions[m.indices[t * 3 + 1]] + m.positions[m.indices[t * 3 + 2]]) / 3.f;
@@ -358,7 +354,7 @@ TEST(SceneShapes, RockTextureChartsFollowTheDisplacedFaces) {
     double least = 1e30, most = 0.0;
     for (std::size_t t = 0; t < triangleCount(m); ++t) {
       std::uint32_t i = m.indices[t * 3], j = m.indices[t * 3 + 1], k = m.indices[t * 3 + 2];
-      double world = glm::length(glm::cross(m.positions[j] - m.positions[i], m.positions[k] - m.positions[i]));
+      double world = glm::length(faceNormal(m, t));
       glm::vec2 du = m.texcoords[j] - m.texcoords[i], dv = m.texcoords[k] - m.texcoords[i];
       double uv = std::abs(du.x * dv.y - du.y * dv.x);
       if (world < 1e-8) continue;
