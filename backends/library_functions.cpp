@@ -45,7 +45,8 @@ constexpr std::size_t kAlwaysKept = static_cast<std::size_t>(-1);
 
 struct EmittedPiece {
   std::string_view text;
-  std::size_t function;  // kAlwaysKept: loose text
+  std::size_t function;   // kAlwaysKept: loose text
+  std::string_view name;  // the function's
 };
 
 struct LanguageIndex {
@@ -65,7 +66,7 @@ struct LanguageIndex {
       auto& emitted = emittedByText[text];
       for (const auto& piece : pieces) {
         std::size_t id = piece.function.empty() ? kAlwaysKept : functionIds.at(piece.function);
-        emitted.push_back({piece.text, id});
+        emitted.push_back({piece.text, id, piece.function});
         if (id == kAlwaysKept) continue;
         for (std::string_view call : piece.calls)
           if (auto callee = functionIds.find(call); callee != functionIds.end()) callsOf[id].push_back(callee->second);
@@ -114,13 +115,14 @@ std::vector<LibraryPiece> splitLibrary(std::string_view text) {
   return pieces;
 }
 
-void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax, const StageSource& stage) {
+std::vector<ReachedPiece> reachedLibraryPieces(const ShaderSyntax& syntax,
+                                               const std::vector<const ShaderLibrary*>& libraries,
+                                               const std::vector<std::string_view>& roots) {
   const LanguageIndex& index = indexFor(syntax.language());
   std::vector<bool> reached(index.callsOf.size(), false);
   std::vector<std::size_t> pending;
-  for (const auto* roots : {&stage.bodyCalls, &frameLibraryCalls(stage.stage)})
-    for (std::string_view root : *roots)
-      if (auto id = index.functionIds.find(root); id != index.functionIds.end()) pending.push_back(id->second);
+  for (std::string_view root : roots)
+    if (auto id = index.functionIds.find(root); id != index.functionIds.end()) pending.push_back(id->second);
   while (!pending.empty()) {
     std::size_t id = pending.back();
     pending.pop_back();
@@ -128,16 +130,35 @@ void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax, const 
     reached[id] = true;
     pending.insert(pending.end(), index.callsOf[id].begin(), index.callsOf[id].end());
   }
-  for (const ShaderLibrary* library : stage.libraries) {
+  std::vector<ReachedPiece> out;
+  for (const ShaderLibrary* library : libraries) {
     std::string_view text = syntax.libraryCode(*library);
-    out += '\n';
     auto pieces = index.emittedByText.find(text.data());
     if (pieces == index.emittedByText.end()) {
-      out += text;
+      out.push_back({text, {}, library, 0, true});
       continue;
     }
+    bool libraryReached = false;
     for (const EmittedPiece& piece : pieces->second)
-      if (piece.function == kAlwaysKept || reached[piece.function]) out += piece.text;
+      libraryReached = libraryReached || (piece.function != kAlwaysKept && reached[piece.function]);
+    for (std::size_t i = 0; i < pieces->second.size(); ++i) {
+      const EmittedPiece& piece = pieces->second[i];
+      if (piece.function == kAlwaysKept) out.push_back({piece.text, {}, library, i, libraryReached});
+      else if (reached[piece.function]) out.push_back({piece.text, piece.name, library, i, true});
+    }
+  }
+  return out;
+}
+
+void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax, const StageSource& stage) {
+  std::vector<std::string_view> roots = stage.bodyCalls;
+  const auto& frameCalls = frameLibraryCalls(stage.stage);
+  roots.insert(roots.end(), frameCalls.begin(), frameCalls.end());
+  const std::vector<ReachedPiece> pieces = reachedLibraryPieces(syntax, stage.libraries, roots);
+  auto piece = pieces.begin();
+  for (const ShaderLibrary* library : stage.libraries) {
+    out += '\n';
+    for (; piece != pieces.end() && piece->library == library; ++piece) out += piece->text;
   }
 }
 

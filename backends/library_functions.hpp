@@ -36,6 +36,19 @@ void forEachLibraryCall(std::string_view text, OnCall&& onCall) {
 // registry (tests make some) is appended whole.
 void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax, const StageSource& stage);
 
+// The same pieces, in order, for callers that print each one their own way (a
+// surface guards each, so that several surfaces can share one shader).
+struct ReachedPiece {
+  std::string_view text;      // in the syntax's language
+  std::string_view function;  // empty: loose text of its library (comments, globals)
+  const ShaderLibrary* library;
+  std::size_t index;          // the piece's place in its library
+  bool libraryReached;        // some function of its library is reached
+};
+std::vector<ReachedPiece> reachedLibraryPieces(const ShaderSyntax& syntax,
+                                               const std::vector<const ShaderLibrary*>& libraries,
+                                               const std::vector<std::string_view>& roots);
+
 // The top-level pieces of a library text: a function with the comments above it and
 // the rest of its closing line, or loose text (comments, globals) with no name.
 struct LibraryPiece {

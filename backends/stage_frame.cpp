@@ -29,10 +29,27 @@ constexpr std::string_view kFragmentPrologue =
     "  vec3 wg_bitangent = cross(wg_worldNormal, wg_worldTangent.xyz) * wg_worldTangent.w;\n"
     "  vec2 wg_texcoord = v_texcoord;\n"
     "  vec4 wg_vertexColor = v_color;\n";
-constexpr std::string_view kFragmentShading =
-    "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n"
+// The shading normal: the material's tangent-space normal in world space.
+constexpr std::string_view kShadingNormal =
+    "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n";
+constexpr std::string_view kFragmentLighting =
     "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
     "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
+const std::string& fragmentShading() {
+  static const std::string kText = std::string(kShadingNormal) + std::string(kFragmentLighting);
+  return kText;
+}
+
+// A surface's vertex function takes world-space geometry from the host (which owns the
+// object transform, skinning and instancing) in its input struct, wg_in.
+constexpr std::string_view kSurfaceVertexPrologue =
+    "  vec3 wg_worldPosition = wg_in.worldPosition;\n"
+    "  vec3 wg_worldNormal = wg_safe_normalize(wg_in.worldNormal);\n"
+    "  vec4 wg_worldTangent = vec4(wg_safe_normalize(wg_in.worldTangent.xyz), wg_in.worldTangent.w);\n"
+    "  vec2 wg_texcoord = wg_in.texcoord;\n"
+    "  vec4 wg_vertexColor = wg_in.color;\n"
+    "  vec3 wg_cameraPosition = wg_in.cameraPosition;\n";
+constexpr std::string_view kSurfaceCamera = "  vec3 wg_cameraPosition = wg_in.cameraPosition;\n";
 
 std::vector<std::string_view> callsIn(std::initializer_list<std::string_view> texts) {
   std::vector<std::string_view> calls;
@@ -43,8 +60,34 @@ std::vector<std::string_view> callsIn(std::initializer_list<std::string_view> te
 
 const std::vector<std::string_view>& frameLibraryCalls(ShaderStage stage) {
   static const std::vector<std::string_view> kVertex = callsIn({kVertexPrologue, kVertexEpilogue, kVertexPosition});
-  static const std::vector<std::string_view> kFragment = callsIn({kFragmentPrologue, kFragmentShading});
+  static const std::vector<std::string_view> kFragment = callsIn({kFragmentPrologue, fragmentShading()});
   return stage == ShaderStage::Vertex ? kVertex : kFragment;
+}
+
+const std::vector<std::string_view>& surfaceFrameLibraryCalls(ShaderStage stage) {
+  static const std::vector<std::string_view> kVertex = callsIn({kSurfaceVertexPrologue, kVertexEpilogue});
+  static const std::vector<std::string_view> kFragment = callsIn({kFragmentPrologue, kShadingNormal});
+  return stage == ShaderStage::Vertex ? kVertex : kFragment;
+}
+
+void appendSurfaceVertexBody(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+  bool texcoord1 = s.interface->hasTexcoord1();
+  std::string prologue(kSurfaceVertexPrologue);
+  if (texcoord1) prologue += "  vec2 wg_texcoord1 = wg_in.texcoord1;\n";
+  out += syntax.frameCode(prologue, ShaderStage::Vertex);
+  out += s.body;
+  std::string epilogue(kVertexEpilogue);
+  if (texcoord1) epilogue += "  v_texcoord1 = wg_texcoord1;\n";
+  out += syntax.frameCode(epilogue, ShaderStage::Vertex);
+}
+
+void appendSurfaceFragmentBody(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+  std::string prologue(kFragmentPrologue);
+  if (s.interface->hasTexcoord1()) prologue += "  vec2 wg_texcoord1 = v_texcoord1;\n";
+  prologue += kSurfaceCamera;
+  out += syntax.frameCode(prologue, ShaderStage::Fragment);
+  out += s.body;
+  out += syntax.frameCode(kShadingNormal, ShaderStage::Fragment);
 }
 
 void appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
@@ -83,7 +126,7 @@ void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSynt
   out += syntax.frameCode(prologue, ShaderStage::Fragment);
   out += s.body;
   if (s.alphaTested) appendText(out, "  if (wg_opacity < ", formatFloat(s.alphaCutoff), ") discard;\n");
-  out += syntax.frameCode(kFragmentShading, ShaderStage::Fragment);
+  out += syntax.frameCode(fragmentShading(), ShaderStage::Fragment);
   out += ShaderSyntax::alphaStatement(s);
   appendDebugViews(out, s.debugViews);
 }

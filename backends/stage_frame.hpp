@@ -18,4 +18,12 @@ void appendFragmentMain(std::string& out, const StageSource& source, const Shade
 // The library functions the stage's frame calls (its texts are fixed: found once).
 const std::vector<std::string_view>& frameLibraryCalls(ShaderStage stage);
 
+// A surface function's statements (--target surface): geometry from the host's input
+// struct wg_in, the body, then (vertex) the varyings or (fragment) wg_N, the shading
+// normal. The varyings keep their v_ names here; the surface writer renames them to
+// the structs' fields. No camera transform, no lighting.
+void appendSurfaceVertexBody(std::string& out, const StageSource& source, const ShaderSyntax& syntax);
+void appendSurfaceFragmentBody(std::string& out, const StageSource& source, const ShaderSyntax& syntax);
+const std::vector<std::string_view>& surfaceFrameLibraryCalls(ShaderStage stage);
+
 }  // namespace wg

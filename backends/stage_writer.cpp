@@ -24,7 +24,7 @@ class StageWriter {
               const std::vector<std::string>& names)
       : graph_(g), mi_(mi), syntax_(syntax), stage_(stage), names_(names) {}
 
-  std::string run(std::string_view contentHash) {
+  StageSource run(std::string_view contentHash) {
     StageSource source;
     source.stage = stage_;
     source.interface = &mi_;
@@ -42,7 +42,7 @@ class StageWriter {
     source.alphaBlended = graph_.alphaMode == AlphaMode::Blend;
     if (stage_ == ShaderStage::Fragment)
       for (const auto& view : graph_.debugViews) source.debugViews.push_back(debugView(view));
-    return syntax_.assemble(source);
+    return source;
   }
 
  private:
@@ -274,9 +274,14 @@ std::vector<std::string> nameNodes(const IrGraph& graph) {
   return names;
 }
 
+StageSource writeStageSource(const IrGraph& graph, const MaterialInterface& interface, const ShaderSyntax& syntax,
+                             ShaderStage stage, std::string_view contentHash, const std::vector<std::string>& nodeNames) {
+  return StageWriter(graph, interface, syntax, stage, nodeNames).run(contentHash);
+}
+
 std::string writeStage(const IrGraph& graph, const MaterialInterface& interface, const ShaderSyntax& syntax,
                        ShaderStage stage, std::string_view contentHash, const std::vector<std::string>& nodeNames) {
-  return StageWriter(graph, interface, syntax, stage, nodeNames).run(contentHash);
+  return syntax.assemble(writeStageSource(graph, interface, syntax, stage, contentHash, nodeNames));
 }
 
 }  // namespace wg

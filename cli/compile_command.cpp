@@ -34,14 +34,11 @@ namespace wg {
 
 namespace {
 
-constexpr const char* kCompileUsage = R"(Usage: weathergen compile GRAPH... -o DIR [options]
+constexpr const char* kCompileUsageHead = R"(Usage: weathergen compile GRAPH... -o DIR [options]
 
 Writes, for each material NAME:
-  NAME.vert.glsl NAME.frag.glsl NAME.vert.hlsl NAME.frag.hlsl      (--target glsl, hlsl)
-  NAME.{glsl,hlsl}.{vert,frag}.spv and .spvasm                     (--target spirv)
-  NAME.vert.msl NAME.frag.msl                                      (--target msl)
-  NAME.vert.es.glsl NAME.frag.es.glsl                              (--target glsles)
-  NAME.reflect.json                                                (always)
+)";
+constexpr const char* kCompileUsageTail = R"(  NAME.reflect.json                                                (always)
   NAME.hpp                                                         (--emit-header)
 With --variants, each file set is named NAME.HASH.* after its content hash, so variants
 with identical shaders share one set, and NAME.variants.json maps each variant to it.
@@ -52,25 +49,15 @@ constexpr const char* kCompileUsageEnd = R"(
 Outputs are written atomically and only when every graph compiles.
 )";
 
-bool parseTargets(const std::string& list, OutputTargets& t, std::string& error) {
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    std::size_t comma = list.find(',', start);
-    std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (item == "glsl") t.glsl = true;
-    else if (item == "hlsl") t.hlsl = true;
-    else if (item == "spirv") t.spirv = true;
-    else if (item == "msl") t.msl = true;
-    else if (item == "glsles") t.glslEs = true;
-    else if (item == "all") t.glsl = t.hlsl = t.spirv = true;
-    else {
-      error = "unknown target '" + quoteUserText(item) + "' (use glsl, hlsl, spirv, msl, glsles or all)";
-      return false;
-    }
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+// The targets' lines of the usage text, from the target table.
+std::string targetUsage() {
+  std::string text;
+  for (const auto& target : outputTargets()) {
+    std::string line = "  " + std::string(target.files);
+    line.resize(std::max<std::size_t>(line.size() + 1, 67), ' ');
+    text += line + "(--target " + std::string(target.name) + (target.inAll ? ", all" : "") + ")\n";
   }
-  return true;
+  return text;
 }
 
 struct Options {
@@ -184,11 +171,15 @@ std::optional<int> parseCompileOptions(int argc, char** argv, Options& o) {
   const OptionParseResult parsed = parseOptions(table, argc, argv, 2);
   if (parsed.status == OptionParse::Failed) return usageError(parsed.error, o.json);
   if (o.help) {
-    std::fputs((kCompileUsage + formatOptionList(table) + kCompileUsageEnd).c_str(), stdout);
+    std::fputs((kCompileUsageHead + targetUsage() + kCompileUsageTail + formatOptionList(table) + kCompileUsageEnd).c_str(),
+               stdout);
     return kExitOk;
   }
   std::string error;
-  if (!parseTargets(o.targetList.value_or("all"), o.targets, error)) return usageError(error, o.json);
+  auto targets = parseOutputTargets(o.targetList.value_or("all"), error);
+  if (!targets) return usageError(error, o.json);
+  targets->header = o.targets.header;  // set by --emit-header
+  o.targets = *targets;
   if (o.graphs.empty()) return usageError("no input graphs", o.json);
   if (o.outputDir.empty() && !o.dumpIrAfter) return usageError("no output directory; pass -o DIR", o.json);
   return std::nullopt;
@@ -268,11 +259,7 @@ std::string checkDepfileTarget(const std::string& depfile) {
 
 CompileOptions compileOptionsFor(const Options& o) {
   CompileOptions options;
-  options.emitSpirv = o.targets.spirv;
-  options.emitDisassembly = o.targets.spirv;  // .spv and .spvasm go together
-  options.emitMsl = o.targets.msl;
-  options.emitGlslEs = o.targets.glslEs;
-  options.emitCppHeader = o.targets.header;
+  applyOutputTargets(o.targets, options);
   options.optimize = o.optimize;
   options.weatherPreset = o.weatherPreset;
   options.weatherEffects = o.effects;

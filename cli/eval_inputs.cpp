@@ -32,7 +32,7 @@ std::vector<EvalInputSpec> makeSpecs() {
   std::vector<EvalInputSpec> specs;
   // --weather: the frame table's weather members, with its ranges and docs.
   for (const FrameField& f : frameFields()) {
-    if (!f.weatherInput) continue;
+    if (f.owner != FrameFieldOwner::Weather) continue;
     specs.push_back({f.name, G::Weather, componentCount(f.type), f.min, f.max, f.doc,
                      [field = &f](EvalInputs& in) { return fieldFloats(*field, in.frame); }});
   }

@@ -1,8 +1,61 @@
 #include "cli/material_outputs.hpp"
 
+#include <array>
 #include <filesystem>
 
+#include "compiler/literal.hpp"
+#include "compiler/surface_interface.hpp"
+
 namespace wg {
+
+namespace {
+
+constexpr std::array<OutputTarget, 6> kOutputTargets = {{
+    {"glsl", "NAME.vert.glsl NAME.frag.glsl", &OutputTargets::glsl, true},
+    {"hlsl", "NAME.vert.hlsl NAME.frag.hlsl", &OutputTargets::hlsl, true},
+    {"spirv", "NAME.{glsl,hlsl}.{vert,frag}.spv and .spvasm", &OutputTargets::spirv, true},
+    {"msl", "NAME.vert.msl NAME.frag.msl", &OutputTargets::msl, false},
+    {"glsles", "NAME.vert.es.glsl NAME.frag.es.glsl", &OutputTargets::glslEs, false},
+    {"surface", "NAME.surface.glsl NAME.surface.es.glsl NAME.surface.hlsl (the unlit surface)",
+     &OutputTargets::surface, false},
+}};
+
+}  // namespace
+
+std::span<const OutputTarget> outputTargets() { return kOutputTargets; }
+
+std::optional<OutputTargets> parseOutputTargets(std::string_view list, std::string& error) {
+  OutputTargets targets;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    std::size_t comma = list.find(',', start);
+    std::string_view item = list.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    bool known = item == "all";
+    for (const auto& target : kOutputTargets)
+      if (item == target.name || (item == "all" && target.inAll)) {
+        targets.*(target.flag) = true;
+        known = true;
+      }
+    if (!known) {
+      std::string names;
+      for (const auto& target : kOutputTargets) names += std::string(target.name) + ", ";
+      error = "unknown target '" + quoteUserText(item) + "' (use " + names + "or all)";
+      return std::nullopt;
+    }
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return targets;
+}
+
+void applyOutputTargets(const OutputTargets& targets, CompileOptions& options) {
+  options.emitSpirv = targets.spirv;
+  options.emitDisassembly = targets.spirv;  // .spv and .spvasm go together
+  options.emitMsl = targets.msl;
+  options.emitGlslEs = targets.glslEs;
+  options.emitSurface = targets.surface;
+  options.emitCppHeader = targets.header;
+}
 
 std::map<std::string, std::string> materialOutputs(const CompiledMaterial& m, const OutputTargets& targets,
                                                    const std::string& outputDir) {
@@ -25,6 +78,9 @@ std::map<std::string, std::string> materialOutputs(const CompiledMaterial& m, co
     if (s.language == ShaderLanguage::Glsl && targets.glslEs)
       files[(dir / (m.fileStem + stageName + ".es.glsl")).string()] = s.glslEs;
   }
+  if (targets.surface)
+    for (std::size_t i = 0; i < m.surfaces.size(); ++i)
+      files[(dir / (m.fileStem + "." + std::string(surfaceLanguages()[i].suffix))).string()] = m.surfaces[i];
   files[(dir / (m.fileStem + ".reflect.json")).string()] = m.reflectionJson;
   if (targets.header) files[(dir / (m.fileStem + ".hpp")).string()] = m.cppHeader;
   return files;

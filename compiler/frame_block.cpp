@@ -6,8 +6,7 @@
 
 namespace wg {
 
-namespace {
-InterfaceType interfaceType(FrameFieldType type) {
+InterfaceType interfaceTypeOf(FrameFieldType type) {
   switch (type) {
     case FrameFieldType::Float: return InterfaceType::Float;
     case FrameFieldType::Uint: return InterfaceType::Uint;
@@ -19,6 +18,7 @@ InterfaceType interfaceType(FrameFieldType type) {
   return InterfaceType::Float;
 }
 
+namespace {
 UniformBlock makeFrameBlock() {
   UniformBlock block;
   block.name = "Frame";
@@ -26,7 +26,7 @@ UniformBlock makeFrameBlock() {
   block.set = 0;
   block.binding = 0;
   for (const auto& field : frameFields())
-    block.members.push_back({std::string(field.name), "frame_" + std::string(field.name), interfaceType(field.type)});
+    block.members.push_back({std::string(field.name), "frame_" + std::string(field.name), interfaceTypeOf(field.type)});
   layoutStd140(block);
   return block;
 }

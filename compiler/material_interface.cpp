@@ -4,6 +4,7 @@
 #include <array>
 
 #include "compiler/identifier.hpp"
+#include "nodes/weather_maps.hpp"
 
 namespace wg {
 
@@ -90,19 +91,8 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
     mi.textures.push_back(std::move(b));
   }
 
-  // Shared weather maps: set 0 next to the frame block, at fixed bindings.
-  struct WeatherMap {
-    std::string_view name, texture, sampler;
-    std::uint32_t binding;
-  };
-  constexpr std::array<WeatherMap, 5> kWeatherMaps = {{
-      {"terrainHeight", "wg_terrain_height_map", "wg_terrain_height_sampler", 1},
-      {"skyExposure", "wg_sky_exposure_map", "wg_sky_exposure_sampler", 3},
-      {"sunShadow", "wg_sun_shadow_map", "wg_sun_shadow_sampler", 5},  // every fragment stage reads it
-      {"snowDeformation", "wg_snow_deformation_map", "wg_snow_deformation_sampler", 7},  // docs/deformable-snow.md
-      {"weatherNoise", "wg_weather_noise_map", "wg_weather_noise_sampler", 9},  // nodes/weather_noise.hpp
-  }};
-  for (const auto& map : kWeatherMaps) {
+  // Shared weather maps: set 0 next to the frame block, at the table's fixed bindings.
+  for (const WeatherMap& map : weatherMaps()) {
     bool used = map.name == "sunShadow" || std::any_of(graph.nodes.begin(), graph.nodes.end(), [&](const IrNode& n) {
       return std::find(n.op->weatherMaps.begin(), n.op->weatherMaps.end(), map.name) != n.op->weatherMaps.end();
     });

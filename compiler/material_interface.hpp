@@ -14,6 +14,8 @@ enum class InterfaceType : std::uint8_t { Float, Vec2, Vec3, Vec4, Uint, Mat4 };
 
 std::string_view interfaceTypeName(InterfaceType type);  // GLSL spelling, used in reflection
 InterfaceType interfaceTypeOf(ValueType type);          // bool is stored as uint
+enum class FrameFieldType : std::uint8_t;
+InterfaceType interfaceTypeOf(FrameFieldType type);     // a frame field's (nodes/frame_fields.hpp)
 
 struct BlockMember {
   std::string name;        // logical name (parameter name as the user wrote it)

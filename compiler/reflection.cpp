@@ -65,10 +65,52 @@ Json weatherJson(const IrGraph& graph) {
   return {{"preset", w.preset}, {"effects", std::move(effects)}};
 }
 
+Json surfaceStructJson(const SurfaceStruct& st) {
+  Json fields = Json::array();
+  for (const auto& f : st.fields) fields.push_back({{"name", f.name}, {"type", f.type}});
+  return fields;
+}
+
+// The host contract (docs/engine-api.md, "The surface contract"): enough to write the
+// glue that calls a surface without reading its text.
+Json surfaceJson(const SurfaceInterface& s, const std::string& fileStem) {
+  Json files = Json::object();
+  for (const auto& language : surfaceLanguages()) files[std::string(language.name)] = fileStem + "." + std::string(language.suffix);
+  Json structs = Json::object();
+  for (const SurfaceStruct* st : {&s.vertexInput, &s.vertexOutput, &s.fragmentInput, &s.fragmentOutput})
+    structs[st->name] = surfaceStructJson(*st);
+  Json resources = Json::array();
+  for (const auto& r : s.resources) {
+    Json resource = {{"name", r.name}, {"identifier", r.identifier}, {"kind", surfaceResourceKindName(r.kind)},
+                     {"shared", r.shared}, {"set", r.set}, {"binding", r.binding}, {"setMacro", r.setMacro},
+                     {"bindingMacro", r.bindingMacro}};
+    if (!r.absentMacro.empty()) resource["absentMacro"] = r.absentMacro;
+    if (r.kind == SurfaceResourceKind::UniformBlock) {
+      const UniformBlock& block = r.shared ? surfaceWeatherBlock() : s.prefixed.material;
+      Json members = Json::array();
+      for (const auto& m : block.members)
+        members.push_back({{"name", m.name}, {"identifier", m.identifier}, {"type", interfaceTypeName(m.type)},
+                           {"offset", m.offset}});
+      resource["size"] = block.size;
+      resource["members"] = std::move(members);
+    }
+    resources.push_back(std::move(resource));
+  }
+  return {{"files", std::move(files)},
+          {"prefix", s.prefix},
+          {"vertex", {{"function", s.vertexFunction}, {"input", s.vertexInput.name}, {"output", s.vertexOutput.name}}},
+          {"fragment",
+           {{"function", s.fragmentFunction}, {"input", s.fragmentInput.name}, {"output", s.fragmentOutput.name}}},
+          {"stageMacros", {{"vertex", kSurfaceVertexOnlyMacro}, {"fragment", kSurfaceFragmentOnlyMacro}}},
+          {"hostResourcesMacro", kSurfaceHostResourcesMacro},
+          {"structs", std::move(structs)},
+          {"resources", std::move(resources)}};
+}
+
 }  // namespace
 
-std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& mi, const std::string& hash,
-                                const std::string& fileStem) {
+std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& mi, const SurfaceInterface& surface,
+                                const std::string& hash, const std::string& fileStem) {
   Json textures = Json::array();
   for (const auto& b : mi.textures) {
     const TextureDecl& t = graph.textures[static_cast<std::size_t>(b.texture)];
@@ -118,6 +160,7 @@ std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& m
       {"weatherMaps", std::move(weatherMaps)},
       {"debugViews", std::move(debugViews)},
       {"files", std::move(files)},
+      {"surface", surfaceJson(surface, fileStem)},
   };
   return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }

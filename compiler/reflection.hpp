@@ -6,10 +6,12 @@
 
 #include "compiler/ir.hpp"
 #include "compiler/material_interface.hpp"
+#include "compiler/surface_interface.hpp"
 
 namespace wg {
 
 std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& interface,
-                                const std::string& contentHash, const std::string& fileStem);
+                                const SurfaceInterface& surface, const std::string& contentHash,
+                                const std::string& fileStem);
 
 }  // namespace wg

@@ -4,6 +4,7 @@
 
 #include "backends/spirv/cross_compile.hpp"
 #include "backends/stage_writer.hpp"
+#include "backends/surface_writer.hpp"
 #include "compiler/constant_count.hpp"
 #include "compiler/content_hash.hpp"
 #include "compiler/cpp_header.hpp"
@@ -197,8 +198,12 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
   if (options.emitSpirv || options.emitMsl || options.emitGlslEs)
     for (auto& stage : material.stages)
       if (!compileStageToSpirv(stage, mi, options, file, result.diagnostics)) return result;
+  const SurfaceInterface surface = buildSurfaceInterface(mi, material.fileStem);
+  if (options.emitSurface)
+    for (const auto& language : surfaceLanguages())
+      material.surfaces.push_back(writeSurface(*ir, surface, language.language, material.contentHash, names));
   if (options.emitReflection)
-    material.reflectionJson = buildReflectionJson(*ir, mi, material.contentHash, material.fileStem);
+    material.reflectionJson = buildReflectionJson(*ir, mi, surface, material.contentHash, material.fileStem);
   if (options.emitCppHeader) material.cppHeader = emitCppHeader(*ir, mi, material.contentHash);
   material.ir = std::move(*ir);
   result.material = std::move(material);

@@ -27,6 +27,9 @@ struct CompileOptions {
   // SPIRV-Cross translations of each stage's validated, pre-optimisation SPIR-V
   // (--target msl / glsles); they need SPIR-V, which is then compiled even without emitSpirv.
   bool emitMsl = false, emitGlslEs = false;
+  // The weathered surface behind the host contract, in every surface language
+  // (--target surface; docs/engine-api.md, "The surface contract").
+  bool emitSurface = false;
   // Files named NAME.HASH.* (content hash), so identical variants share them (--variants).
   bool hashKeyedFileStem = false;
   SwitchValues switches;  // the variant: static switch values; unnamed switches keep their default
@@ -53,6 +56,8 @@ struct CompiledMaterial {
   std::vector<CompiledStage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag
   std::string reflectionJson;
   std::string cppHeader;    // empty unless emitCppHeader
+  // Indexed like surfaceLanguages(); empty unless emitSurface.
+  std::vector<std::string> surfaces;
 
   const CompiledStage& stage(ShaderLanguage language, ShaderStage stage) const;
 };

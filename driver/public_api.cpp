@@ -8,6 +8,7 @@
 #include "backends/spirv/spirv_toolchain.hpp"
 #include "driver/material_compiler.hpp"
 #include "compiler/material_interface.hpp"
+#include "compiler/surface_interface.hpp"
 
 namespace weathergen {
 
@@ -60,6 +61,7 @@ Result compileOrThrow(std::string_view fileName, std::string_view json, const Op
   if (!options.weatherPreset.empty()) internal.weatherPreset = options.weatherPreset;
   internal.weatherEffects.assign(options.effects.begin(), options.effects.end());
   internal.emitCppHeader = options.cppHeader;
+  internal.emitSurface = options.surface;
   internal.switches = wg::SwitchValues(options.switches.begin(), options.switches.end());
   wg::CompileResult compiled = wg::compileMaterialText(std::string(fileName), std::string(json), internal);
   for (const auto& d : compiled.diagnostics.items()) result.diagnostics.push_back(publicDiagnostic(d));
@@ -70,6 +72,8 @@ Result compileOrThrow(std::string_view fileName, std::string_view json, const Op
   result.reflectionJson = std::move(material.reflectionJson);
   result.cppHeader = std::move(material.cppHeader);
   for (auto& stage : material.stages) result.stages.push_back(publicStage(std::move(stage)));
+  for (std::size_t i = 0; i < material.surfaces.size(); ++i)
+    result.surfaces.push_back({std::string(wg::surfaceLanguages()[i].name), std::move(material.surfaces[i])});
   result.ok = true;
   return result;
 }

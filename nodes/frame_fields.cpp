@@ -31,12 +31,12 @@ std::byte* memberBytes(FrameState& frame) {
 // field at a member of another shape.
 template <auto Member, FrameFieldType Type>
 constexpr FrameField field(std::string_view name, std::string_view doc, float min = -kInf, float max = kInf,
-                           bool weatherInput = false) {
+                           FrameFieldOwner owner = FrameFieldOwner::Host) {
   static_assert(sizeof(FrameState{}.*Member) == 4 * components(Type), "member and field type disagree");
-  return {name, Type, &memberBytes<Member>, min, max, doc, weatherInput};
+  return {name, Type, &memberBytes<Member>, min, max, doc, owner};
 }
 
-constexpr bool kWeather = true;
+constexpr FrameFieldOwner kWeather = FrameFieldOwner::Weather;
 using F = FrameState;
 
 // Ordered so std140 packs without holes: matrices and vec4s first, then each vec3
@@ -46,8 +46,10 @@ constexpr std::array<FrameField, 27> kFrameFields = {{
     field<&F::viewProjection, T::Mat4>("viewProjection", "world to clip space"),
     field<&F::normalMatrix, T::Mat4>("normalMatrix", "inverse transpose of model"),
     field<&F::lightViewProjection, T::Mat4>("lightViewProjection", "world to sun shadow-map clip space"),
-    field<&F::skyExposureRegion, T::Vec4>("skyExposureRegion", "xz origin, 1/size: world to exposure-map uv"),
-    field<&F::terrainRegion, T::Vec4>("terrainRegion", "xz origin, 1/size: world to height-map uv (eq. 3.11)"),
+    field<&F::skyExposureRegion, T::Vec4>("skyExposureRegion", "xz origin, 1/size: world to exposure-map uv",
+                                          -kInf, kInf, FrameFieldOwner::MapPlace),
+    field<&F::terrainRegion, T::Vec4>("terrainRegion", "xz origin, 1/size: world to height-map uv (eq. 3.11)", -kInf,
+                                      kInf, FrameFieldOwner::MapPlace),
     field<&F::cameraPosition, T::Vec3>("cameraPosition", "world position of the eye"),
     field<&F::time, T::Float>("time", "seconds since the scene started (pans wind, ripples, panners)", 0.f, kInf,
                               kWeather),

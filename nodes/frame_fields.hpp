@@ -19,13 +19,21 @@ inline constexpr float kMaxTemperatureC = 60.0f;   // above the hottest recorded
 
 enum class FrameFieldType : std::uint8_t { Float, Uint, Vec2, Vec3, Vec4, Mat4 };
 
+// Who fills a member. A surface (--target surface) reads only the weather's members,
+// from its own WeatherBlock; the host keeps the rest.
+enum class FrameFieldOwner : std::uint8_t {
+  Host,      // transforms, camera, lights, tone mapping, debug view: the renderer's
+  Weather,   // the weather state: eval's --weather, the simulation
+  MapPlace,  // where the host lays the shared weather maps in the world
+};
+
 struct FrameField {
   std::string_view name;  // the block member; shaders see it as frame_<name>
   FrameFieldType type;
   std::byte* (*member)(FrameState&);  // where FrameState holds it
   float min, max;                     // accepted range of each component
   std::string_view doc;               // unit and meaning
-  bool weatherInput;                  // set by the weather (eval's --weather), not by the renderer
+  FrameFieldOwner owner;
 };
 
 // In block order, which is the std140 layout order: never reorder or rename.

@@ -13,6 +13,7 @@
 #include "nodes/lattice_noise.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/pbr_shading.hpp"
+#include "nodes/weather_maps.hpp"
 
 namespace wg {
 
@@ -26,9 +27,7 @@ constexpr float kDefaultMapExtent = 40.96f, kDefaultMapTexels = 1024.f;
 std::string_view deformationTaps() {
   static const std::string code = [] {
     auto tap = [](const char* offset) {
-      return std::string("textureLod(sampler2D(wg_snow_deformation_map, wg_snow_deformation_sampler), "
-                         "{position}.xz / {extent} + vec2(") +
-             offset + ") / {texels}, 0.0)";
+      return std::string("wg_snow_deformation_texel({position}.xz / {extent} + vec2(") + offset + ") / {texels})";
     };
     return "(0.25 * (" + tap("-0.5, -0.5") + " + " + tap("0.5, -0.5") + " + " + tap("-0.5, 0.5") + " + " +
            tap("0.5, 0.5") + "))";
@@ -44,8 +43,8 @@ constexpr float kGroundStep = 0.5f;  // m; wg_snow_ground's kStep
 std::string_view groundTaps() {
   static const std::string code = [] {
     auto tap = [](const char* offset) {
-      return std::string("textureLod(sampler2D(wg_terrain_height_map, wg_terrain_height_sampler), ({position}.xz + vec2(") +
-             offset + ") - frame_terrainRegion.xy) * frame_terrainRegion.zw, 0.0).r";
+      return std::string("wg_terrain_height_texel(({position}.xz + vec2(") + offset +
+             ") - frame_terrainRegion.xy) * frame_terrainRegion.zw).r";
     };
     return "wg_snow_ground(" + tap("0.0, 0.0") + ", " + tap("0.5, 0.0") + ", " + tap("-0.5, 0.0") + ", " +
            tap("0.0, 0.5") + ", " + tap("0.0, -0.5") + ")";
@@ -71,7 +70,7 @@ float wg_snow_sky_open(const vec3 p, const float occluder, const vec2 uv) {
   return inside ? 1.0 - smoothstep(p.y + 0.1, p.y + 0.5, occluder) : 1.0;
 }
 )",
-    {&kCoreLibrary}};
+    {&kCoreLibrary, &kWeatherMapLibrary}};
 
 // Seed 3.5.2's sparkles as a field that is continuous in the camera, so glitter does not
 // flicker. A sparkle is a point glint at a hashed spot in the middle half of a
@@ -185,7 +184,7 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                 const auto& d = c.surface->snowDeformation;
                 return Value::vec4(d[0], d[1], d[2], d[3]);
               },
-              V};
+              V, {&kWeatherMapLibrary}};
     map.weatherMaps = {"snowDeformation"};
     ops.push_back(std::move(map));
   }
@@ -209,8 +208,8 @@ void appendSnowOps(std::vector<OpDef>& ops) {
                "open sky over a point (1) or an overhang above it (0), from the sky-exposure map's occluder height",
                {{"position", PortType::Vec3, std::nullopt}},
                ValueRule::Fixed, ValueType::Float,
-               "wg_snow_sky_open({position}, textureLod(sampler2D(wg_sky_exposure_map, wg_sky_exposure_sampler), "
-               "({position}.xz - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw, 0.0).r, "
+               "wg_snow_sky_open({position}, wg_sky_exposure_texel("
+               "({position}.xz - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw).r, "
                "({position}.xz - frame_skyExposureRegion.xy) * frame_skyExposureRegion.zw)",
                "", singleOutput(),
                [](const Value*, const EvalContext& c) { return Value::scalar(c.surface->skyExposure); },

@@ -4,6 +4,7 @@
 
 #include "nodes/texture_generators.hpp"
 #include "nodes/texture_sampling.hpp"
+#include "nodes/weather_maps.hpp"
 
 namespace wg::weather {
 
@@ -57,10 +58,9 @@ const ShaderLibrary kWeatherNoiseLibrary = {
     "weather_noise",
     R"(// The shared weather noise (set 0): r transition, g flow, b ripple, a puddles; one
 // repeat tile per 32 m of world xz, read at LOD 0 as the CPU evaluator does.
-vec4 wg_weather_noise(const vec2 uv) { return textureLod(sampler2D(wg_weather_noise_map, wg_weather_noise_sampler), uv, 0.0); }
 vec2 wg_weather_noise_uv(const vec3 p) { return p.xz * 0.03125; }
 vec4 wg_weather_noise_at(const vec3 p) { return wg_weather_noise(wg_weather_noise_uv(p)); }
 )",
-    {}};
+    {&kWeatherMapLibrary}};
 
 }  // namespace wg::weather

@@ -133,7 +133,7 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
   {
     OpDef height = weatherOp("terrain_height", "the shared terrain height map at uv (0 where none is bound)",
                              {{"uv", PortType::Vec2, std::nullopt}}, F,
-                             "{@sampleFn}(sampler2D(wg_terrain_height_map, wg_terrain_height_sampler), {uv}{@lodArg}).r",
+                             "wg_terrain_height_texel({uv}).r",
                              [](const Value* in, const EvalContext& c) {
                                if (!c.terrainHeight) return Value::scalar(0.f);
                                return Value::scalar(c.terrainHeight->sample(in[0].v[0], in[0].v[1]));
@@ -240,8 +240,8 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
   {
     OpDef exposure = weatherOp("sky_exposure", "open sky above the point: 1 exposed, 0 under a roof (shared map)",
                                {vec3Required("position")}, F,
-                               "wg_exposure_from_map({position}, {@worldNormal}, textureGather(sampler2D("
-                               "wg_sky_exposure_map, wg_sky_exposure_sampler), wg_sky_exposure_uv({position}, {@worldNormal})))",
+                               "wg_exposure_from_map({position}, {@worldNormal}, "
+                               "wg_sky_exposure_gather(wg_sky_exposure_uv({position}, {@worldNormal})))",
                                [](const Value*, const EvalContext& c) { return Value::scalar(c.surface->skyExposure); }, V);
     exposure.weatherMaps.push_back("skyExposure");
     ops.push_back(std::move(exposure));

@@ -33,6 +33,12 @@ struct Stage {
   std::vector<std::uint32_t> spirv;  // empty unless Options::spirv
 };
 
+// One surface file's text (Options::surface).
+struct Surface {
+  std::string language;  // "glsl", "glsles" or "hlsl"
+  std::string source;
+};
+
 struct Options {
   bool spirv = true;           // compile every stage to validated SPIR-V
   bool optimize = false;       // spirv-opt's performance passes
@@ -41,6 +47,9 @@ struct Options {
   // "specularAntiAliasing"...; docs/weather-model.md); an unknown name is a diagnostic.
   std::map<std::string, bool> effects;
   bool cppHeader = false;      // fill Result::cppHeader (std140 structs with static_asserts)
+  // Fill Result::surfaces: the weathered surface without our lighting, for engines that
+  // light it themselves (docs/engine-api.md, "The surface contract").
+  bool surface = false;
   // The variant: static switch name -> value (docs/graph-format.md, "Static switches");
   // switches not named keep their default. Unknown names or values are diagnostics.
   std::map<std::string, std::string> switches;
@@ -54,6 +63,7 @@ struct Result {
   std::string reflectionJson;
   std::vector<Stage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag
   std::string cppHeader;      // only with Options::cppHeader
+  std::vector<Surface> surfaces;  // only with Options::surface: glsl, glsles, hlsl
 };
 
 // Sets up glslang's process-global state. Call once before compiling from several

@@ -21,6 +21,8 @@ using testing::TempDir;
 namespace fs = std::filesystem;
 
 const std::string kCli = WG_CLI_PATH;
+// The byte-identity checks cover the surfaces too.
+const std::string kEveryTarget = "--target all,surface";
 
 std::string graphName(const ::testing::TestParamInfo<fs::path>& info) { return info.param.stem().string(); }
 
@@ -120,6 +122,27 @@ TEST_P(BundledGraph, MatchesGoldenSpirv) {
   EXPECT_EQ(compared, 4);
 }
 
+// Golden surfaces (--target surface): the host contract's text changes only on purpose.
+TEST_P(BundledGraph, MatchesGoldenSurfaces) {
+  TempDir dir("golden-surface");
+  auto r = compile(GetParam(), dir.path(), "--target surface");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  fs::path golden = fs::path(WG_SOURCE_DIR) / "tests" / "golden";
+  int compared = 0;
+  for (const auto& name : listFiles(dir.path())) {
+    if (name.find(".surface.") == std::string::npos) continue;
+    ++compared;
+    fs::path expected = golden / name;
+    ASSERT_TRUE(fs::exists(expected)) << "no golden file " << expected << "; run scripts/update-golden.sh";
+    if (readFile(expected) != readFile(dir.path() / name)) {
+      auto diff = runCommand("diff -u " + shellQuote(expected.string()) + " " + shellQuote((dir.path() / name).string()));
+      ADD_FAILURE() << name << " differs from its golden file (scripts/update-golden.sh regenerates it):\n"
+                    << diff.output.substr(0, 8000);
+    }
+  }
+  EXPECT_EQ(compared, 3);
+}
+
 // Renames every node id and shuffles the node array; links follow the renames.
 std::string shuffledAndRenamed(const std::string& text, unsigned seed) {
   auto graph = nlohmann::ordered_json::parse(text);
@@ -160,29 +183,29 @@ void expectSameOutputs(const fs::path& a, const fs::path& b) {
 
 TEST_P(BundledGraph, ByteIdenticalWhenCompiledTwice) {
   TempDir first("twice-a"), second("twice-b");
-  ASSERT_EQ(compile(GetParam(), first.path()).exitCode, 0);
-  ASSERT_EQ(compile(GetParam(), second.path()).exitCode, 0);
+  ASSERT_EQ(compile(GetParam(), first.path(), kEveryTarget).exitCode, 0);
+  ASSERT_EQ(compile(GetParam(), second.path(), kEveryTarget).exitCode, 0);
   expectSameOutputs(first.path(), second.path());
 }
 
 TEST_P(BundledGraph, ByteIdenticalFromAnotherWorkingDirectory) {
   TempDir first("cwd-a"), second("cwd-b");
-  ASSERT_EQ(compile(GetParam(), first.path()).exitCode, 0);
+  ASSERT_EQ(compile(GetParam(), first.path(), kEveryTarget).exitCode, 0);
   auto rel = fs::relative(GetParam(), fs::path(WG_SOURCE_DIR));
   auto r = runCommand("cd " + shellQuote(WG_SOURCE_DIR) + " && " + shellQuote(kCli) + " compile " +
-                      shellQuote(rel.string()) + " -o " + shellQuote(second.path().string()));
+                      shellQuote(rel.string()) + " -o " + shellQuote(second.path().string()) + " " + kEveryTarget);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   expectSameOutputs(first.path(), second.path());
 }
 
 TEST_P(BundledGraph, ByteIdenticalWithShuffledNodesAndRenamedIds) {
   TempDir original("orig"), variant("variant");
-  ASSERT_EQ(compile(GetParam(), original.path() / "out").exitCode, 0);
+  ASSERT_EQ(compile(GetParam(), original.path() / "out", kEveryTarget).exitCode, 0);
   for (unsigned seed : {1u, 2u, 3u}) {
     fs::path graph = variant.path() / ("graph" + std::to_string(seed) + ".json");
     testing::writeFile(graph, shuffledAndRenamed(readFile(GetParam()), seed));
     fs::path out = variant.path() / ("out" + std::to_string(seed));
-    auto r = compile(graph, out);
+    auto r = compile(graph, out, kEveryTarget);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     expectSameOutputs(original.path() / "out", out);
   }

@@ -19,6 +19,7 @@
 #include "nodes/height_field.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/texture_image.hpp"
+#include "nodes/weather_maps.hpp"
 #include "nodes/weather_noise.hpp"
 #include "nodes/weather_shader_library.hpp"
 
@@ -667,7 +668,10 @@ TEST(WeatherNodes, DerivedHlslLibraryDefinesTheSameFunctions) {
   auto hlsl = definedFunctions(hlslSyntax().libraryCode(kWeatherLibrary));
   EXPECT_GE(glsl.size(), 30u);  // the library as written defines 38
   EXPECT_EQ(glsl, hlsl);
-  // Every weather op's template calls a function the library defines (or a sampler).
+  // Every weather op's template calls a function the library or the weather maps'
+  // accessors define.
+  auto accessors = definedFunctions(kWeatherMapLibrary.glsl);
+  glsl.insert(accessors.begin(), accessors.end());
   for (const OpDef* op : allOps()) {
     if (op->libraries.empty() || op->libraries.front() != &kWeatherLibrary) continue;
     std::string code(op->glsl);

@@ -1,0 +1,151 @@
+#include "compiler/surface_interface.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+
+#include "compiler/pbr_output.hpp"
+#include "nodes/frame_fields.hpp"
+#include "nodes/weather_maps.hpp"
+
+namespace wg {
+
+namespace {
+
+constexpr std::array<SurfaceLanguageInfo, 3> kSurfaceLanguages = {{
+    {SurfaceLanguage::Glsl, "glsl", "surface.glsl"},
+    {SurfaceLanguage::GlslEs, "glsles", "surface.es.glsl"},
+    {SurfaceLanguage::Hlsl, "hlsl", "surface.hlsl"},
+}};
+
+UniformBlock makeWeatherBlock() {
+  UniformBlock block;
+  block.name = "Weather";
+  block.identifier = "WeatherBlock";
+  for (const auto& field : frameFields())
+    if (field.owner != FrameFieldOwner::Host)
+      block.members.push_back({std::string(field.name), "weather_" + std::string(field.name), interfaceTypeOf(field.type)});
+  layoutStd140(block);
+  return block;
+}
+
+// A file stem ([A-Za-z0-9_-]) as the start of GLSL and HLSL identifiers: '-' becomes
+// '_', runs of '_' (reserved in GLSL) become one, and a stem that starts with a digit
+// or could meet a reserved or weathergen prefix (gl_, wg_...) gets "m".
+std::string identifierPrefix(std::string_view stem) {
+  std::string prefix;
+  for (char c : stem) {
+    char ch = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    if (ch == '_' && !prefix.empty() && prefix.back() == '_') continue;
+    prefix += ch;
+  }
+  auto startsLike = [&](std::string_view p) {
+    return prefix.size() >= p.size() && std::equal(p.begin(), p.end(), prefix.begin(), [](char a, char b) {
+             return a == std::tolower(static_cast<unsigned char>(b));
+           });
+  };
+  if (prefix.empty() || !std::isalpha(static_cast<unsigned char>(prefix[0])) || startsLike("gl") ||
+      startsLike("wg") || startsLike("weather") || startsLike("frame"))
+    prefix.insert(0, "m");
+  if (prefix.back() != '_') prefix += '_';
+  return prefix;
+}
+
+std::string_view glslType(InterfaceType type) { return interfaceTypeName(type); }
+std::string_view glslType(ValueType type) {
+  switch (type) {
+    case ValueType::Vec2: return "vec2";
+    case ValueType::Vec3: return "vec3";
+    case ValueType::Vec4: return "vec4";
+    case ValueType::Bool: return "bool";
+    default: return "float";
+  }
+}
+
+// The geometry a host hands the vertex function (world space: the host owns the
+// object transform, skinning and instancing) and the values it interpolates.
+std::vector<SurfaceField> geometryFields(const MaterialInterface& mi) {
+  std::vector<SurfaceField> fields;
+  for (const auto& v : mi.varyings) fields.push_back({v.name, glslType(v.type)});
+  return fields;
+}
+
+std::string bindingMacro(std::string_view identifier) { return "WG_BINDING_" + std::string(identifier); }
+
+}  // namespace
+
+std::string_view surfaceResourceKindName(SurfaceResourceKind kind) {
+  switch (kind) {
+    case SurfaceResourceKind::UniformBlock: return "uniformBlock";
+    case SurfaceResourceKind::Texture: return "texture";
+    case SurfaceResourceKind::Sampler: return "sampler";
+  }
+  return "";
+}
+
+std::span<const SurfaceLanguageInfo> surfaceLanguages() { return kSurfaceLanguages; }
+
+const UniformBlock& surfaceWeatherBlock() {
+  static const UniformBlock kBlock = makeWeatherBlock();
+  return kBlock;
+}
+
+SurfaceInterface buildSurfaceInterface(const MaterialInterface& mi, std::string_view fileStem) {
+  SurfaceInterface s;
+  s.prefix = identifierPrefix(fileStem);
+  s.vertexFunction = s.prefix + "surfaceVertex";
+  s.fragmentFunction = s.prefix + "surfaceFragment";
+
+  // Inputs: the interpolated geometry (the vertex-rate values among it) and the eye.
+  s.vertexInput = {s.prefix + "VertexInput", {}};
+  for (const auto& v : mi.varyings)
+    if (v.name.rfind("interpolant", 0) != 0) s.vertexInput.fields.push_back({v.name, glslType(v.type)});
+  s.vertexInput.fields.push_back({"cameraPosition", "vec3"});
+  s.vertexOutput = {s.prefix + "VertexOutput", geometryFields(mi)};
+  s.fragmentInput = {s.prefix + "FragmentInput", geometryFields(mi)};
+  s.fragmentInput.fields.push_back({"frontFacing", "bool"});
+  s.fragmentInput.fields.push_back({"cameraPosition", "vec3"});
+  s.fragmentOutput = {s.prefix + "FragmentOutput", {}};
+  for (const auto& f : pbrFields()) {
+    if (f.stage != ShaderStage::Fragment) continue;
+    // The normal leaves in world space (the function applies the tangent frame).
+    std::string_view name = f.field == PbrField::AmbientOcclusion ? "occlusion" : f.name;
+    s.fragmentOutput.fields.push_back({std::string(name), glslType(f.type)});
+  }
+  for (const auto& term : coverageTerms()) s.fragmentOutput.fields.push_back({std::string(term.name), "float"});
+
+  // Per-material identifiers carry the prefix; the weather's are shared.
+  s.prefixed = mi;
+  s.prefixed.material.identifier = s.prefix + mi.material.identifier;
+  for (auto& m : s.prefixed.material.members) m.identifier = s.prefix + m.identifier;
+  for (auto& t : s.prefixed.textures) {
+    t.textureIdentifier = s.prefix + t.textureIdentifier;
+    t.samplerIdentifier = s.prefix + t.samplerIdentifier;
+  }
+
+  const UniformBlock& weather = surfaceWeatherBlock();
+  s.resources.push_back({weather.name, weather.identifier, SurfaceResourceKind::UniformBlock, true, 0, 0,
+                         "WG_WEATHER_SET", bindingMacro(weather.identifier), {}});
+  for (const auto& used : mi.weatherMaps) {
+    const WeatherMap* map = findWeatherMap(used.name);
+    if (!map || !map->surface) continue;
+    s.resources.push_back({used.name, used.textureIdentifier, SurfaceResourceKind::Texture, true, 0, used.textureBinding,
+                           "WG_WEATHER_SET", bindingMacro(used.textureIdentifier), map->fallbackMacro});
+    s.resources.push_back({used.name, used.samplerIdentifier, SurfaceResourceKind::Sampler, true, 0, used.samplerBinding,
+                           "WG_WEATHER_SET", bindingMacro(used.samplerIdentifier), map->fallbackMacro});
+  }
+  const std::string materialSet = "WG_SET_" + s.prefix.substr(0, s.prefix.size() - 1);
+  const auto& block = s.prefixed.material;
+  if (!block.members.empty())
+    s.resources.push_back({block.name, block.identifier, SurfaceResourceKind::UniformBlock, false, block.set,
+                           block.binding, materialSet, bindingMacro(block.identifier), {}});
+  for (const auto& t : s.prefixed.textures) {
+    s.resources.push_back({t.name, t.textureIdentifier, SurfaceResourceKind::Texture, false, t.set, t.textureBinding,
+                           materialSet, bindingMacro(t.textureIdentifier), {}});
+    s.resources.push_back({t.name, t.samplerIdentifier, SurfaceResourceKind::Sampler, false, t.set, t.samplerBinding,
+                           materialSet, bindingMacro(t.samplerIdentifier), {}});
+  }
+  return s;
+}
+
+}  // namespace wg
