@@ -10,7 +10,7 @@ namespace wg {
 
 namespace {
 
-constexpr std::array<OutputTarget, 6> kOutputTargets = {{
+constexpr std::array<OutputTarget, 7> kOutputTargets = {{
     {"glsl", "NAME.vert.glsl NAME.frag.glsl", &OutputTargets::glsl, true},
     {"hlsl", "NAME.vert.hlsl NAME.frag.hlsl", &OutputTargets::hlsl, true},
     {"spirv", "NAME.{glsl,hlsl}.{vert,frag}.spv and .spvasm", &OutputTargets::spirv, true},
@@ -18,6 +18,8 @@ constexpr std::array<OutputTarget, 6> kOutputTargets = {{
     {"glsles", "NAME.vert.es.glsl NAME.frag.es.glsl", &OutputTargets::glslEs, false},
     {"surface", "NAME.surface.glsl NAME.surface.es.glsl NAME.surface.hlsl (the unlit surface)",
      &OutputTargets::surface, false},
+    {"filament", "NAME.mat (a Filament material lighting the surface; build it with matc)", &OutputTargets::filament,
+     false},
 }};
 
 }  // namespace
@@ -54,6 +56,7 @@ void applyOutputTargets(const OutputTargets& targets, CompileOptions& options) {
   options.emitMsl = targets.msl;
   options.emitGlslEs = targets.glslEs;
   options.emitSurface = targets.surface;
+  options.emitFilament = targets.filament;
   options.emitCppHeader = targets.header;
 }
 
@@ -81,6 +84,7 @@ std::map<std::string, std::string> materialOutputs(const CompiledMaterial& m, co
   if (targets.surface)
     for (std::size_t i = 0; i < m.surfaces.size(); ++i)
       files[(dir / (m.fileStem + "." + std::string(surfaceLanguages()[i].suffix))).string()] = m.surfaces[i];
+  if (targets.filament) files[(dir / (m.fileStem + ".mat")).string()] = m.filamentMaterial;
   files[(dir / (m.fileStem + ".reflect.json")).string()] = m.reflectionJson;
   if (targets.header) files[(dir / (m.fileStem + ".hpp")).string()] = m.cppHeader;
   return files;

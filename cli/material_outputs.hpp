@@ -12,7 +12,7 @@
 namespace wg {
 
 struct OutputTargets {
-  bool glsl = false, hlsl = false, spirv = false, msl = false, glslEs = false, surface = false;
+  bool glsl = false, hlsl = false, spirv = false, msl = false, glslEs = false, surface = false, filament = false;
   bool header = false;  // --emit-header
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "backends/filament_material.hpp"
 #include "backends/spirv/cross_compile.hpp"
 #include "backends/stage_writer.hpp"
 #include "backends/surface_writer.hpp"
@@ -202,6 +203,9 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
   if (options.emitSurface)
     for (const auto& language : surfaceLanguages())
       material.surfaces.push_back(writeSurface(*ir, surface, language.language, material.contentHash, names));
+  if (options.emitFilament)
+    material.filamentMaterial = writeFilamentMaterial(
+        *ir, surface, writeSurface(*ir, surface, SurfaceLanguage::GlslEs, material.contentHash, names), material.contentHash);
   if (options.emitReflection)
     material.reflectionJson = buildReflectionJson(*ir, mi, surface, material.contentHash, material.fileStem);
   if (options.emitCppHeader) material.cppHeader = emitCppHeader(*ir, mi, material.contentHash);

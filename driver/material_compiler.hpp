@@ -30,6 +30,7 @@ struct CompileOptions {
   // The weathered surface behind the host contract, in every surface language
   // (--target surface; docs/engine-api.md, "The surface contract").
   bool emitSurface = false;
+  bool emitFilament = false;  // NAME.mat for Filament's matc (--target filament)
   // Files named NAME.HASH.* (content hash), so identical variants share them (--variants).
   bool hashKeyedFileStem = false;
   SwitchValues switches;  // the variant: static switch values; unnamed switches keep their default
@@ -58,6 +59,7 @@ struct CompiledMaterial {
   std::string cppHeader;    // empty unless emitCppHeader
   // Indexed like surfaceLanguages(); empty unless emitSurface.
   std::vector<std::string> surfaces;
+  std::string filamentMaterial;  // empty unless emitFilament
 
   const CompiledStage& stage(ShaderLanguage language, ShaderStage stage) const;
 };

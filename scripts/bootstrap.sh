@@ -15,6 +15,8 @@ packages=(
   libtinygltf-dev     # glTF 2.0 import
   assimp-testmodels   # real glTF files the import and model tests read
   bazel-bootstrap  # examples/bazel's cache test (Bazel 4.2 and a JDK)
+  libfilament-dev libfilament-tools xvfb xauth  # examples/filament-host: matc, libfilament, xvfb-run
+  python3-numpy python3-pil  # tests/package/filament_compare.py (Debian's /usr/bin/python3)
   "$@"
 )
 
