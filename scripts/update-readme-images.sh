@@ -27,6 +27,15 @@ render model-engine-snow --model /usr/share/assimp/models/glTF2/2CylinderEngine-
 build/weathergen render --scene snowfield --size "$size" --device cpu -q --frames "$tmp/snowfield" -o "$tmp/sheet.png"
 cp "$(ls "$tmp"/snowfield/*.png | sed -n 2p)" "$tmp/snowfield-prints.png"
 rm -rf "$tmp/snowfield" "$tmp"/sheet*.png
+# One material, two hosts: BoxTextured.glb's imported material under snow lit by Filament
+# (tests/package/filament_host_test.sh keeps its frames) and by weathergen's own renderer,
+# from the same view (Filament's camera at azimuth 37, elevation 27 degrees).
+WG_FILAMENT_FRAMES="$tmp/filament" tests/package/filament_host_test.sh build . cmake ninja c++ >/dev/null
+cp "$tmp/filament/snow.png" "$tmp/filament-box-snow.png"
+build/weathergen render --model /usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb \
+  --camera orbit:37,27 --size 480x360 --device cpu -q -o "$tmp/weathergen-box-snow.png" \
+  --weather sunDirection=-0.497:0.795:0.348,sunMelt=0,temperature=-6,precipitation=0.6,snowLevel=1,frostLevel=0.5,sunIntensity=0.6,windIntensity=0.2
+rm -rf "$tmp/filament"
 mkdir -p "$out"
 cp "$tmp"/*.png "$out/"
 git --no-pager diff --stat -- "$out" || true
