@@ -48,6 +48,22 @@ float fresnelSchlickSG(float f0, float VoH) {
   return f0 + (1.f - f0) * std::exp2((kSgA * VoH + kSgB) * VoH);
 }
 
+std::array<float, 3> skyTint(const std::array<float, 3>& skyColor, float precipitation, float windIntensity) {
+  const std::array<float, 3> kOvercast{0.62f, 0.64f, 0.68f};
+  float overcast = std::clamp(precipitation * 1.5f, 0.f, 1.f);
+  std::array<float, 3> tint{};
+  for (int c = 0; c < 3; ++c)
+    tint[c] = (skyColor[c] + (kOvercast[c] - skyColor[c]) * overcast) * (1.f - 0.45f * overcast * windIntensity);
+  return tint;
+}
+
+std::array<float, 2> environmentBrdf(float roughness, float NoV) {
+  const float r[4] = {roughness * -1.f + 1.f, roughness * -0.0275f + 0.0425f, roughness * -0.572f + 1.04f,
+                      roughness * 0.022f - 0.04f};
+  float a004 = std::min(r[0] * r[0], std::exp2(-9.28f * NoV)) * r[0] + r[1];
+  return {-1.04f * a004 + r[2], 1.04f * a004 + r[3]};
+}
+
 std::array<float, 3> shadeSurface(const ShadingInputs& in) {
   float roughness = std::clamp(in.roughness, kMinShadingRoughness, 1.f);
   std::array<float, 3> h{in.toViewer[0] + in.toSun[0], in.toViewer[1] + in.toSun[1], in.toViewer[2] + in.toSun[2]};
@@ -59,13 +75,16 @@ std::array<float, 3> shadeSurface(const ShadingInputs& in) {
   float VoH = std::clamp(dot3(in.toViewer, h), 0.f, 1.f);
   float diffuseTerm = burleyDiffuseFactor(roughness, NoL, NoV, VoH) / kPi;
   float dg = ggxDistribution(NoH, roughness) * smithSchlickG(NoL, NoV, roughness) / std::max(4.f * NoL * NoV, kMinNoV);
+  auto [scale, bias] = environmentBrdf(roughness, NoV);
+  float ao = in.ambientOcclusion;
+  float occlusion = std::clamp(std::pow(NoV + ao, std::exp2(-16.f * roughness - 1.f)) - 1.f + ao, 0.f, 1.f);
   std::array<float, 3> out{};
   for (int c = 0; c < 3; ++c) {
     float diffuseColor = in.baseColor[c] * (1.f - in.metallic);
     float f0 = kSpecularToF0 * in.specular + (in.baseColor[c] - kSpecularToF0 * in.specular) * in.metallic;
     float spec = dg * fresnelSchlickSG(f0, VoH);
-    out[c] = (diffuseColor * diffuseTerm + spec) * in.sunRadiance[c] * NoL +
-             in.ambient[c] * diffuseColor * in.ambientOcclusion + in.emissive[c];
+    out[c] = (diffuseColor * diffuseTerm + spec) * in.sunRadiance[c] * NoL + in.ambient[c] * diffuseColor * ao +
+             in.reflected[c] * (f0 * scale + bias) * occlusion + in.emissive[c];
   }
   return out;
 }
@@ -114,7 +133,29 @@ float wg_sun_shadow(const vec3 p, const vec3 n) {
   lit += step(depth, texture(sampler2D(wg_sun_shadow_map, wg_sun_shadow_sampler), uv + vec2(h, h)).r);
   return lit * 0.25;
 }
-// Eq. 2.2 plus Burley diffuse, sun (times its shadow) and sky ambient, metallic workflow.
+// The reference host's sky, the environment its surfaces reflect: zenith frame_skyColor,
+// a paler horizon and a dim ground; precipitation turns it overcast and a blizzard
+// darkens it (wg_sky_tint, mirrored by skyTint on the CPU for the background). Roughness
+// widens the horizon's edge, as a prefiltered environment map's rougher mips would.
+vec3 wg_sky_tint() {
+  float overcast = clamp(frame_precipitation * 1.5, 0.0, 1.0);
+  return mix(frame_skyColor, vec3(0.62, 0.64, 0.68), overcast) * (1.0 - 0.45 * overcast * frame_windIntensity);
+}
+vec3 wg_sky(const vec3 d, const float roughness) {
+  vec3 zenith = wg_sky_tint() * frame_ambientIntensity;
+  vec3 horizon = mix(zenith, vec3(dot(zenith, vec3(0.2126, 0.7152, 0.0722))), 0.5) * 1.25;
+  float edge = 0.04 + roughness * roughness;
+  vec3 sky = mix(horizon, zenith, sqrt(clamp(d.y, 0.0, 1.0)));
+  return mix(horizon * 0.35, sky, smoothstep(-edge, edge, d.y));
+}
+// The split sum's DFG term by Karis's analytic fit (UE4 mobile): F0 scale and bias.
+vec2 wg_env_brdf(const float roughness, const float NoV) {
+  vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
+  float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
+  return vec2(-1.04, 1.04) * a004 + r.zw;
+}
+// Eq. 2.2 plus Burley diffuse, sun (times its shadow) and sky ambient, metallic workflow,
+// and the sky's reflection (split sum, with Lagarde's specular occlusion from ao).
 vec3 wg_shade(const vec3 baseColor, const float metallic, float roughness, const float specular, const float ao,
               const vec3 emissive, const vec3 N, const vec3 V, const float shadow) {
   roughness = clamp(roughness, 0.02, 1.0);
@@ -130,7 +171,10 @@ vec3 wg_shade(const vec3 baseColor, const float metallic, float roughness, const
   vec3 direct = (diffuseColor * (wg_burley_diffuse(roughness, NoL, NoV, VoH) / 3.14159265) + dg * wg_fresnel(f0, VoH));
   vec3 sun = frame_sunColor * frame_sunIntensity * shadow;
   vec3 sky = frame_skyColor * frame_ambientIntensity;
-  return direct * sun * NoL + sky * diffuseColor * ao + emissive;
+  vec2 dfg = wg_env_brdf(roughness, NoV);
+  float occlusion = clamp(pow(NoV + ao, exp2(-16.0 * roughness - 1.0)) - 1.0 + ao, 0.0, 1.0);
+  vec3 reflection = wg_sky(reflect(-V, N), roughness) * (f0 * dfg.x + dfg.y) * occlusion;
+  return direct * sun * NoL + sky * diffuseColor * ao + reflection + emissive;
 }
 // Filmic tone curve (Narkowicz's ACES fit) so renders are viewable as 8-bit images.
 vec3 wg_tonemap(vec3 c) {

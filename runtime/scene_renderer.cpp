@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "compiler/material_input_files.hpp"
+#include "nodes/pbr_shading.hpp"
 #include "nodes/weather_noise.hpp"
 #include "runtime/descriptor_sets.hpp"
 #include "runtime/distance_haze_pass.hpp"
@@ -227,6 +228,16 @@ glm::mat4 SceneRenderer::modelOf(std::size_t object, const RenderRequest& reques
   return moved != request.objectModels.end() ? moved->second : objects_[object]->source->model;
 }
 
+namespace {
+// The background: the sky the surfaces reflect (wg_sky_tint), overcast in snow and rain
+// and darker in a blizzard.
+glm::vec3 weatherSkyColour(const WeatherState& weather) {
+  auto tint = skyTint({kSkyColor.r, kSkyColor.g, kSkyColor.b}, weather.conditions.precipitation,
+                      weather.conditions.windIntensity);
+  return {tint[0], tint[1], tint[2]};
+}
+}  // namespace
+
 // The block's values shared by every pass and object of a frame.
 FrameState SceneRenderer::sharedFrameState(const Frame& frame) const {
   FrameState uniforms;
@@ -366,7 +377,8 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   }
   // AOVs clear to alpha 0, which no surface writes, so read-backs can tell sky from surface.
   VkClearValue colourClear;
-  if (r.debugView == 0) colourClear.color = {{kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.f}};
+  const glm::vec3 sky = weatherSkyColour(r.weather);
+  if (r.debugView == 0) colourClear.color = {{sky.r, sky.g, sky.b, 1.f}};
   else colourClear.color = {{0.f, 0.f, 0.f, 0.f}};
   timer_.start(cmd);
   recordPass(cmd, {colourPassFor(r), frame.colourTarget.get(), r.width, r.height, {colourClear, depthClear}},
@@ -375,16 +387,16 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   const ColourPassTargets targets{cmd, &frame.colour, &frame.depth, pass.viewProjection, pass.eye, frame.clip.nearPlane,
                                   frame.clip.farPlane};
   // Haze first: falling flakes near the viewer are not as far away as the ground behind them.
-  if (drawsHaze(scene_, r)) recordHaze(targets);
+  if (drawsHaze(scene_, r)) recordHaze(targets, sky);
   if (drawsPrecipitation(r)) recordPrecipitation(targets, r.weather);
   if (r.afterColourPass) r.afterColourPass(targets);
 }
 
 // Towards the sky's clear colour, so the ground meets the sky without a seam.
-void SceneRenderer::recordHaze(const ColourPassTargets& targets) {
+void SceneRenderer::recordHaze(const ColourPassTargets& targets, const glm::vec3& sky) {
   if (!haze_) haze_ = std::make_unique<DistanceHazePass>(ctx_);
   HazeSettings settings;
-  settings.colour = kSkyColor;
+  settings.colour = sky;
   settings.distance = scene_.hazeDistance;
   settings.horizonFrom = kHazeHorizonFrom;
   haze_->record(targets, settings);
@@ -393,7 +405,8 @@ void SceneRenderer::recordHaze(const ColourPassTargets& targets) {
 // Falling snow and rain over the lit colour, lit by the frame's sun and sky.
 void SceneRenderer::recordPrecipitation(const ColourPassTargets& targets, const WeatherState& weather) {
   if (!precipitation_) precipitation_ = std::make_unique<PrecipitationPass>(ctx_);
-  const PrecipitationLight light{kSunColor * weather.conditions.sunIntensity, kSkyColor * kAmbientIntensity, kToneExposure};
+  const PrecipitationLight light{kSunColor * weather.conditions.sunIntensity, weatherSkyColour(weather) * kAmbientIntensity,
+                                 kToneExposure};
   precipitation_->record(targets, precipitationField(weather.conditions), light, weather.time);
 }
 

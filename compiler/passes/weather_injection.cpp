@@ -76,6 +76,7 @@ class WeatherInjector {
     specular_ = g_.output(PbrField::Specular);
     metallic_ = g_.output(PbrField::Metallic);
     tangentNormal_ = g_.output(PbrField::Normal);
+    emissive_ = g_.output(PbrField::Emissive);
     weights_ = b_.add("combine4", {{"x", paramNodes_[0]}, {"y", paramNodes_[1]}, {"z", paramNodes_[2]}, {"w", paramNodes_[3]}});
     shape_ = b_.add("combine4", {{"x", paramNodes_[5]}, {"y", paramNodes_[6]}, {"z", IrNodeBuilder::constant(cfg_.inclinationIntensity)}});
     terms_ = IrNodeBuilder::constant(Value::vec4(cfg_.terms[0], cfg_.terms[1], cfg_.terms[2], cfg_.terms[3]));
@@ -95,6 +96,7 @@ class WeatherInjector {
     g_.output(PbrField::Specular) = specular_;
     g_.output(PbrField::Metallic) = metallic_;
     g_.output(PbrField::Normal) = tangentNormal_;
+    g_.output(PbrField::Emissive) = emissive_;
   }
 
  private:
@@ -102,20 +104,26 @@ class WeatherInjector {
     return b_.add("lerp", {{"a", a}, {"b", b}, {"t", t}});
   }
   static Operand k(float x) { return IrNodeBuilder::constant(x); }
+  // A constant black emission needs no covering (most materials have none).
+  static bool isBlack(const Operand& o) {
+    return o.kind == Operand::Kind::Constant && o.constant.v[0] == 0.f && o.constant.v[1] == 0.f && o.constant.v[2] == 0.f;
+  }
   static Operand flatNormal() { return IrNodeBuilder::constant(Value::vec3(0.f, 0.f, 1.f)); }
 
   // Covers the surface with a layer: albedo, roughness and specular move to the
-  // layer's, metals become dielectric, and the normal map flattens under it.
+  // layer's, metals become dielectric, and the normal map flattens under it. An opaque
+  // layer (snow, moss, ice, frost) hides the emission under it; water does not.
   void cover(const Operand& coverage, const Operand& albedo, float roughness, float specular, float normalFlattening) {
     cover(coverage, albedo, k(roughness), k(specular), normalFlattening);
   }
   // The normal moves towards the layer's own (flat unless given) by normalFlattening.
   void cover(const Operand& coverage, const Operand& albedo, const Operand& roughness, const Operand& specular,
-             float normalFlattening, const Operand& layerNormal = flatNormal()) {
+             float normalFlattening, const Operand& layerNormal = flatNormal(), bool opaque = true) {
     color_ = lerp(color_, albedo, coverage);
     roughness_ = lerp(roughness_, roughness, coverage);
     specular_ = lerp(specular_, specular, coverage);
     metallic_ = lerp(metallic_, k(0.f), coverage);
+    if (opaque && !isBlack(emissive_)) emissive_ = lerp(emissive_, IrNodeBuilder::constant(Value::vec3(0.f, 0.f, 0.f)), coverage);
     if (normalFlattening > 0.f)
       tangentNormal_ = lerp(tangentNormal_, layerNormal, b_.add("multiply", {{"a", coverage}, {"b", k(normalFlattening)}}));
   }
@@ -216,7 +224,7 @@ class WeatherInjector {
     Operand frozen = b_.add("weather_puddle_ice", {});
     Operand albedo = lerp(darkened, b_.add("weather_ice_albedo", {{"diffuse", diffuse_}}), frozen);
     cover(coverage, albedo, lerp(k(weather::kPuddleRoughness), k(weather::kIceRoughness), frozen),
-          lerp(k(weather::kWaterSpecular), k(weather::kIceSpecular), frozen), 1.f);
+          lerp(k(weather::kWaterSpecular), k(weather::kIceSpecular), frozen), 1.f, flatNormal(), /*opaque=*/false);
     g_.coverage(CoverageTerm::Puddle) = coverage;
     if (!cfg_.effects.ice) g_.coverage(CoverageTerm::Ice) = b_.add("multiply", {{"a", coverage}, {"b", frozen}});
   }
@@ -263,7 +271,7 @@ class WeatherInjector {
   IrNodeBuilder b_;
   const WeatherConfig& cfg_;
   std::vector<Operand> paramNodes_;
-  Operand position_, normal_, exposure_, diffuse_, color_, roughness_, specular_, metallic_, tangentNormal_;
+  Operand position_, normal_, exposure_, diffuse_, color_, roughness_, specular_, metallic_, tangentNormal_, emissive_;
   Operand weights_, shape_, terms_;
   std::optional<Operand> noise_, windFlow_;
 };

@@ -83,5 +83,38 @@ TEST(PbrShading, MetallicWorkflowAndEnergy) {
   EXPECT_GT(w[0], 0.f);
 }
 
+// Environment reflection: a chrome mirror shows the sky instead of black, and a wet
+// (smooth) dielectric at a grazing view reflects more of it than a dry (rough) one.
+TEST(PbrShading, SkyReflectionShowsOnMetalsAndWetGround) {
+  ShadingInputs chrome;
+  chrome.baseColor = {0.95f, 0.95f, 0.95f};
+  chrome.metallic = 1.f;
+  chrome.roughness = 0.05f;
+  chrome.toSun = {0.f, -1.f, 0.f};  // no sun: the sky alone
+  chrome.reflected = {0.4f, 0.45f, 0.55f};
+  EXPECT_GT(shadeSurface(chrome)[2], 0.45f);
+  chrome.reflected = {0.f, 0.f, 0.f};
+  EXPECT_LT(shadeSurface(chrome)[2], 1e-6f);  // black without the sky, as before
+  ShadingInputs ground;
+  ground.baseColor = {0.3f, 0.3f, 0.3f};
+  ground.toViewer = {0.f, 0.1f, 0.995f};
+  ground.toSun = {0.f, -1.f, 0.f};
+  ground.reflected = {0.6f, 0.6f, 0.6f};
+  ground.roughness = 0.9f;
+  float dry = shadeSurface(ground)[0];
+  ground.baseColor = {0.15f, 0.15f, 0.15f};  // eq. 3.16: wet ground is darker...
+  ground.roughness = 0.05f;                   // ...and smoother (eq. 3.17)
+  EXPECT_GT(shadeSurface(ground)[0], dry);
+}
+
+TEST(PbrShading, EnvironmentBrdfIsThePublishedFit) {
+  auto [scale, bias] = environmentBrdf(0.f, 1.f);  // smooth, head-on: F0 alone
+  EXPECT_NEAR(scale + bias * 0.f, 1.f, 0.03f);
+  EXPECT_NEAR(bias, 0.f, 0.01f);
+  auto [roughScale, roughBias] = environmentBrdf(1.f, 0.5f);
+  EXPECT_LT(roughScale, 0.6f);
+  EXPECT_GT(roughScale + roughBias, 0.f);
+}
+
 }  // namespace
 }  // namespace wg
