@@ -124,6 +124,47 @@ TEST(RenderMaterialCli, RoofKeepsItsGroundDryInTheRain) {
   }
 }
 
+// The reference host's sky reflection: a chrome mirror on the stand shows the sky (it
+// rendered 98 % black with the sun as its only light), and wet ground at a grazing view
+// is brighter than dry, where it used to be darker at every angle.
+int luminance(glm::ivec3 c) { return (2126 * c.r + 7152 * c.g + 722 * c.b) / 10000; }
+
+TEST(RenderMaterialCli, ChromeMirrorsTheSky) {
+  TempDir dir("material-cli-chrome");
+  fs::path graph = dir.path() / "chrome.json", out = dir.path() / "chrome.png";
+  writeFile(graph, R"({"name": "chrome", "nodes": [], "output": {"baseColor": 0.95, "metallic": 1.0, "roughness": 0.05}})");
+  CommandResult r = runCommand(renderArgs(graph, out) + " --weather-preset none --camera front");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  Image img = readImage(out);
+  scene::Scene stand = scene::previewStand(graph.string());
+  const scene::SceneObject& sphere = *stand.find("sphere");
+  scene::Bounds b = scene::bounds(sphere.mesh, sphere.model);
+  float radius = 0.5f * (b.max.x - b.min.x);
+  // Five points on the sphere's silhouette-facing half: centre, and halfway to each side.
+  glm::vec3 c = centreOf(sphere);
+  for (glm::vec3 offset : {glm::vec3(0.f), glm::vec3(0.5f, 0.f, 0.f), glm::vec3(-0.5f, 0.f, 0.f),
+                           glm::vec3(0.f, 0.5f, 0.f), glm::vec3(0.f, -0.3f, 0.f)})
+    EXPECT_GT(luminance(rgbAt(img, pixelOf(*stand.camera("front"), c + offset * radius))), 60) << offset.x << "," << offset.y;
+}
+
+TEST(RenderMaterialCli, WetGroundAtAGrazingViewIsBrighterThanDry) {
+  TempDir dir("material-cli-grazing");
+  auto meanOfLowerRows = [&](const std::string& weather) {
+    fs::path out = dir.path() / (weather.substr(0, 14) + ".png");
+    CommandResult r = runCommand(cli() + " render --scene road --camera orbit:150,4,30 --no-precipitation --size 160x90 -q"
+                                 " --weather " + weather + " -o " + shellQuote(out.string()));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    Image img = readImage(out);
+    long sum = 0, count = 0;
+    for (int y = kHeight * 6 / 10; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x, ++count) sum += luminance(rgbAt(img, {x, y}));
+    return double(sum) / double(count);
+  };
+  double dry = meanOfLowerRows("temperature=12,wetnessLevel=0");
+  double wet = meanOfLowerRows("temperature=12,wetnessLevel=1");
+  EXPECT_GT(wet, dry * 1.05) << "dry " << dry << ", wet " << wet;
+}
+
 TEST(RenderMaterialCli, OrbitCamerasLookAtTheStandFromAnyDirection) {
   TempDir dir("material-cli-orbit");
   fs::path graph = writeUserGraph(dir.path());
