@@ -30,6 +30,9 @@ constexpr float kNoiseBrightening = 0.75f;
 constexpr float kTerrainShift = 0.05f;
 // Eq. 3.16: wet diffuse is toned down to 70 %.
 constexpr float kWetDarkening = 0.7f;
+// A wet metal's water film keeps this much of its roughness at most (Lagarde 2013: metals
+// are not porous; the film smooths them, never to a mirror).
+constexpr float kWetMetalRoughness = 0.15f;
 // Eq. 3.18: the flowing-water normal pans at (0.5 p, 0.01 p) units per second.
 constexpr glm::vec2 kWetFlowSpeed{0.5f, 0.01f};
 // Eq. 3.20: the frost gradient's exponent runs from 0 to 5.
@@ -144,9 +147,13 @@ float wetness(float temperature, float wetnessLevel, float exposure) {
   return clamp01(wetnessLevel) * clamp01(exposure) * smoothStep(0.f, kWetTemperatureRamp, temperature);
 }
 
-glm::vec3 wetDiffuse(glm::vec3 diffuse, float p) { return diffuse * lerp(1.f, kWetDarkening, p); }
+glm::vec3 wetDiffuse(glm::vec3 diffuse, float p, float metallic) {
+  return diffuse * lerp(1.f, kWetDarkening, p * (1.f - metallic));
+}
 
-float wetRoughness(float roughness, float p) { return clamp01(roughness - p); }
+float wetRoughness(float roughness, float p, float metallic) {
+  return std::max(clamp01(roughness - p), metallic * std::min(roughness, kWetMetalRoughness));
+}
 
 glm::vec3 wetNormal(glm::vec3 tangentNormal, glm::vec2 xz, float p, float precipitation, float time) {
   // No rain (rain 0) or a dry point (p 0): no flowing water, the normal as it was.

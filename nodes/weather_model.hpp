@@ -70,8 +70,10 @@ float transition(float noise, float progress);  // eq. 3.14: Clamp(noise - 1 + 3
 float prediction(float inc, float sun, float heightTerm, float terrain, float wind, glm::vec4 weights);
 // Eq. 3.15 as a continuous level: wetnessLevel * exposure * smoothstep(0, 1 C, T).
 float wetness(float temperature, float wetnessLevel, float exposure);
-glm::vec3 wetDiffuse(glm::vec3 diffuse, float p);  // eq. 3.16: diffuse * Lerp(1, 0.7, p)
-float wetRoughness(float roughness, float p);      // eq. 3.17: Clamp(R - p)
+// Eq. 3.16-3.17 by porosity (Lagarde 2013): water darkens what it soaks into, a
+// dielectric, not a metal, and a metal's water film keeps a little of its roughness.
+glm::vec3 wetDiffuse(glm::vec3 diffuse, float p, float metallic = 0.f);  // diffuse * Lerp(1, 0.7, p (1 - m))
+float wetRoughness(float roughness, float p, float metallic = 0.f);      // max(Clamp(R - p), m min(R, 0.15))
 // Eq. 3.18: normal + Pan((0.5 p, 0.01 p)) * (1, 1, 0), flowing only while it rains; the
 // pan's two slopes are the noise texture's b (ripple) and r channels at the panned point.
 // The shader also fades it by its pixel's footprint; a CPU point has none.

@@ -174,12 +174,17 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
                             return Value::scalar(wetness(c.frame->temperature, c.frame->wetnessLevel, in[0].x()));
                           },
                           V));
-  ops.push_back(weatherOp("weather_wet_diffuse", "eq. 3.16: diffuse * Lerp(1, 0.7, p)",
-                          {vec3Required("diffuse"), floatRequired("p")}, V3, "wg_wet_diffuse({diffuse}, {p})",
-                          [](const Value* in, const EvalContext&) { return out3(wetDiffuse(v3(in[0]), in[1].x())); }));
-  ops.push_back(weatherOp("weather_wet_roughness", "eq. 3.17: Clamp(roughness - p)",
-                          {floatRequired("roughness"), floatRequired("p")}, F, "wg_wet_roughness({roughness}, {p})",
-                          [](const Value* in, const EvalContext&) { return Value::scalar(wetRoughness(in[0].x(), in[1].x())); }));
+  ops.push_back(weatherOp("weather_wet_diffuse", "eq. 3.16 by porosity: diffuse * Lerp(1, 0.7, p (1 - metallic))",
+                          {vec3Required("diffuse"), floatRequired("p"), floatPort("metallic", 0.f, 0.f, 1.f)}, V3,
+                          "wg_wet_diffuse({diffuse}, {p}, {metallic})",
+                          [](const Value* in, const EvalContext&) { return out3(wetDiffuse(v3(in[0]), in[1].x(), in[2].x())); }));
+  ops.push_back(weatherOp("weather_wet_roughness",
+                          "eq. 3.17 by porosity: max(Clamp(roughness - p), metallic * min(roughness, 0.15))",
+                          {floatRequired("roughness"), floatRequired("p"), floatPort("metallic", 0.f, 0.f, 1.f)}, F,
+                          "wg_wet_roughness({roughness}, {p}, {metallic})",
+                          [](const Value* in, const EvalContext&) {
+                            return Value::scalar(wetRoughness(in[0].x(), in[1].x(), in[2].x()));
+                          }));
   // The CPU evaluator sees one point, no pixel footprint: the roughness as it is.
   ops.push_back(weatherOp("weather_specular_aa",
                           "specular anti-aliasing: roughness widened by the tangent normal's variance over the pixel "

@@ -73,8 +73,12 @@ float wg_prediction(const float inc, const float sun, const float h, const float
 float wg_wetness(const float temperature, const float level, const float exposure) {
   return wg_clamp01(level) * wg_clamp01(exposure) * smoothstep(0.0, 1.0, temperature);
 }
-vec3 wg_wet_diffuse(const vec3 d, const float p) { return d * wg_lerp(1.0, 0.7, p); }  // eq. 3.16
-float wg_wet_roughness(const float r, const float p) { return wg_clamp01(r - p); }  // eq. 3.17
+// Eq. 3.16-3.17 by porosity (Lagarde 2013): water darkens a dielectric it soaks into,
+// not a metal, and a metal's film keeps up to 0.15 of its roughness.
+vec3 wg_wet_diffuse(const vec3 d, const float p, const float metallic) { return d * wg_lerp(1.0, 0.7, p * (1.0 - metallic)); }
+float wg_wet_roughness(const float r, const float p, const float metallic) {
+  return max(wg_clamp01(r - p), metallic * min(r, 0.15));
+}
 // Specular anti-aliasing (Kaplanyan, Hill, Patney, Lefohn 2016): water makes a surface
 // glossy, and a normal map that varies within a pixel then lights single pixels as
 // glints, so the normal's screen-space variance widens the lobe (alpha = r^2, the kernel

@@ -207,8 +207,8 @@ class WeatherInjector {
     // its banks get wet, the water itself stays water.
     if (cfg_.effects.ice)
       p = b_.add("multiply", {{"a", p}, {"b", b_.add("one_minus", {{"in", b_.add("smoothstep", {{"edge0", k(0.f)}, {"edge1", k(kWetBank)}, {"x", frostMap()}})}})}});
-    color_ = b_.add("weather_wet_diffuse", {{"diffuse", color_}, {"p", p}});
-    roughness_ = b_.add("weather_wet_roughness", {{"roughness", roughness_}, {"p", p}});
+    color_ = b_.add("weather_wet_diffuse", {{"diffuse", color_}, {"p", p}, {"metallic", metallic_}});
+    roughness_ = b_.add("weather_wet_roughness", {{"roughness", roughness_}, {"p", p}, {"metallic", metallic_}});
     if (cfg_.effects.specularAntiAliasing)
       roughness_ = b_.add("weather_specular_aa", {{"roughness", roughness_}, {"normal", tangentNormal_}});
     if (cfg_.effects.ripple)

@@ -1,5 +1,7 @@
-// What an opaque weather layer does to what lies under it: a glowing panel under full
-// snow shows snow, not its glow through it; under a puddle (water) it still glows.
+// What weather layers do to what lies under them: a glowing panel under full snow shows
+// snow, not its glow through it; under a puddle (water) it still glows. Rain wets by
+// porosity: a dielectric darkens and turns glossy, a metal keeps its colour and a little
+// roughness.
 #include <gtest/gtest.h>
 
 #include "compiler/cpu_evaluator.hpp"
@@ -56,6 +58,27 @@ TEST(WeatherCover, WaterKeepsTheGlow) {
   }
   ASSERT_GT(r.coverageOf(CoverageTerm::Puddle), 0.9f);
   EXPECT_EQ(r.output(PbrField::Emissive).v[0], 4.f);
+}
+
+TEST(WeatherCover, RainWetsByPorosity) {
+  const std::string graph = R"({"name": "metal", "nodes": [],
+    "output": {"baseColor": [0.9, 0.6, 0.3], "metallic": 1.0, "roughness": 0.4}, "weather": {"preset": "rock"}})";
+  DiagnosticList diagnostics;
+  auto ir = buildOptimizedIr("metal.json", graph, diagnostics);
+  ASSERT_TRUE(ir.has_value());
+  CpuEvaluator metal(std::move(*ir));
+  EvalInputs rain = levelGround();
+  rain.frame.temperature = 12.f;
+  rain.frame.wetnessLevel = 1.f;
+  rain.frame.precipitation = 1.f;
+  EvalResult wet = metal.evaluate(rain);
+  ASSERT_GT(wet.coverageOf(CoverageTerm::Wet), 0.9f);
+  EXPECT_NEAR(wet.output(PbrField::BaseColor).v[0], 0.9f, 1e-4f);  // not darkened
+  EXPECT_NEAR(wet.output(PbrField::Roughness).v[0], 0.15f, 1e-4f);  // a film, not a mirror
+  CpuEvaluator panel = glowingPanel();  // a dielectric: eq. 3.16-3.17 as printed
+  EvalResult soaked = panel.evaluate(rain);
+  EXPECT_NEAR(soaked.output(PbrField::BaseColor).v[0], 0.2f * 0.7f, 1e-3f);
+  EXPECT_NEAR(soaked.output(PbrField::Roughness).v[0], 0.f, 1e-4f);
 }
 
 }  // namespace

@@ -266,12 +266,17 @@ TEST(WeatherNodes, Wetness) {
 // Eq. 3.16-3.17.
 TEST(WeatherNodes, WetDiffuseAndRoughness) {
   // Lerp(1, 0.7, 0.5) = 0.85: (0.5, 0.4, 0.2) * 0.85 = (0.425, 0.34, 0.17).
-  expectValue(eval("weather_wet_diffuse", {kDiffuse, s(0.5f)}), v3(0.425f, 0.34f, 0.17f));
+  expectValue(eval("weather_wet_diffuse", {kDiffuse, s(0.5f), s(0)}), v3(0.425f, 0.34f, 0.17f));
   // Fully wet: 70 %.
-  expectValue(eval("weather_wet_diffuse", {v3(1, 0.5f, 0), s(1)}), v3(0.7f, 0.35f, 0));
-  expectValue(eval("weather_wet_diffuse", {kDiffuse, s(0)}), kDiffuse);
-  expectValue(eval("weather_wet_roughness", {s(0.8f), s(0.3f)}), s(0.5f));  // 0.8 - 0.3
-  expectValue(eval("weather_wet_roughness", {s(0.2f), s(0.5f)}), s(0));     // -0.3 -> 0
+  expectValue(eval("weather_wet_diffuse", {v3(1, 0.5f, 0), s(1), s(0)}), v3(0.7f, 0.35f, 0));
+  expectValue(eval("weather_wet_diffuse", {kDiffuse, s(0), s(0)}), kDiffuse);
+  expectValue(eval("weather_wet_roughness", {s(0.8f), s(0.3f), s(0)}), s(0.5f));  // 0.8 - 0.3
+  expectValue(eval("weather_wet_roughness", {s(0.2f), s(0.5f), s(0)}), s(0));     // -0.3 -> 0
+  // By porosity: a metal does not darken, and keeps min(R, 0.15) of its roughness.
+  expectValue(eval("weather_wet_diffuse", {kDiffuse, s(1), s(1)}), kDiffuse);
+  expectValue(eval("weather_wet_diffuse", {v3(1, 0.5f, 0), s(1), s(0.5f)}), v3(0.85f, 0.425f, 0));
+  expectValue(eval("weather_wet_roughness", {s(0.8f), s(1), s(1)}), s(0.15f));
+  expectValue(eval("weather_wet_roughness", {s(0.1f), s(1), s(1)}), s(0.1f));
 }
 
 // A point has no footprint: the CPU's specular anti-aliasing keeps the roughness,
