@@ -387,17 +387,18 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   const ColourPassTargets targets{cmd, &frame.colour, &frame.depth, pass.viewProjection, pass.eye, frame.clip.nearPlane,
                                   frame.clip.farPlane};
   // Haze first: falling flakes near the viewer are not as far away as the ground behind them.
-  if (drawsHaze(scene_, r)) recordHaze(targets, sky);
+  if (drawsHaze(scene_, r)) recordHaze(targets, sky, r.weather);
   if (drawsPrecipitation(r)) recordPrecipitation(targets, r.weather);
   if (r.afterColourPass) r.afterColourPass(targets);
 }
 
-// Towards the sky's clear colour, so the ground meets the sky without a seam.
-void SceneRenderer::recordHaze(const ColourPassTargets& targets, const glm::vec3& sky) {
+// Towards the sky's colour, so the ground meets the sky without a seam.
+void SceneRenderer::recordHaze(const ColourPassTargets& targets, const glm::vec3& sky, const WeatherState& weather) {
   if (!haze_) haze_ = std::make_unique<DistanceHazePass>(ctx_);
   HazeSettings settings;
   settings.colour = sky;
-  settings.distance = scene_.hazeDistance;
+  // The scene's own haze and the falling snow or rain dim the view together.
+  settings.distance = 1.f / (1.f / scene_.hazeDistance + precipitationExtinction(weather.conditions));
   settings.horizonFrom = kHazeHorizonFrom;
   haze_->record(targets, settings);
 }

@@ -25,4 +25,17 @@ PrecipitationField precipitationField(const WeatherConditions& c, const Precipit
   return field;
 }
 
+float precipitationExtinction(const WeatherConditions& c, const WeatherRates& rates) {
+  constexpr float kKoschmieder = 3.912f;         // ln(1 / 0.02): the eye's 2 % contrast threshold
+  constexpr float kHeavySnowVisibility = 500.f;  // m at precipitation 1 (Rasmussen et al. 1999: 0.3-1 km)
+  constexpr float kHeavyRainVisibility = 2000.f;  // m at about 10 mm/h
+  constexpr float kBlowingSnow = 3.f;            // wind 1 quadruples snow's extinction
+  if (!(c.precipitation > 0.f)) return 0.f;
+  const float p = std::min(c.precipitation, 1.f);
+  const float snow = static_cast<float>(snowFraction(c.temperature, rates));
+  const float wind = std::clamp(c.windIntensity, 0.f, 1.f);
+  return p * (snow * kKoschmieder / kHeavySnowVisibility * (1.f + kBlowingSnow * wind) +
+              (1.f - snow) * kKoschmieder / kHeavyRainVisibility);
+}
+
 }  // namespace wg

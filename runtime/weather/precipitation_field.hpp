@@ -42,4 +42,11 @@ struct PrecipitationField {
 PrecipitationField precipitationField(const WeatherConditions& conditions, const PrecipitationSettings& settings = {},
                                       const WeatherRates& rates = {});
 
+// How falling snow and rain dim the view: their extinction coefficient (1/m), so that
+// exp(-extinction * d) of what lies d metres away still shows (Koschmieder: visibility
+// 3.912 / extinction). Heavy snow (precipitation 1) sees about 500 m, heavy rain about
+// 2 km; wind blows the snow about, and a blizzard (wind 0.8 or more) sees under 200 m,
+// below the NWS's 400 m. No precipitation: 0.
+float precipitationExtinction(const WeatherConditions& conditions, const WeatherRates& rates = {});
+
 }  // namespace wg

@@ -100,9 +100,11 @@ TEST(Precipitation, HeavySnowAddsSmallBrightFlakesNotAVeil) {
   // Thousands of flakes: visible, but most of the frame stays as it was.
   EXPECT_GT(share, 0.01) << d.count << " pixels changed";
   EXPECT_LT(share, 0.35) << d.count << " pixels changed";
-  // White flakes lit by sun and sky, over sky and a snowless valley: brighter.
+  // White flakes lit by sun and sky, over sky and a snowless valley: brighter. Heavy
+  // snow also fogs the valley towards the pale overcast sky (precipitationExtinction),
+  // so a flake stands out less than over the clear view: 0.027 of full scale, was 0.03+.
   EXPECT_GT(d.brighter, 0.9 * d.count) << d.brighter << " of " << d.count << " changed pixels are brighter";
-  EXPECT_GT(d.meanChange, 0.03);
+  EXPECT_GT(d.meanChange, 0.02);
   // Same time, same flakes.
   RenderedFrame again = renderer.render(request);
   EXPECT_EQ(again.rgba, with.rgba);

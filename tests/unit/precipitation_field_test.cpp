@@ -87,5 +87,22 @@ TEST(PrecipitationField, TheVolumeIsTheSeedsEightMetres) {
   EXPECT_GT(f.rainFallSpeed, f.snowFallSpeed);
 }
 
+// Koschmieder visibility 3.912 / extinction through the falling precipitation.
+TEST(PrecipitationExtinction, SnowBlizzardAndRainVisibility) {
+  auto visibility = [](float temperature, float precipitation, float wind) {
+    WeatherConditions c;
+    c.temperature = temperature;
+    c.precipitation = precipitation;
+    c.windIntensity = wind;
+    float extinction = precipitationExtinction(c);
+    return extinction > 0.f ? 3.912f / extinction : INFINITY;
+  };
+  EXPECT_EQ(visibility(-5.f, 0.f, 0.f), INFINITY);  // dry: only the scene's own haze
+  EXPECT_NEAR(visibility(-5.f, 1.f, 0.f), 500.f, 1.f);   // heavy snow
+  EXPECT_LT(visibility(-5.f, 1.f, 0.8f), 200.f);          // a blizzard: under the NWS's 400 m
+  EXPECT_NEAR(visibility(12.f, 1.f, 0.f), 2000.f, 1.f);  // heavy rain
+  EXPECT_GT(visibility(-5.f, 0.3f, 0.f), visibility(-5.f, 1.f, 0.f));  // light snow sees farther
+}
+
 }  // namespace
 }  // namespace wg
