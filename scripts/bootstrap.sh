@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   python3             # scripts/check-layers.py, the layer check ctest runs
-  python3-jsonschema  # tests/surface: the reflection's surface object against its schema
+  python3-jsonschema  # tests/surface (Debian's /usr/bin/python3): the surface object against its schema
   glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev
   nlohmann-json3-dev libglm-dev libstb-dev
   rapidjson-dev       # the graph reader's fast JSON front end

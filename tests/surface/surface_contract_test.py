@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The surface contract as a foreign host meets it (docs/engine-api.md).
 
 Compiles every bundled graph with --target surface, checks each reflection's "surface"
