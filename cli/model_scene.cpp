@@ -123,7 +123,9 @@ int loadModelScene(const std::string& modelPath, const gltf::ImportSettings& set
   std::optional<gltf::ModelGeometry> geometry;
   if (asset) geometry = gltf::readModelGeometry(*asset, diagnostics);
   std::optional<gltf::ImportedModel> imported;
-  if (geometry) imported = gltf::importModel(*asset, *geometry, settings, diagnostics);
+  gltf::ImportSettings scaled = settings;
+  scaled.metresPerUnit = scale;
+  if (geometry) imported = gltf::importModel(*asset, *geometry, scaled, diagnostics);
   printDiagnostics(diagnostics.items(), false);
   if (!imported) return kExitBadInput;
   try {

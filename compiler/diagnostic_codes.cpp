@@ -136,6 +136,8 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
      "material {material} uses extension '{extension}', which the import does not map; it is ignored",
      "the graph keeps the core metallic-roughness model; edit the graph to add what the extension did", "material extension"},
     {GltfFeatureIgnored, "WG5102", W, In, "gltf-feature-ignored", "{problem}", "{fix}", "problem fix"},
+    {GltfModelUnits, "WG5103", W, In, "gltf-model-units", "the model spans {size} m at {scale} m per unit; {guess}",
+     "{fix}", "size scale guess fix"},
     {UsageError, "WG9001", E, Use, "usage", "{problem}", "run 'weathergen --help' for usage", "problem"},
     {InternalShaderError, "WG9901", E, Bug, "internal-shader-error",
      "emitted {stage} failed to compile: {log}", "this is a weathergen bug; please report it", "stage log"},

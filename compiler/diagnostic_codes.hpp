@@ -79,6 +79,7 @@ enum class DiagCode : std::uint16_t {
   GltfInvalidData,
   GltfExtensionIgnored,
   GltfFeatureIgnored,
+  GltfModelUnits,
   UsageError,
   InternalShaderError,
   InternalSpirvInvalid,

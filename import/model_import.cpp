@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <tuple>
@@ -58,6 +60,39 @@ bool withinFileCounts(const Asset& asset, DiagnosticList& diags) {
   return true;
 }
 
+// Sizes a scene of real things spans: a model larger than 100 m or smaller than 1 cm in
+// metres is most likely in other units (millimetres, centimetres; or kilometres).
+constexpr float kLargestLikelyMetres = 100.f, kSmallestLikelyMetres = 0.01f;
+
+std::string metres(float x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", static_cast<double>(x));
+  return text;
+}
+
+// WG5103 when the model's size at metresPerUnit suggests other units.
+void checkUnits(const Asset& asset, const ModelGeometry& geometry, float metresPerUnit, DiagnosticList& diags) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const auto& p : geometry.primitives)
+    for (const auto& v : p.positions) {
+      glm::vec3 w(p.transform * glm::vec4(v, 1.f));
+      lo = glm::min(lo, w);
+      hi = glm::max(hi, w);
+    }
+  if (!(lo.x <= hi.x)) return;  // no vertex
+  glm::vec3 size = (hi - lo) * metresPerUnit;
+  float extent = std::max({size.x, size.y, size.z});
+  if (extent > kLargestLikelyMetres)
+    diags.report(DiagCode::GltfModelUnits, asset.locate("/meshes"),
+                 {metres(extent), metres(metresPerUnit), "it is probably in millimetres or centimetres",
+                  "render it with --model-scale 0.001 (millimetres) or 0.01 (centimetres); the imported graphs are "
+                  "the same either way"});
+  else if (extent < kSmallestLikelyMetres)
+    diags.report(DiagCode::GltfModelUnits, asset.locate("/meshes"),
+                 {metres(extent), metres(metresPerUnit), "it is probably in larger units than metres",
+                  "render it with a larger --model-scale, e.g. 100; the imported graphs are the same either way"});
+}
+
 }  // namespace
 
 std::string fileSafeName(std::string_view text, std::string_view fallback) {
@@ -112,6 +147,7 @@ std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry
     index["defaultMaterial"] = addGraph(-1, modelStem + "_default", "");
     out.defaultGraph = modelStem + "_default.json";
   }
+  checkUnits(asset, geometry, settings.metresPerUnit, diags);
   index["primitives"] = geometry.primitives.size();
   index["triangles"] = geometry.triangleCount;
   DiagnosticList added;

@@ -31,6 +31,9 @@ struct ImportedModel {
 struct ImportSettings {
   PresetChoice presets = PresetChoice::everywhere("rock");
   bool snowDisplacement = false;  // see GraphNaming::snowDisplacement
+  // Metres per model unit (render's --model-scale; glTF says 1): only to warn (WG5103)
+  // when the model's size suggests other units. The graphs do not depend on it.
+  float metresPerUnit = 1.f;
 };
 
 std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const ImportSettings& settings,

@@ -165,6 +165,23 @@ TEST(RenderMaterialCli, WetGroundAtAGrazingViewIsBrighterThanDry) {
   EXPECT_GT(wet, dry * 1.05) << "dry " << dry << ", wet " << wet;
 }
 
+// A model whose size suggests other units is rendered, with one warning naming
+// --model-scale; at a scale that makes it 5 m, none.
+TEST(RenderMaterialCli, ModelInOtherUnitsWarnsOnceNamingModelScale) {
+  TempDir dir("material-cli-units");
+  const std::string model = shellQuote((fs::path(WG_SOURCE_DIR) / "tests/bad/WG5103_field-spans-500-units.gltf").string());
+  const std::string render = cli() + " render --model " + model + " --size 160x90 -o " + shellQuote((dir.path() / "m.png").string());
+  CommandResult metres = runCommand(render);
+  ASSERT_EQ(metres.exitCode, 0) << metres.output;
+  std::size_t first = metres.output.find("warning WG5103");
+  ASSERT_NE(first, std::string::npos) << metres.output;
+  EXPECT_EQ(metres.output.find("warning WG5103", first + 1), std::string::npos) << metres.output;
+  EXPECT_NE(metres.output.find("--model-scale"), std::string::npos) << metres.output;
+  CommandResult centimetres = runCommand(render + " --model-scale 0.01");
+  ASSERT_EQ(centimetres.exitCode, 0) << centimetres.output;
+  EXPECT_EQ(centimetres.output.find("warning WG5103"), std::string::npos) << centimetres.output;
+}
+
 TEST(RenderMaterialCli, OrbitCamerasLookAtTheStandFromAnyDirection) {
   TempDir dir("material-cli-orbit");
   fs::path graph = writeUserGraph(dir.path());
