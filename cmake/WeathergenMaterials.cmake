@@ -3,7 +3,7 @@
 #
 #   weathergen_add_materials(TARGET name
 #                            GRAPHS graph.json...
-#                            [TARGETS glsl hlsl spirv msl glsles all]   (default: all)
+#                            [TARGETS glsl hlsl spirv msl glsles surface filament all]   (default: all)
 #                            [OUTPUT_DIR dir]                           (default: <binary dir>/<name>)
 #                            [EMIT_HEADER] [ALL]
 #                            [OPTIONS extra compile flags...])
@@ -54,6 +54,10 @@ function(_weathergen_material_outputs dir stem targets emit_header out_var)
       list(APPEND files "${stem}.vert.msl" "${stem}.frag.msl")
     elseif(target STREQUAL "glsles")
       list(APPEND files "${stem}.vert.es.glsl" "${stem}.frag.es.glsl")
+    elseif(target STREQUAL "surface")
+      list(APPEND files "${stem}.surface.glsl" "${stem}.surface.es.glsl" "${stem}.surface.hlsl")
+    elseif(target STREQUAL "filament")
+      list(APPEND files "${stem}.mat")
     endif()
   endforeach()
   if(emit_header)
@@ -97,9 +101,9 @@ function(weathergen_add_materials)
   endif()
   list(REMOVE_DUPLICATES targets)
   foreach(target IN LISTS targets)
-    if(NOT target MATCHES "^(glsl|hlsl|spirv|msl|glsles)$")
+    if(NOT target MATCHES "^(glsl|hlsl|spirv|msl|glsles|surface|filament)$")
       message(FATAL_ERROR "weathergen_add_materials(${arg_TARGET}): unknown target '${target}' "
-                          "(use glsl, hlsl, spirv, msl, glsles or all)")
+                          "(use glsl, hlsl, spirv, msl, glsles, surface, filament or all)")
     endif()
   endforeach()
   list(JOIN targets "," target_list)
