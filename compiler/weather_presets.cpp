@@ -17,9 +17,11 @@ WeatherConfig makePreset(std::string name) {
   if (c.preset == "rock") {
     // Section 5.1.1: the complete prediction function suits complex meshes such as rocks.
     e.snow = e.displacement = e.terrainOrientation = e.moss = e.wetness = true;
+    e.hoarfrost = true;  // exposed rock frosts over in a freeze, as roads do (figure 5.7)
   } else if (c.preset == "terrain") {
     // "For grassy parts, it uses only detail, height and wind functions."
     e.snow = e.displacement = e.wetness = true;
+    e.hoarfrost = true;  // frosted ground reads as a freeze where little snow lies
     c.terms = {0.f, 0.f, 1.f, 1.f};
   } else if (c.preset == "foliage") {
     // Detail mask only; alpha cards are not displaced; density falls as snow rises.

@@ -34,7 +34,7 @@ WG_FILAMENT_FRAMES="$tmp/filament" tests/package/filament_host_test.sh build . c
 cp "$tmp/filament/snow.png" "$tmp/filament-box-snow.png"
 build/weathergen render --model /usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb \
   --camera orbit:37,27 --size 480x360 --device cpu -q -o "$tmp/weathergen-box-snow.png" \
-  --weather sunDirection=-0.497:0.795:0.348,sunMelt=0,temperature=-6,precipitation=0.6,snowLevel=1,frostLevel=0.5,sunIntensity=0.6,windIntensity=0.2
+  --weather sunDirection=-0.497:0.795:0.348,sunMelt=0,temperature=-6,precipitation=0.6,snowLevel=1,sunIntensity=0.6,windIntensity=0.2
 rm -rf "$tmp/filament"
 mkdir -p "$out"
 cp "$tmp"/*.png "$out/"

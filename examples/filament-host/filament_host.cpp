@@ -94,7 +94,8 @@ Options parse(int argc, char** argv) {
 // fills them; a real engine takes them from its weather simulation.
 std::map<std::string, float> weatherState(const std::string& weather) {
   std::map<std::string, float> w = {{"temperature", 10.f}, {"sunIntensity", 1.f}};
-  if (weather == "snow") w = {{"temperature", -6.f}, {"precipitation", 0.6f}, {"snowLevel", 1.f}, {"frostLevel", 0.5f},
+  // Snow alone, no hoarfrost, so a test can tell where snow lies.
+  if (weather == "snow") w = {{"temperature", -6.f}, {"precipitation", 0.6f}, {"snowLevel", 1.f},
                               {"sunIntensity", 0.6f}, {"windIntensity", 0.2f}};
   if (weather == "rain") w = {{"temperature", 12.f}, {"precipitation", 1.f}, {"wetnessLevel", 1.f},
                               {"puddleLevel", 0.8f}, {"sunIntensity", 0.5f}};
