@@ -47,8 +47,8 @@ constexpr std::string_view kSurfaceVertexPrologue =
     "  vec3 wg_worldNormal = wg_safe_normalize(wg_in.worldNormal);\n"
     "  vec4 wg_worldTangent = vec4(wg_safe_normalize(wg_in.worldTangent.xyz), wg_in.worldTangent.w);\n"
     "  vec2 wg_texcoord = wg_in.texcoord;\n"
-    "  vec4 wg_vertexColor = wg_in.color;\n"
-    "  vec3 wg_cameraPosition = wg_in.cameraPosition;\n";
+    "  vec4 wg_vertexColor = wg_in.color;\n";
+// Both surface functions read the eye from their input (snow's distance fade, glitter).
 constexpr std::string_view kSurfaceCamera = "  vec3 wg_cameraPosition = wg_in.cameraPosition;\n";
 
 std::vector<std::string_view> callsIn(std::initializer_list<std::string_view> texts) {
@@ -73,6 +73,7 @@ const std::vector<std::string_view>& surfaceFrameLibraryCalls(ShaderStage stage)
 void appendSurfaceVertexBody(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
   bool texcoord1 = s.interface->hasTexcoord1();
   std::string prologue(kSurfaceVertexPrologue);
+  prologue += kSurfaceCamera;
   if (texcoord1) prologue += "  vec2 wg_texcoord1 = wg_in.texcoord1;\n";
   out += syntax.frameCode(prologue, ShaderStage::Vertex);
   out += s.body;
