@@ -19,10 +19,10 @@
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "cli/effect_overrides_option.hpp"
-#include "runtime/material_compile_error.hpp"
-#include "runtime/scene/graph_path.hpp"
-#include "runtime/scene/preview_stand.hpp"
-#include "runtime/scene_renderer.hpp"
+#include "host/material_compile_error.hpp"
+#include "host/scene/graph_path.hpp"
+#include "host/scene/preview_stand.hpp"
+#include "host/scene_renderer.hpp"
 
 namespace wg {
 

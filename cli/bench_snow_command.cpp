@@ -15,9 +15,9 @@
 #include "compiler/literal.hpp"
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
-#include "runtime/snow/deformation_texel.hpp"
-#include "runtime/snow/gpu_deformation_map.hpp"
-#include "runtime/snow/snow_interactors.hpp"
+#include "snow/deformation_texel.hpp"
+#include "snow/gpu_deformation_map.hpp"
+#include "snow/snow_interactors.hpp"
 
 namespace wg {
 

@@ -12,7 +12,7 @@
 #include "compiler/diagnostic.hpp"
 #include "compiler/literal.hpp"
 #include "nodes/frame_fields.hpp"
-#include "runtime/weather/frame_weather.hpp"
+#include "weather/frame_weather.hpp"
 
 namespace wg {
 

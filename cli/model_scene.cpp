@@ -14,7 +14,7 @@
 #include "import/gltf_asset.hpp"
 #include "import/model_geometry.hpp"
 #include "import/model_import.hpp"
-#include "runtime/scene/stage.hpp"
+#include "host/scene/stage.hpp"
 
 namespace wg {
 

@@ -1,4 +1,4 @@
-// `render --model`: a glTF model stood on the stage (runtime/scene/stage.hpp), every
+// `render --model`: a glTF model stood on the stage (host/scene/stage.hpp), every
 // mesh primitive drawn with its node transform and its imported, weathered material.
 // The materials are imported into a private temporary directory that lives as long as
 // the scene needs its graphs.
@@ -9,7 +9,7 @@
 
 #include "cli/temporary_directory.hpp"
 #include "import/model_import.hpp"
-#include "runtime/scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
 namespace wg {
 

@@ -1,11 +1,11 @@
 // `render --camera orbit:AZIMUTH,ELEVATION[,DISTANCE]`: degrees, degrees, metres
-// (runtime/scene/orbit_camera.hpp says which way each turns).
+// (host/scene/orbit_camera.hpp says which way each turns).
 #pragma once
 #include <optional>
 #include <string>
 #include <string_view>
 
-#include "runtime/scene/orbit_camera.hpp"
+#include "host/scene/orbit_camera.hpp"
 
 namespace wg {
 

@@ -16,7 +16,7 @@
 #include "cli/render_to_files.hpp"
 #include "cli/render_watch.hpp"
 #include "cli/snowfield_render.hpp"
-#include "runtime/snow/snowfield_scene.hpp"
+#include "host/snowfield/snowfield_scene.hpp"
 
 namespace wg {
 

@@ -116,7 +116,7 @@ std::vector<Option> weatherOptions(RenderOptions& o) {
          return std::string();
        }},
       {"--timeline", "", "FILE",
-       "scripted weather (runtime/timelines/seasons.json): writes\n"
+       "scripted weather (timelines/seasons.json): writes\n"
        "OUT.png as a labelled contact sheet, one frame per stage,\n"
        "and OUT.strip.png as a frame strip",
        storeValue(o.timelinePath)},

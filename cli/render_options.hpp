@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "cli/sample_count.hpp"
-#include "runtime/scene/orbit_camera.hpp"
-#include "runtime/scene_renderer.hpp"
+#include "host/scene/orbit_camera.hpp"
+#include "host/scene_renderer.hpp"
 
 namespace wg {
 

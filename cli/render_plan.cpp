@@ -8,7 +8,7 @@
 #include "compiler/json_document.hpp"
 #include "compiler/literal.hpp"
 #include "nodes/regular_file.hpp"
-#include "runtime/weather/frame_weather.hpp"
+#include "weather/frame_weather.hpp"
 
 namespace wg {
 

@@ -8,7 +8,7 @@
 
 #include "cli/eval_inputs.hpp"
 #include "cli/render_options.hpp"
-#include "runtime/weather/weather_timeline.hpp"
+#include "weather/weather_timeline.hpp"
 
 namespace wg {
 

@@ -6,8 +6,8 @@
 #include "cli/diagnostic_output.hpp"
 #include "cli/model_scene.hpp"
 #include "compiler/literal.hpp"
-#include "runtime/scene/graph_path.hpp"
-#include "runtime/scene/preview_stand.hpp"
+#include "host/scene/graph_path.hpp"
+#include "host/scene/preview_stand.hpp"
 
 namespace wg {
 

@@ -8,7 +8,7 @@
 
 #include "cli/render_options.hpp"
 #include "cli/temporary_directory.hpp"
-#include "runtime/scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
 namespace wg {
 

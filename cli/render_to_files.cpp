@@ -7,11 +7,11 @@
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "compiler/literal.hpp"
-#include "runtime/display_image.hpp"
-#include "runtime/image/contact_sheet.hpp"
-#include "runtime/image/png_file.hpp"
-#include "runtime/material_compile_error.hpp"
-#include "runtime/timeline_renderer.hpp"
+#include "host/display_image.hpp"
+#include "host/image/contact_sheet.hpp"
+#include "host/image/png_file.hpp"
+#include "host/material_compile_error.hpp"
+#include "host/timeline_renderer.hpp"
 
 namespace wg {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cli/render_plan.hpp"
-#include "runtime/vulkan/vulkan_context.hpp"
+#include "vulkan/vulkan_context.hpp"
 
 namespace wg {
 

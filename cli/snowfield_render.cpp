@@ -5,10 +5,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
-#include "runtime/display_image.hpp"
-#include "runtime/image/contact_sheet.hpp"
-#include "runtime/image/png_file.hpp"
-#include "runtime/snow/snowfield_scene.hpp"
+#include "host/display_image.hpp"
+#include "host/image/contact_sheet.hpp"
+#include "host/image/png_file.hpp"
+#include "host/snowfield/snowfield_scene.hpp"
 
 namespace wg {
 

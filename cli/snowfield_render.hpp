@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "runtime/scene_renderer.hpp"
+#include "host/scene_renderer.hpp"
 
 namespace wg {
 

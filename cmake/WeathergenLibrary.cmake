@@ -31,16 +31,16 @@ set_target_properties(weathergen_shared PROPERTIES
   LINK_DEPENDS "${WG_EXPORT_MAP}")
 
 # weathergen::snow: the deformable snow for engines (include/weathergen/snow.hpp) as
-# libweathergen_snow.so. The runtime's snow and Vulkan code and its static dependencies
+# libweathergen_snow.so. The snow and Vulkan code and their static dependencies
 # are linked in and hidden like the compiler's; the engine's own libvulkan does the
 # calls, and consumers get the Vulkan headers the API names (docs/engine-api.md).
-set_target_properties(weathergen_runtime weathergen_weather PROPERTIES POSITION_INDEPENDENT_CODE ON)
-add_library(weathergen_snow_shared SHARED runtime/snow/public_snow_api.cpp)
+set_target_properties(weathergen_snow weathergen_vulkan weathergen_weather PROPERTIES POSITION_INDEPENDENT_CODE ON)
+add_library(weathergen_snow_shared SHARED snow/public_snow_api.cpp)
 add_library(weathergen::snow ALIAS weathergen_snow_shared)
 target_include_directories(weathergen_snow_shared INTERFACE
   "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>" "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
 target_compile_features(weathergen_snow_shared INTERFACE cxx_std_17)
-target_link_libraries(weathergen_snow_shared PUBLIC Vulkan::Headers PRIVATE weathergen_runtime Vulkan::Vulkan)
+target_link_libraries(weathergen_snow_shared PUBLIC Vulkan::Headers PRIVATE weathergen_snow Vulkan::Vulkan)
 set(WG_SNOW_EXPORT_MAP "${CMAKE_CURRENT_SOURCE_DIR}/cmake/weathergen_snow.map")
 target_link_options(weathergen_snow_shared PRIVATE "LINKER:--version-script=${WG_SNOW_EXPORT_MAP}")
 if(NOT WEATHERGEN_SANITIZE AND NOT WEATHERGEN_FUZZ)

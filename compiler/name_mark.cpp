@@ -28,4 +28,12 @@ bool endsWithNameMark(std::string_view text, char separator) {
   return true;
 }
 
+bool isWindowsReservedName(std::string_view stem) {
+  auto upper = [](char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; };
+  std::string name;
+  for (char c : stem.substr(0, stem.find('.'))) name += upper(c);
+  if (name == "CON" || name == "PRN" || name == "AUX" || name == "NUL") return true;
+  return name.size() == 4 && (name.starts_with("COM") || name.starts_with("LPT")) && name[3] >= '1' && name[3] <= '9';
+}
+
 }  // namespace wg

@@ -14,4 +14,8 @@ std::string nameMark(std::string_view name);
 // that already looks marked is marked again, so no verbatim name equals a marked one.
 bool endsWithNameMark(std::string_view text, char separator);
 
+// Whether Windows reserves `stem` as a file name, whatever the case and the extension:
+// CON, PRN, AUX, NUL, COM1-COM9, LPT1-LPT9. Such a stem is marked like any unsafe name.
+bool isWindowsReservedName(std::string_view stem);
+
 }  // namespace wg

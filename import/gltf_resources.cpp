@@ -77,6 +77,9 @@ std::string fileUriProblem(std::string_view uri, const std::filesystem::path& fo
   if (!problem.empty()) return problem;
   if (path.empty()) return "the URI is empty";
   if (uri.find("://") != std::string_view::npos || uri.starts_with("file:")) return "only relative file paths are read, not URLs";
+  // tinygltf decodes '+' as a space (form encoding, not RFC 3986), so it would look
+  // for another file; %2B reaches it as '+'.
+  if (uri.find('+') != std::string_view::npos) return "the reader takes '+' in a URI for a space; write it as %2B";
   std::filesystem::path resolved = confinedPath(folder, path);
   if (resolved.empty()) return "the path leaves the model's folder; images and buffers must sit beside the model or below it";
   std::error_code ec;

@@ -8,6 +8,7 @@
 #include <map>
 #include <tuple>
 
+#include "compiler/name_mark.hpp"
 #include "import/material_graph_writer.hpp"
 
 namespace wg::gltf {
@@ -109,11 +110,18 @@ std::string fileSafeName(std::string_view text, std::string_view fallback) {
   return out;
 }
 
+std::string modelFileStem(const std::string& modelPath) {
+  const std::string stem = std::filesystem::path(modelPath).stem().string();
+  std::string safe = fileSafeName(stem, "model");
+  if (isWindowsReservedName(safe)) safe += "_" + nameMark(stem);
+  return safe;
+}
+
 std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const ImportSettings& settings,
                                          DiagnosticList& diags) {
   if (!withinFileCounts(asset, diags)) return std::nullopt;
   const auto& model = asset.model;
-  std::string modelStem = fileSafeName(std::filesystem::path(asset.file).stem().string(), "model");
+  std::string modelStem = modelFileStem(asset.file);
   ImportedModel out;
   GraphNaming naming;
   naming.snowDisplacement = settings.snowDisplacement;

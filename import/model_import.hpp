@@ -42,4 +42,8 @@ std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry
 // A file-name-safe form of any text: [A-Za-z0-9_-], at most 48 characters, never empty.
 std::string fileSafeName(std::string_view text, std::string_view fallback);
 
+// The model's file stem made safe (fileSafeName), and marked (name_mark.hpp) when it is a
+// name Windows reserves: "CON.gltf" writes CON_hXXXXXXXX.import.json, not CON.import.json.
+std::string modelFileStem(const std::string& modelPath);
+
 }  // namespace wg::gltf

@@ -1,7 +1,7 @@
 // The frame and weather block, defined once: each member's name, type, accepted range,
 // doc and place in FrameState. The std140 block (compiler/frame_block.cpp), eval's
 // --weather inputs (cli/eval_inputs.cpp) and the renderer's upload
-// (runtime/frame_uniforms.hpp) are all derived from this table.
+// (host/frame_uniforms.hpp) are all derived from this table.
 #pragma once
 #include <cstddef>
 #include <cstdint>

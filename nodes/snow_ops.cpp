@@ -18,7 +18,7 @@
 namespace wg {
 
 namespace {
-// The deformation map's default extent: 1024 texels of 4 cm (runtime/snow/snow_window.hpp).
+// The deformation map's default extent: 1024 texels of 4 cm (snow/snow_window.hpp).
 constexpr float kDefaultMapExtent = 40.96f, kDefaultMapTexels = 1024.f;
 
 // Four bilinear taps of the deformation map half a texel apart, averaged. Both maps
@@ -165,7 +165,7 @@ void appendSnowOps(std::vector<OpDef>& ops) {
   constexpr auto V = OpPurity::Varying;
   {
     // The map is toroidal: world xz / extent wraps with the repeat sampler onto the
-    // texel that holds it (runtime/snow/snow_window.hpp). Four bilinear taps half a
+    // texel that holds it (snow/snow_window.hpp). Four bilinear taps half a
     // texel apart (a 3 x 3 tent): a print's wall is steeper than one 4 cm texel, and a
     // single tap per vertex or pixel shows the texel staircase along its edge.
     OpDef map{"snow_deformation", "snow",

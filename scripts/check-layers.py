@@ -23,10 +23,13 @@ ALLOWED_INCLUDES = {
     "backends": ["nodes", "compiler"],  # syntax; from compiler/ only BACKEND_VISIBLE_COMPILER
     "driver": ["backends", "compiler", "nodes", "include"],  # material_compiler, batch_compile, the API
     "import": ["compiler", "nodes"],   # glTF -> graphs; never shaders, never the renderer
-    "runtime": ["driver", "compiler", "backends", "nodes", "include"],  # Vulkan renderer, scenes, weather, snow API
-    "cli": ["runtime", "import", "driver", "compiler", "backends", "nodes"],
-    "bench": ["runtime", "import", "driver", "compiler", "backends", "nodes"],
-    "tests": ["cli", "runtime", "import", "driver", "compiler", "backends", "nodes", "include"],
+    "weather": ["nodes", "include"],  # the weather library: simulation, timelines, precipitation
+    "vulkan": ["backends", "compiler", "nodes"],  # Vulkan building blocks: context, images, pipelines
+    "snow": ["vulkan", "backends", "compiler", "nodes", "include"],  # the deformable snow library
+    "host": ["snow", "vulkan", "weather", "driver", "compiler", "backends", "nodes", "include"],  # the reference host
+    "cli": ["host", "snow", "vulkan", "weather", "import", "driver", "compiler", "backends", "nodes"],
+    "bench": ["host", "snow", "vulkan", "weather", "import", "driver", "compiler", "backends", "nodes"],
+    "tests": ["cli", "host", "snow", "vulkan", "weather", "import", "driver", "compiler", "backends", "nodes", "include"],
     "examples": ["include"],           # engine code: the installed public API only
 }
 

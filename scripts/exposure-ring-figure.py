@@ -42,7 +42,7 @@ _png = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(_png)
 
 ROCK_COLOUR_DISTANCE = 48  # 8-bit levels, summed over R, G and B
-FOV_Y_DEGREES = 40.0       # runtime/scene/orbit_camera.hpp, kOrbitFovYDegrees
+FOV_Y_DEGREES = 40.0       # host/scene/orbit_camera.hpp, kOrbitFovYDegrees
 REFERENCE_BAND = (2.0, 4.0)
 RING_BAND = (0.15, 0.25)
 SECTORS = 12

@@ -5,7 +5,7 @@
 # graph (the default): graph files and the graph libraries they include, through the
 #   loader and the compiler; seeds: graphs/, the bad-input catalog, the examples with
 #   their libraries and tests/fuzz/regressions.
-# timeline: `render --timeline` files; seeds: runtime/timelines and the regressions' timeline/.
+# timeline: `render --timeline` files; seeds: timelines and the regressions' timeline/.
 # cli-options: NUL-separated arguments for the CLI's option parsers; seeds: the regressions' cli_options/.
 # A crash is saved as crash-* in build-fuzz/; copy it into tests/fuzz/regressions/ (or
 # its timeline/ or cli_options/) and fix it. Rerun the target on the file to see which
@@ -64,7 +64,7 @@ PY
     } > "$dict"
     options=(-max_len=65536) ;;
   timeline)
-    cp runtime/timelines/*.json tests/fuzz/regressions/timeline/* "$corpus"/
+    cp timelines/*.json tests/fuzz/regressions/timeline/* "$corpus"/
     for w in keyframes time temperature precipitation wind windIntensity label; do echo "\"\\\"$w\\\"\""; done > "$dict"
     options=(-max_len=16384) ;;
   cli-options)

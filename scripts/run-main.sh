@@ -15,12 +15,12 @@ echo "main: wrote $(ls out/variants | wc -l) files for every variant to out/vari
 mkdir -p out/gallery
 for scene in valley rocks river road; do
   for backend in glsl hlsl; do
-    build/weathergen render --scene "$scene" --backend "$backend" --timeline runtime/timelines/seasons.json \
+    build/weathergen render --scene "$scene" --backend "$backend" --timeline timelines/seasons.json \
       --size 640x360 --frames "out/gallery/frames-$backend" -o "out/gallery/$scene-$backend.png"
   done
   # The weather's coverage terms for the same stages, as the AOVs show them.
   for aov in snow wet moss ice puddle; do
-    build/weathergen render --scene "$scene" --aov "$aov" --timeline runtime/timelines/seasons.json \
+    build/weathergen render --scene "$scene" --aov "$aov" --timeline timelines/seasons.json \
       --size 320x180 -o "out/gallery/$scene-$aov.png" -q
   done
 done
@@ -30,7 +30,7 @@ build/weathergen render --scene snowfield --size 640x360 --frames out/gallery/fr
   -o out/gallery/snowfield.png
 # One material on the preview stand (sphere, rock, ramp, cube on a post, roof) through the
 # seasons: render --material takes any graph file.
-build/weathergen render --material graphs/rock.json --timeline runtime/timelines/seasons.json \
+build/weathergen render --material graphs/rock.json --timeline timelines/seasons.json \
   --size 640x360 --frames out/gallery/frames-stand -o out/gallery/stand-rock.png
 # Content nobody here wrote: glTF 2.0 models from Debian's assimp-testmodels, their
 # materials imported as graphs (docs/gltf-import.md) and weathered through the seasons.
@@ -38,11 +38,11 @@ models=/usr/share/assimp/models/glTF2
 rm -rf out/imported
 build/weathergen import "$models/BoxTextured-glTF-Binary/BoxTextured.glb" -o out/imported/BoxTextured
 build/weathergen import "$models/2CylinderEngine-glTF-Binary/2CylinderEngine.glb" -o out/imported/2CylinderEngine
-build/weathergen render --model "$models/BoxTextured-glTF-Binary/BoxTextured.glb" --timeline runtime/timelines/seasons.json \
+build/weathergen render --model "$models/BoxTextured-glTF-Binary/BoxTextured.glb" --timeline timelines/seasons.json \
   --size 640x360 --frames out/gallery/frames-models -o out/gallery/model-BoxTextured.png
 # The engine is about 600 units across (authored in millimetres); --model-scale 0.01 shows
 # it as a 6 m engine, large against the weather's centimetre snow depths.
 build/weathergen render --model "$models/2CylinderEngine-glTF-Binary/2CylinderEngine.glb" --model-scale 0.01 \
-  --timeline runtime/timelines/seasons.json --size 640x360 --frames out/gallery/frames-models \
+  --timeline timelines/seasons.json --size 640x360 --frames out/gallery/frames-models \
   -o out/gallery/model-2CylinderEngine.png
 echo "main: gallery in out/gallery ($(ls out/gallery/*.png | wc -l) contact sheets and strips; start with out/gallery/valley-glsl.png)"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates tests/reference/<scene>-<stage>.png: 160x90 frames of every bundled scene
-# at every stage of runtime/timelines/seasons.json, rendered on lavapipe.
+# at every stage of timelines/seasons.json, rendered on lavapipe.
 # Review the images (and git diff --stat) before committing: references change only here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,7 +8,7 @@ scripts/build.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 for scene in valley rocks river road; do
-  build/weathergen render --scene "$scene" --timeline runtime/timelines/seasons.json --step 300 --no-precipitation \
+  build/weathergen render --scene "$scene" --timeline timelines/seasons.json --step 300 --no-precipitation \
     --size 160x90 --device cpu --frames tests/reference -o "$tmp/$scene.png" -q
 done
 git --no-pager diff --stat -- tests/reference || true

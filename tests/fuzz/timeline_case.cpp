@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "compiler/json_document.hpp"
-#include "runtime/weather/weather_timeline.hpp"
+#include "weather/weather_timeline.hpp"
 
 namespace wg::fuzz {
 

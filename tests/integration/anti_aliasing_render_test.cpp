@@ -36,7 +36,7 @@ TEST(AntiAliasing, LavapipeDrawsLitFramesWithFourSamples) {
   EXPECT_EQ(sceneRenderer("rocks").colourSamples(), 4u);
 }
 
-// CPU devices sample trilinear, without anisotropic filtering (runtime/vulkan/sampler_anisotropy.hpp).
+// CPU devices sample trilinear, without anisotropic filtering (vulkan/sampler_anisotropy.hpp).
 TEST(AntiAliasing, LavapipeSamplesWithoutAnisotropy) {
   REQUIRE_VULKAN();
   if (renderContext()->properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU) GTEST_SKIP() << "not a CPU device";

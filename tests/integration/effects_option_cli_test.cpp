@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "runtime/image/png_file.hpp"
+#include "host/image/png_file.hpp"
 #include "tests/integration/process_support.hpp"
 
 namespace wg::testing {

@@ -21,7 +21,7 @@ wg::testing::CommandResult render(const std::string& args) {
 TEST(ExitCodes, FramesNamingAFileIsAUsageErrorBeforeRendering) {
   TempDir dir("wg-exit-codes");
   wg::testing::writeFile(dir.path() / "afile", "x");
-  auto r = render("--timeline " + shellQuote(std::string(WG_SOURCE_DIR) + "/runtime/timelines/seasons.json") + " --frames " +
+  auto r = render("--timeline " + shellQuote(std::string(WG_SOURCE_DIR) + "/timelines/seasons.json") + " --frames " +
                   shellQuote((dir.path() / "afile").string()) + " -o " + shellQuote((dir.path() / "x.png").string()));
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("--frames"), std::string::npos) << r.output;

@@ -16,7 +16,7 @@
 #include <thread>
 
 #include "process_support.hpp"
-#include "runtime/image/png_file.hpp"
+#include "host/image/png_file.hpp"
 
 namespace wg {
 namespace {

@@ -14,9 +14,9 @@
 
 #include "process_support.hpp"
 #include "nodes/weather_model.hpp"
-#include "runtime/display_image.hpp"
-#include "runtime/image/image_compare.hpp"
-#include "runtime/image/png_file.hpp"
+#include "host/display_image.hpp"
+#include "host/image/image_compare.hpp"
+#include "host/image/png_file.hpp"
 
 namespace {
 

@@ -15,9 +15,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "runtime/image/png_file.hpp"
-#include "runtime/scene/orbit_camera.hpp"
-#include "runtime/scene/preview_stand.hpp"
+#include "host/image/png_file.hpp"
+#include "host/scene/orbit_camera.hpp"
+#include "host/scene/preview_stand.hpp"
 #include "tests/integration/process_support.hpp"
 
 namespace wg::testing {
@@ -297,7 +297,7 @@ TEST(RenderMaterialCli, TimelineWritesTheSheetStripAndFramesOfTheStand) {
   fs::path out = dir.path() / "sheet.png", graph = fs::path(WG_SOURCE_DIR) / "graphs" / "rock.json";
   CommandResult r = runCommand(cli() + " render --material " + shellQuote(graph.string()) + " --size 64x36 -q -o " +
                                shellQuote(out.string()) + " --timeline " +
-                               shellQuote(WG_SOURCE_DIR "/runtime/timelines/seasons.json") + " --frames " +
+                               shellQuote(WG_SOURCE_DIR "/timelines/seasons.json") + " --frames " +
                                shellQuote((dir.path() / "frames").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_GT(readImage(out).width, 3 * 64);

@@ -8,7 +8,7 @@
 #include "compiler/debug_views.hpp"
 #include "driver/material_compiler.hpp"
 #include "nodes/weather_model.hpp"
-#include "runtime/weather/frame_weather.hpp"
+#include "weather/frame_weather.hpp"
 
 namespace wg::testing {
 

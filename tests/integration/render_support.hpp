@@ -8,7 +8,7 @@
 #include <string>
 
 #include "compiler/cpu_evaluator.hpp"
-#include "runtime/scene_renderer.hpp"
+#include "host/scene_renderer.hpp"
 
 namespace wg::testing {
 

@@ -12,10 +12,10 @@
 #include "compiler/debug_views.hpp"
 #include "nodes/weather_model.hpp"
 #include "render_support.hpp"
-#include "runtime/display_image.hpp"
-#include "runtime/image/image_compare.hpp"
-#include "runtime/image/reference_images.hpp"
-#include "runtime/timeline_renderer.hpp"
+#include "host/display_image.hpp"
+#include "host/image/image_compare.hpp"
+#include "host/image/reference_images.hpp"
+#include "host/timeline_renderer.hpp"
 
 namespace wg {
 namespace {
@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 // Small frames keep lavapipe on two cores fast; every property below is local.
 constexpr std::uint32_t kWidth = 192, kHeight = 108;
 // What scripts/update-reference-images.sh asks the CLI for: 160x90 frames of
-// runtime/timelines/seasons.json at a 300 s step, default weather and the scene's sun.
+// timelines/seasons.json at a 300 s step, default weather and the scene's sun.
 constexpr std::uint32_t kReferenceWidth = 160, kReferenceHeight = 90;
 constexpr double kReferenceStep = 300.0;
 
@@ -421,14 +421,14 @@ TEST(WeatherBehaviour, RainDarkensAndSmoothsOnlyAboveFreezing) {
   EXPECT_EQ(mean3(frozen, "wet"), 0.0);
 }
 
-// One small reference image per scene and weather stage (runtime/timelines/seasons.json),
+// One small reference image per scene and weather stage (timelines/seasons.json),
 // regenerated only by scripts/update-reference-images.sh.
 class ReferenceImages : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ReferenceImages, EveryStageMatchesItsReference) {
   REQUIRE_VULKAN();
   SceneRenderer& renderer = sceneRenderer(GetParam());
-  std::ifstream in(std::string(WG_SOURCE_DIR) + "/runtime/timelines/seasons.json");
+  std::ifstream in(std::string(WG_SOURCE_DIR) + "/timelines/seasons.json");
   std::string error;
   auto timeline = parseWeatherTimeline(nlohmann::json::parse(in), error);
   ASSERT_TRUE(timeline) << error;

@@ -1,4 +1,4 @@
-// The sky-exposure map of a real scene (runtime/sky_exposure_map.cpp): snow reaches the
+// The sky-exposure map of a real scene (host/sky_exposure_map.cpp): snow reaches the
 // foot of a boulder on a slope, under its overhang too, while the ground the boulder
 // stands on stays sheltered. Reads the renderer's map on the CPU as the shaders do; no
 // frame is drawn.

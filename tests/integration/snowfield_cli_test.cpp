@@ -3,7 +3,7 @@
 // strip and the single frames.
 #include <gtest/gtest.h>
 
-#include "runtime/image/png_file.hpp"
+#include "host/image/png_file.hpp"
 #include "tests/integration/process_support.hpp"
 
 namespace wg::testing {
@@ -28,7 +28,7 @@ TEST(SnowfieldCli, WritesAContactSheetAStripAndTheFrames) {
 
 TEST(SnowfieldCli, RejectsATimeline) {
   CommandResult r = runCommand(shellQuote(WG_CLI_PATH) +
-                               " render --scene snowfield --timeline runtime/timelines/seasons.json -o /dev/null");
+                               " render --scene snowfield --timeline timelines/seasons.json -o /dev/null");
   EXPECT_EQ(r.exitCode, 2) << r.output;
 }
 

@@ -16,7 +16,7 @@ from pathlib import Path
 
 ROOT = Path(sys.argv.pop(1) if len(sys.argv) > 1 else Path(__file__).resolve().parents[2])
 SCRIPT = ROOT / "scripts" / "check-layers.py"
-FOLDERS = ["include", "nodes", "compiler", "backends", "import", "runtime", "cli", "bench", "tests", "examples"]
+FOLDERS = ["include", "nodes", "compiler", "backends", "import", "weather", "vulkan", "snow", "host", "cli", "bench", "tests", "examples"]
 SUFFIXES = {".cpp", ".hpp", ".h", ".cc", ".inl"}
 
 
@@ -67,10 +67,10 @@ class CheckLayersTest(unittest.TestCase):
         self.assertIn("nodes/ may include only", output)
 
     def test_a_sibling_layer_is_not_allowed_either(self):
-        line = self.append_line("import/preset_map.cpp", '#include "runtime/scene_renderer.hpp"')
+        line = self.append_line("import/preset_map.cpp", '#include "host/scene_renderer.hpp"')
         code, output = self.run_check()
         self.assertEqual(code, 1)
-        self.assertIn(f'import/preset_map.cpp:{line}: includes "runtime/scene_renderer.hpp"', output)
+        self.assertIn(f'import/preset_map.cpp:{line}: includes "host/scene_renderer.hpp"', output)
 
     def test_a_backend_sees_only_the_ir_and_interface_headers(self):
         line = self.append_line("backends/glsl_syntax.cpp", '#include "compiler/graph_loader.hpp"')

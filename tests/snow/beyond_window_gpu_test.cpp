@@ -3,9 +3,9 @@
 // the window reaches them.
 #include <gtest/gtest.h>
 
-#include "runtime/snow/deformation_map.hpp"
-#include "runtime/snow/gpu_deformation_map.hpp"
-#include "runtime/snow/snow_interactors.hpp"
+#include "snow/deformation_map.hpp"
+#include "snow/gpu_deformation_map.hpp"
+#include "snow/snow_interactors.hpp"
 #include "tests/snow/snow_gpu_support.hpp"
 
 namespace wg::snow {

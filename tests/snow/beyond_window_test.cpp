@@ -1,15 +1,15 @@
 // Prints made outside the window go to the print store and appear, texel for texel,
 // when the window reaches them: far away, across the window's edge, and after the
 // refill they missed.
-#include "runtime/snow/beyond_window_stamping.hpp"
+#include "snow/beyond_window_stamping.hpp"
 
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "runtime/snow/deformation_map.hpp"
-#include "runtime/snow/deformation_texel.hpp"
-#include "runtime/snow/snow_interactors.hpp"
+#include "snow/deformation_map.hpp"
+#include "snow/deformation_texel.hpp"
+#include "snow/snow_interactors.hpp"
 
 namespace wg::snow {
 namespace {

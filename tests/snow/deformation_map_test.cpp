@@ -2,15 +2,15 @@
 // scripted paths put them, continuous trails at any speed, the snow-depth limit,
 // refill at the configured rate, normals only where touched, and prints that survive
 // recentring and a round trip out of the window.
-#include "runtime/snow/deformation_map.hpp"
+#include "snow/deformation_map.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "runtime/snow/cpu_stamping.hpp"
-#include "runtime/snow/deformation_texel.hpp"
-#include "runtime/snow/snow_interactors.hpp"
+#include "snow/cpu_stamping.hpp"
+#include "snow/deformation_texel.hpp"
+#include "snow/snow_interactors.hpp"
 
 namespace wg::snow {
 namespace {

@@ -6,9 +6,9 @@
 
 #include <algorithm>
 
-#include "runtime/snow/deformation_texel.hpp"
-#include "runtime/snow/gpu_deformation_map.hpp"
-#include "runtime/snow/snow_interactors.hpp"
+#include "snow/deformation_texel.hpp"
+#include "snow/gpu_deformation_map.hpp"
+#include "snow/snow_interactors.hpp"
 #include "tests/snow/snow_gpu_support.hpp"
 
 namespace wg::snow {

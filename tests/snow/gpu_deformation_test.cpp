@@ -2,7 +2,7 @@
 // §7): the map read back from the GPU against the CPU model and the scripted paths,
 // a footprint's boot-sole shape, no deformation without snow, continuous trails at any
 // speed, prints through recentring and a round trip, refill at the configured rate.
-#include "runtime/snow/gpu_deformation_map.hpp"
+#include "snow/gpu_deformation_map.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,11 +12,11 @@
 #include <memory>
 
 #include "backends/spirv/spirv_toolchain.hpp"
-#include "runtime/snow/cpu_stamping.hpp"
-#include "runtime/snow/deformation_map.hpp"
-#include "runtime/snow/deformation_shaders.hpp"
-#include "runtime/snow/deformation_texel.hpp"
-#include "runtime/snow/snow_interactors.hpp"
+#include "snow/cpu_stamping.hpp"
+#include "snow/deformation_map.hpp"
+#include "snow/deformation_shaders.hpp"
+#include "snow/deformation_texel.hpp"
+#include "snow/snow_interactors.hpp"
 
 #include "tests/snow/snow_gpu_support.hpp"
 

@@ -5,9 +5,9 @@
 
 #include <unistd.h>
 
-#include "runtime/snow/deformation_map.hpp"
-#include "runtime/snow/gpu_deformation_map.hpp"
-#include "runtime/snow/print_store_file.hpp"
+#include "snow/deformation_map.hpp"
+#include "snow/gpu_deformation_map.hpp"
+#include "snow/print_store_file.hpp"
 #include "tests/snow/snow_gpu_support.hpp"
 
 namespace wg::snow {

@@ -1,7 +1,7 @@
 // Saving and loading prints: a round trip gives back every print, in the window and in
 // the store, with the refill it had missed; truncated and hostile files are clear
 // errors that change nothing.
-#include "runtime/snow/print_store_file.hpp"
+#include "snow/print_store_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "runtime/snow/deformation_map.hpp"
-#include "runtime/snow/snow_interactors.hpp"
+#include "snow/deformation_map.hpp"
+#include "snow/snow_interactors.hpp"
 
 namespace wg::snow {
 namespace {

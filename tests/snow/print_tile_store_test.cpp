@@ -1,10 +1,10 @@
 // The print store's budget: past it, the tiles stored longest ago go first, and the
 // store never holds more than its budget.
-#include "runtime/snow/print_tile_store.hpp"
+#include "snow/print_tile_store.hpp"
 
 #include <gtest/gtest.h>
 
-#include "runtime/snow/deformation_map.hpp"
+#include "snow/deformation_map.hpp"
 
 namespace wg::snow {
 namespace {

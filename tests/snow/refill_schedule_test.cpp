@@ -1,14 +1,14 @@
 // Refill is spread over frames: each call refills at most refillTilesPerFrame tiles, only
 // tiles that hold prints, and every tile catches up exactly on what it is owed, in the
 // window or after a trip through the print store.
-#include "runtime/snow/refill_schedule.hpp"
+#include "snow/refill_schedule.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "runtime/snow/deformation_map.hpp"
-#include "runtime/snow/deformation_texel.hpp"
+#include "snow/deformation_map.hpp"
+#include "snow/deformation_texel.hpp"
 
 namespace wg::snow {
 namespace {

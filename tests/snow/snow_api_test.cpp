@@ -16,8 +16,8 @@
 #include <functional>
 #include <vector>
 
-#include "runtime/snow/deformation_texel.hpp"
-#include "runtime/vulkan/gpu_buffer.hpp"
+#include "snow/deformation_texel.hpp"
+#include "vulkan/gpu_buffer.hpp"
 #include "tests/snow/snow_gpu_support.hpp"
 
 namespace wg::snow {

@@ -3,7 +3,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
-#include "runtime/vulkan/vulkan_context.hpp"
+#include "vulkan/vulkan_context.hpp"
 
 namespace wg::snow::testing {
 

@@ -1,10 +1,10 @@
 // Movers stamp only when they move: a parked vehicle or a walker standing still adds
 // nothing, however many frames pass, and a creeping vehicle still leaves an unbroken rut.
-#include "runtime/snow/snow_interactors.hpp"
+#include "snow/snow_interactors.hpp"
 
 #include <gtest/gtest.h>
 
-#include "runtime/snow/deformation_map.hpp"
+#include "snow/deformation_map.hpp"
 
 namespace wg::snow {
 namespace {

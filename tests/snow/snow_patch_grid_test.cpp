@@ -1,7 +1,7 @@
 // The snow layer's patch grid (issue 5, §1; seed 2.3, 3.1): the seed's dimensions, a
 // fine square on the print map's texels around the camera, the tangent frame
 // snow_deformation's normal assumes, and following the camera by whole steps.
-#include "runtime/snow/snow_patch_grid.hpp"
+#include "host/snowfield/snow_patch_grid.hpp"
 
 #include <gtest/gtest.h>
 

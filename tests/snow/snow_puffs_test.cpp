@@ -1,6 +1,6 @@
 // Snow puffs (issue 5, §5): the GPU particle step, and soft fading against the scene's
 // depth (seed 3.3.2), on lavapipe with validation on.
-#include "runtime/snow/snow_puffs.hpp"
+#include "host/snowfield/snow_puffs.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Stamp shapes: oriented footprints with heel and toe and a raised rim, capsules, and
 // the depth limit of the local snow.
-#include "runtime/snow/snow_stamp.hpp"
+#include "snow/snow_stamp.hpp"
 
 #include <gtest/gtest.h>
 
-#include "runtime/snow/deformation_texel.hpp"
+#include "snow/deformation_texel.hpp"
 
 namespace wg::snow {
 namespace {

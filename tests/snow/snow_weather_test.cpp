@@ -1,5 +1,5 @@
 // Snow depth and refill rate from the weather state (issue 5, §3).
-#include "runtime/snow/snow_weather.hpp"
+#include "host/snowfield/snow_weather.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The sliding window's addressing: world <-> texel, toroidal storage, tile-aligned
 // recentring targets.
-#include "runtime/snow/snow_window.hpp"
+#include "snow/snow_window.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The snowfield's movers as articulated figures (snowfield_figures.hpp): a walker's
 // planted foot stands in the print its footfall pressed, the swinging foot travels from
 // one print to the next of the same side, and the vehicle's wheels run in its ruts.
-#include "runtime/snow/snowfield_figures.hpp"
+#include "host/snowfield/snowfield_figures.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // show as packed snow, nothing ghosts where the camera travels, the prints are back
 // after the round trip, no snow means no prints; puffs fade into the snow against its
 // depth (§5), lit no brighter than the snow, and bloom only adds light.
-#include "runtime/snow/snowfield_scene.hpp"
+#include "host/snowfield/snowfield_scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@
 #include "compiler/cpu_evaluator.hpp"
 #include "compiler/debug_views.hpp"
 #include "driver/material_compiler.hpp"
-#include "runtime/pass_cameras.hpp"
-#include "runtime/scene_renderer.hpp"
+#include "host/pass_cameras.hpp"
+#include "host/scene_renderer.hpp"
 
 #include "tests/snow/snow_gpu_support.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "runtime/draw_order.hpp"
+#include "host/draw_order.hpp"
 
 namespace wg {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "compiler/material_interface.hpp"
 #include "nodes/frame_fields.hpp"
-#include "runtime/weather/frame_weather.hpp"
+#include "weather/frame_weather.hpp"
 
 namespace wg {
 namespace {

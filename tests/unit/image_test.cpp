@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "runtime/image/contact_sheet.hpp"
-#include "runtime/image/image_compare.hpp"
-#include "runtime/image/png_file.hpp"
-#include "runtime/image/reference_images.hpp"
-#include "runtime/image/text_overlay.hpp"
+#include "host/image/contact_sheet.hpp"
+#include "host/image/image_compare.hpp"
+#include "host/image/png_file.hpp"
+#include "host/image/reference_images.hpp"
+#include "host/image/text_overlay.hpp"
 
 namespace wg::image {
 namespace {

@@ -36,7 +36,7 @@ std::string readFile(const std::filesystem::path& path) {
 
 TEST(JsonReader, ReadsEveryRealFileAsNlohmannDoes) {
   std::vector<std::filesystem::path> files;
-  for (const char* dir : {"graphs", "tests/bad", "runtime/timelines", "examples"})
+  for (const char* dir : {"graphs", "tests/bad", "timelines", "examples"})
     for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(WG_SOURCE_DIR) + "/" + dir))
       if (entry.path().extension() == ".json") files.push_back(entry.path());
   // glTF files nobody here wrote (Debian's assimp-testmodels).

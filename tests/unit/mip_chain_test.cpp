@@ -1,8 +1,8 @@
-// The textures' mip chains (runtime/image/mip_chain.hpp): full chains down to 1x1,
+// The textures' mip chains (host/image/mip_chain.hpp): full chains down to 1x1,
 // sRGB averaged in linear light, other data averaged as stored.
 #include <gtest/gtest.h>
 
-#include "runtime/image/mip_chain.hpp"
+#include "host/image/mip_chain.hpp"
 
 namespace wg {
 namespace {

@@ -1,7 +1,7 @@
 // What falls near the viewer: snow at and below 0 °C, rain from +1 °C, sleet (both)
 // between, in the weather simulation's own share; nothing without precipitation; wind
 // in m/s along its direction.
-#include "runtime/weather/precipitation_field.hpp"
+#include "weather/precipitation_field.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Which devices filter textures anisotropically: GPUs up to 16x, CPU devices never
 // (lavapipe's anisotropic path takes minutes for grazing views).
-#include "runtime/vulkan/sampler_anisotropy.hpp"
+#include "vulkan/sampler_anisotropy.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // orthogonal tangents, front faces outward), and the geometry each weather test needs
 // (river v from bank to bank, flat and tilted road, a shelter over road and ground,
 // probes on surfaces and in view, rocks at both ends of the height range).
-#include "runtime/scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,8 +18,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "runtime/scene/mesh.hpp"
-#include "runtime/scene/shapes.hpp"
+#include "host/scene/mesh.hpp"
+#include "host/scene/shapes.hpp"
 
 namespace wg::scene {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "nodes/weather_model.hpp"
 #include "nodes/weather_shader_library.hpp"
-#include "runtime/sky_exposure_reach.hpp"
+#include "weather/sky_exposure_reach.hpp"
 
 namespace wg {
 namespace {
@@ -54,7 +54,7 @@ TEST(SkyExposureFilter, AnEmptyMapIsOpenSky) {
   EXPECT_FLOAT_EQ(weather::filteredSkyExposure({}, 0, {0.5f, 0.5f}, 0.f), 1.f);
 }
 
-// Slanting snow under overhangs (runtime/sky_exposure_reach.hpp), on a 20 m map at 10
+// Slanting snow under overhangs (weather/sky_exposure_reach.hpp), on a 20 m map at 10
 // texels per metre: a 3.6 m roof 2.8 m up keeps a dry core and gets snow under its
 // eaves; a 5 m boulder's overhang gets snow; nothing gets more sheltered.
 constexpr int kMap = 200;

@@ -1,7 +1,7 @@
 // Stages (stageAround), orbit cameras and the preview stand of `render --material`:
 // the ground under the objects, the four framed cameras, and the stand's shapes,
 // roof and probes.
-#include "runtime/scene/stage.hpp"
+#include "host/scene/stage.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "runtime/scene/orbit_camera.hpp"
-#include "runtime/scene/preview_stand.hpp"
-#include "runtime/scene/shapes.hpp"
+#include "host/scene/orbit_camera.hpp"
+#include "host/scene/preview_stand.hpp"
+#include "host/scene/shapes.hpp"
 
 namespace wg::scene {
 namespace {

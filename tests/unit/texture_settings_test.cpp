@@ -12,7 +12,7 @@
 #include "compiler/cpu_evaluator.hpp"
 #include "driver/material_compiler.hpp"
 #include "nodes/srgb_transfer.hpp"
-#include "runtime/image/png_file.hpp"
+#include "host/image/png_file.hpp"
 
 namespace wg {
 namespace {

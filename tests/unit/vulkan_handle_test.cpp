@@ -1,6 +1,6 @@
 // vk::Handle destroys each object exactly once, with its parent, in the order owners
 // expect; checked with a stand-in destroy function, so no device is needed.
-#include "runtime/vulkan/vulkan_handle.hpp"
+#include "vulkan/vulkan_handle.hpp"
 
 #include <gtest/gtest.h>
 

@@ -17,7 +17,7 @@
 
 #include "compiler/cpu_evaluator.hpp"
 #include "driver/material_compiler.hpp"
-#include "runtime/weather/weather_simulation.hpp"
+#include "weather/weather_simulation.hpp"
 
 namespace wg {
 namespace {

@@ -1,6 +1,6 @@
 // Weather state, simulation and timeline: every rule of docs/weather-simulation.md, the
 // continuity guarantees, time scaling and degenerate inputs.
-#include "runtime/weather/weather_simulation.hpp"
+#include "weather/weather_simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/weather/weather_state.hpp"
-#include "runtime/weather/weather_timeline.hpp"
+#include "weather/weather_state.hpp"
+#include "weather/weather_timeline.hpp"
 
 namespace wg {
 namespace {

@@ -1,0 +1,49 @@
+// Distance haze (aerial perspective): every surface pixel of the colour target is
+// blended towards the sky's colour by its distance from the camera, read from the
+// colour pass's depth, so far ground fades into the sky and no frame shows where the
+// world ends. One compute dispatch on the tone-mapped colour target, after the colour
+// pass and before bloom; sky pixels (depth 1) are left alone.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <memory>
+
+#include "host/scene_renderer.hpp"
+#include "vulkan/reflected_descriptor_set.hpp"
+
+namespace wg {
+
+struct HazeSettings {
+  // What the haze tends to: the renderer's sky (its clear colour, linear), so the
+  // horizon has no seam.
+  glm::vec3 colour{0.45f, 0.55f, 0.72f};
+  // Metres over which the haze reaches 1 - 1/e (Beer-Lambert extinction): about 3 km
+  // visibility (Koschmieder: 3.9 x this), a hazy winter day.
+  float distance = 800.f;
+  // From this fraction of the far plane the haze also rises smoothly to all sky at the
+  // far plane itself, so ground cut off by the far plane leaves no line.
+  float horizonFrom = 0.5f;
+};
+
+class DistanceHazePass {
+ public:
+  explicit DistanceHazePass(vk::Context& ctx);
+  ~DistanceHazePass();
+  DistanceHazePass(const DistanceHazePass&) = delete;
+  DistanceHazePass& operator=(const DistanceHazePass&) = delete;
+
+  // The colour target must be in COLOR_ATTACHMENT_OPTIMAL and the depth in
+  // DEPTH_STENCIL_ATTACHMENT_OPTIMAL, as RenderRequest::afterColourPass hands them
+  // over; both are left there.
+  void record(const ColourPassTargets& targets, const HazeSettings& settings = {});
+
+ private:
+  vk::Context& ctx_;
+  std::unique_ptr<vk::ReflectedDescriptorSet> set_;
+  vk::UniqueShaderModule module_;
+  vk::UniquePipeline pipeline_;
+  vk::UniqueSampler depthSampler_;
+  std::uint32_t localSize_[2] = {1, 1};
+};
+
+}  // namespace wg
