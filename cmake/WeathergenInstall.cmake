@@ -16,6 +16,10 @@ install(TARGETS weathergen_shared EXPORT weathergenCompilerTargets
         LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES include/weathergen/weathergen.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/weathergen")
 install(EXPORT weathergenCompilerTargets NAMESPACE weathergen:: DESTINATION "${WG_PACKAGE_DIR}")
+# The weather loop: its own export set, loaded with the engine library (no dependencies).
+install(TARGETS weathergen_weather_shared EXPORT weathergenWeatherTargets LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+install(FILES include/weathergen/weather.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/weathergen")
+install(EXPORT weathergenWeatherTargets NAMESPACE weathergen:: DESTINATION "${WG_PACKAGE_DIR}")
 # The deformable snow library: its own export set, loaded by the config only for the
 # `snow` component, since it brings a dependency (the Vulkan headers).
 install(TARGETS weathergen_snow_shared EXPORT weathergenSnowTargets LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")

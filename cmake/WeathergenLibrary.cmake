@@ -53,3 +53,25 @@ set_target_properties(weathergen_snow_shared PROPERTIES
   VERSION "${PROJECT_VERSION}"
   SOVERSION "${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}"
   LINK_DEPENDS "${WG_SNOW_EXPORT_MAP}")
+
+# weathergen::weather: the weather loop for engines (include/weathergen/weather.hpp) as
+# libweathergen_weather.so: the simulation, the noise texture and the sky-exposure
+# builder, CPU only, with nothing in its link interface.
+add_library(weathergen_weather_shared SHARED weather/public_weather_api.cpp)
+add_library(weathergen::weather ALIAS weathergen_weather_shared)
+target_include_directories(weathergen_weather_shared INTERFACE
+  "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>" "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
+target_compile_features(weathergen_weather_shared INTERFACE cxx_std_17)
+target_link_libraries(weathergen_weather_shared PRIVATE weathergen_weather)
+set(WG_WEATHER_EXPORT_MAP "${CMAKE_CURRENT_SOURCE_DIR}/cmake/weathergen_weather.map")
+target_link_options(weathergen_weather_shared PRIVATE "LINKER:--version-script=${WG_WEATHER_EXPORT_MAP}")
+if(NOT WEATHERGEN_SANITIZE AND NOT WEATHERGEN_FUZZ)
+  target_link_options(weathergen_weather_shared PRIVATE "LINKER:--no-undefined")
+endif()
+target_link_options(weathergen_weather_shared PRIVATE "LINKER:--as-needed")
+set_target_properties(weathergen_weather_shared PROPERTIES
+  OUTPUT_NAME weathergen_weather
+  EXPORT_NAME weather
+  VERSION "${PROJECT_VERSION}"
+  SOVERSION "${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}"
+  LINK_DEPENDS "${WG_WEATHER_EXPORT_MAP}")

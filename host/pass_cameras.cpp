@@ -38,23 +38,4 @@ glm::mat4 sunViewProjection(const scene::Scene& scene, glm::vec3 towardsSun) {
   return flipY(glm::ortho(-radius, radius, -radius, radius, 0.01f, 4.f * radius)) * lightView;
 }
 
-TopDownView topDownView(const scene::Scene& scene, float margin) {
-  glm::vec3 lo = scene.boundsMin - glm::vec3(margin), hi = scene.boundsMax + glm::vec3(margin);
-  float sizeX = hi.x - lo.x, sizeZ = hi.z - lo.z;
-  TopDownView v;
-  v.top = hi.y;
-  v.bottom = lo.y;
-  glm::mat4& m = v.viewProjection;
-  m = glm::mat4(0.f);
-  m[0][0] = 2.f / sizeX;
-  m[3][0] = -2.f * lo.x / sizeX - 1.f;
-  m[2][1] = 2.f / sizeZ;
-  m[3][1] = -2.f * lo.z / sizeZ - 1.f;
-  m[1][2] = -1.f / (v.top - v.bottom);
-  m[3][2] = v.top / (v.top - v.bottom);
-  m[3][3] = 1.f;
-  v.region = glm::vec4(lo.x, lo.z, 1.f / sizeX, 1.f / sizeZ);
-  return v;
-}
-
 }  // namespace wg

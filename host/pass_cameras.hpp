@@ -21,14 +21,4 @@ glm::mat4 cameraViewProjection(const scene::CameraPreset& camera, ClipRange clip
 // Orthographic over the scene's bounds, looking along the light.
 glm::mat4 sunViewProjection(const scene::Scene& scene, glm::vec3 towardsSun);
 
-// A top-down orthographic view of the scene's bounds grown by `margin`: clip x, y
-// follow world x, z exactly as wg_sky_exposure_uv does, and depth is the height below
-// `top`, reaching 1 at `bottom`.
-struct TopDownView {
-  glm::mat4 viewProjection{1.f};
-  glm::vec4 region{0.f};  // xz origin and 1/size, as frame_skyExposureRegion
-  float top = 0.f, bottom = 0.f;
-};
-TopDownView topDownView(const scene::Scene& scene, float margin);
-
 }  // namespace wg

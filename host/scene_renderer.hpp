@@ -80,7 +80,7 @@ class SceneRenderer {
   RenderedFrame render(const RenderRequest& request);
 
   const scene::Scene& scene() const { return scene_; }
-  // The occluder heights the sky-exposure pass produced (metres), for tests.
+  // The occluder heights of the sky-exposure map (metres), for tests.
   const std::vector<float>& exposureHeights() const { return exposureHeights_; }
   std::uint32_t exposureResolution() const { return kExposureResolution; }
   glm::vec4 exposureRegion() const { return exposureRegion_; }
@@ -109,10 +109,8 @@ class SceneRenderer {
                               const WeatherEffectOverrides& effects);
   vk::MaterialPipeline& pipelineOf(MaterialResources& material, const RenderRequest& request);
   void uploadTerrain();
-  // The sky-exposure map, drawn once (sky_exposure_map.cpp).
+  // The sky-exposure map, built once (sky_exposure_map.cpp).
   void buildExposureMap();
-  std::vector<float> drawSkyOccluders(const glm::mat4& topDown);
-  std::vector<float> depthFromAbove(const std::vector<ObjectDraw>& draws);
 
   // The steps of render(), in order.
   std::vector<MaterialResources*> materialsFor(const RenderRequest& request);

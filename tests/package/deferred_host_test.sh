@@ -5,7 +5,8 @@
 # compiles graphs/rock.json's surface, writes its GLSL and HLSL G-buffer glue from the
 # reflection alone (every resource moved to its own sets with the WG_ macros), lights
 # the G-buffer itself and checks that snow whitened the sphere's top only and that the
-# HLSL surface's G-buffer matches the GLSL one's. Then this script checks its outputs.
+# HLSL surface's G-buffer matches the GLSL one's; its weather comes from the installed
+# weathergen::weather. Then this script checks its outputs and that library.
 # The frames stay in $WG_DEFERRED_FRAMES when it is set.
 #
 # usage: deferred_host_test.sh BUILD_DIR SOURCE_DIR [CMAKE] [NINJA] [CXX]
@@ -19,6 +20,17 @@ cxx=${5:-c++}
 
 # shellcheck source=package_steps.sh
 source "$(dirname "$0")/package_steps.sh" deferred-host "$build_dir" "$cmake"
+
+# The weather loop's library: its header compiles on its own, and it exports its
+# namespace only.
+for f in include/weathergen/weather.hpp lib/libweathergen_weather.so lib/cmake/weathergen/weathergenWeatherTargets.cmake; do
+  [[ -e "$prefix/$f" ]] || fail "the install lacks $f"
+done
+echo '#include <weathergen/weather.hpp>' >"$tmp/weather_header.cpp"
+quiet "the installed weather header does not compile on its own" \
+  "$cxx" -std=c++17 -fsyntax-only -Wall -Wextra -Werror -I"$prefix/include" "$tmp/weather_header.cpp"
+leaked=$(nm -D -C --defined-only "$prefix/lib/libweathergen_weather.so" | grep -v ' weathergen::weather::' || true)
+[[ -z "$leaked" ]] || fail "libweathergen_weather.so exports more than namespace weathergen::weather:"$'\n'"$leaked"
 
 quiet "configuring examples/deferred-host against the installed package" \
   "$cmake" -S "$source_dir/examples/deferred-host" -B "$tmp/example" -G Ninja -DCMAKE_MAKE_PROGRAM="$ninja" \
@@ -49,4 +61,4 @@ for glue in gbuffer.vert.glsl gbuffer.frag.glsl gbuffer.vert.hlsl gbuffer.frag.h
   done
 done
 
-echo "deferred_host: G-buffer glue from the reflection, resources moved by the WG_ macros, own lights; snow on top only; HLSL matches GLSL"
+echo "deferred_host: G-buffer glue from the reflection, resources moved by the WG_ macros, own lights; weather from weathergen::weather; snow on top only; HLSL matches GLSL"
