@@ -1,5 +1,5 @@
-// weathergen import: glTF 2.0 materials -> weather-aware material graphs
-// (docs/gltf-import.md).
+// weathergen import: glTF 2.0 and MaterialX materials -> weather-aware material graphs
+// (docs/gltf-import.md, docs/materialx-import.md).
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,16 +13,17 @@
 #include "compiler/literal.hpp"
 #include "import/gltf_asset.hpp"
 #include "import/model_import.hpp"
+#include "import/mtlx_import.hpp"
 
 namespace wg {
 
 namespace {
 
-constexpr const char* kImportUsage = R"(Usage: weathergen import MODEL.gltf|MODEL.glb -o DIR [options]
+constexpr const char* kImportUsage = R"(Usage: weathergen import MODEL.gltf|MODEL.glb|DOCUMENT.mtlx -o DIR [options]
 
-Writes one material graph per glTF material (MODEL_MATERIAL.json), the model's images
-beside them (MODEL_imageN.png|jpg) and MODEL.import.json, the index from each glTF
-material (index and name) to its graph. Nothing is written if the model has an error.
+Writes one material graph per glTF or MaterialX material (MODEL_MATERIAL.json), the
+images beside them (MODEL_imageN.png|jpg) and MODEL.import.json, the index from each
+material to its graph. Nothing is written if the model or document has an error.
 
 Options:
 )";
@@ -31,6 +32,8 @@ struct ImportOptions {
   std::string model, outputDir, preset = "rock", presetMap;
   bool json = false, quiet = false, help = false, presetGiven = false, displacement = false;
 };
+  std::vector<std::string> searchPath;  // MaterialX only
+  mtlx::MissingImages missingImages = mtlx::MissingImages::Error;
 
 OptionTable importOptionTable(ImportOptions& o) {
   return {.options = {
@@ -54,6 +57,21 @@ OptionTable importOptionTable(ImportOptions& o) {
                "split at hard edges, as most glTF meshes are)",
                storeFlag(o.displacement)},
               {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
+              {"--search-path", "", "DIR",
+               "MaterialX: a folder to find images and xi:includes in, after\n"
+               "the document's own (repeatable); nothing outside them is read",
+               [&o](const std::string& v) {
+                 o.searchPath.push_back(v);
+                 return std::string();
+               }},
+              {"--missing-images", "", "error|placeholder",
+               "MaterialX: a missing image is an error (default), or the\n"
+               "placeholder image, with a warning",
+               [&o](const std::string& v) {
+                 if (v != "error" && v != "placeholder") return "--missing-images takes error or placeholder, not '" + quoteUserText(v) + "'";
+                 o.missingImages = v == "error" ? mtlx::MissingImages::Error : mtlx::MissingImages::Placeholder;
+                 return std::string();
+               }},
                [&o](const std::string& v) { return setDiagnosticsFormat(v, o.json); }},
               {"--quiet", "-q", "", "no summary line (on stdout)", storeFlag(o.quiet)},
               {"--help", "-h", "", "", storeFlag(o.help)},
@@ -103,6 +121,46 @@ int writeImport(const gltf::Asset& asset, const gltf::ImportedModel& imported, c
     std::printf("import: %zu material graph(s) and %zu image(s) from %s into %s (index: %s)\n",
                  imported.materialGraphs.size() + (imported.defaultGraph.empty() ? 0 : 1), asset.model.images.size(),
                  quoteUserText(asset.file, 200).c_str(), quoteUserText(o.outputDir, 200).c_str(), imported.indexFile.c_str());
+// The document and the files it includes must never be replaced by an output.
+std::string replacedInput(const std::vector<std::filesystem::path>& inputs, const std::vector<gltf::ImportedFile>& files,
+                          const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> read;
+  for (const auto& f : inputs) read.push_back(std::filesystem::weakly_canonical(f, ec));
+  for (const auto& f : files)
+    if (std::find(read.begin(), read.end(), std::filesystem::weakly_canonical(dir / f.name, ec)) != read.end())
+      return "the output '" + quoteUserText(f.name) + "' would replace the document or a file it includes; choose another output directory";
+  return "";
+}
+
+// Publishes imported files into the output directory, all or none; "" or the error.
+std::string publish(const std::vector<gltf::ImportedFile>& files, const std::string& dir) {
+  StagedDirectory out(dir);
+  for (const auto& f : files)
+    if (std::string e = out.stage(f.name, f.bytes); !e.empty()) return e;
+  return out.publish();
+}
+
+int importMaterialX(const ImportOptions& o) {
+  std::string error;
+  auto presets = o.presetMap.empty() ? std::optional(gltf::PresetChoice::everywhere(o.preset))
+                                     : gltf::PresetChoice::fromMap(o.presetMap, error);
+  if (!presets) return usageError(error, o.json);
+  DiagnosticList diagnostics;
+  auto document = mtlx::loadDocument(o.model, o.searchPath, diagnostics);
+  std::optional<mtlx::ImportedDocument> imported;
+  if (document) imported = mtlx::importDocument(*document, {*presets, o.missingImages}, diagnostics);
+  printDiagnostics(diagnostics.items(), o.json);
+  if (!imported) return kExitBadInput;
+  if (std::string e = replacedInput(document->inputFiles(), imported->files, o.outputDir); !e.empty()) return usageError(e, o.json);
+  if (std::string e = publish(imported->files, o.outputDir); !e.empty()) return usageError(e, o.json);
+  if (!o.quiet)
+    std::printf("import: %zu material graph(s) and %zu image(s) from %s into %s (index: %s)\n", imported->materialGraphs.size(),
+                imported->imageCount, quoteUserText(o.model, 200).c_str(), quoteUserText(o.outputDir, 200).c_str(),
+                imported->indexFile.c_str());
+  return kExitOk;
+}
+
   return kExitOk;
 }
 
@@ -114,6 +172,7 @@ int runImportCommand(int argc, char** argv) {
   if (o.help) {
     ImportOptions scratch;  // the listing reads only the rows' names and help
     std::fputs((kImportUsage + formatOptionList(importOptionTable(scratch))).c_str(), stdout);
+  if (std::filesystem::path(o.model).extension() == ".mtlx") return importMaterialX(o);
     return kExitOk;
   }
   std::string error;

@@ -22,15 +22,23 @@ std::string lowered(std::string s) {
   return s;
 }
 
-// Graph stems: MODEL_MATERIAL; names that collide (ignoring case, for case-insensitive
+std::vector<std::string> graphStems(const tinygltf::Model& model, const std::string& modelStem) {
+  std::vector<std::string> names;
+  for (const auto& material : model.materials) names.push_back(material.name);
+  return materialStems(names, modelStem);
+}
+
+}  // namespace
+
+// MODEL_MATERIAL; names that collide (ignoring case, for case-insensitive
 // file systems) all take their material index as a suffix, so no name depends on order.
 // A suffixed stem can meet another material's own name ("Red", "Red", "Red_0"), so this
 // repeats; a stem is suffixed at most once, so it ends. Two suffixed stems never meet:
 // the digits after their last '_' are their distinct indices.
-std::vector<std::string> graphStems(const tinygltf::Model& model, const std::string& modelStem) {
+std::vector<std::string> materialStems(const std::vector<std::string>& names, const std::string& modelStem) {
   std::vector<std::string> stems;
-  for (std::size_t i = 0; i < model.materials.size(); ++i)
-    stems.push_back(modelStem + "_" + fileSafeName(model.materials[i].name, "material" + std::to_string(i)));
+  for (std::size_t i = 0; i < names.size(); ++i)
+    stems.push_back(modelStem + "_" + fileSafeName(names[i], "material" + std::to_string(i)));
   std::vector<bool> suffixed(stems.size(), false);
   for (bool changed = true; changed;) {
     std::map<std::string, int> uses{{lowered(modelStem + "_default"), 1}};
@@ -44,6 +52,8 @@ std::vector<std::string> graphStems(const tinygltf::Model& model, const std::str
   }
   return stems;
 }
+
+namespace {
 
 // File names are bytes, not always UTF-8; they reach the JSON as replacement characters.
 std::string asText(const Json& json) { return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; }

@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libtinygltf-dev     # glTF 2.0 import
+  libpugixml-dev      # MaterialX import
   assimp-testmodels   # real glTF files the import and model tests read
   bazel-bootstrap  # examples/bazel's cache test (Bazel 4.2 and a JDK)
   libfilament-dev libfilament-tools xvfb xauth  # examples/filament-host: matc, libfilament, xvfb-run

@@ -23,6 +23,7 @@
 #include "import/gltf_asset.hpp"
 #include "import/model_geometry.hpp"
 #include "import/model_import.hpp"
+#include "import/mtlx_import.hpp"
 
 namespace {
 
@@ -30,9 +31,9 @@ namespace fs = std::filesystem;
 
 const fs::path kBadDir = fs::path(WG_SOURCE_DIR) / "tests" / "bad";
 
-// Catalog entries are named "<CODE>_<short-kebab-description>.json", or .gltf/.glb
-// for the codes of glTF models, which go through `weathergen import`.
-const std::regex kCatalogName(R"(^(WG[0-9]{4})_[a-z0-9]+(-[a-z0-9]+)*\.(json|gltf|glb)$)");
+// Catalog entries are named "<CODE>_<short-kebab-description>.json", or .gltf/.glb/.mtlx
+// for the codes of glTF models and MaterialX documents, which go through `weathergen import`.
+const std::regex kCatalogName(R"(^(WG[0-9]{4})_[a-z0-9]+(-[a-z0-9]+)*\.(json|gltf|glb|mtlx)$)");
 
 struct CatalogEntry {
   std::string code;  // from the file name, e.g. "WG2001"
@@ -288,9 +289,14 @@ INSTANTIATE_TEST_SUITE_P(Catalog, BadInputCatalogCli, ::testing::ValuesIn(catalo
 class BadInputCatalogLibrary : public ::testing::TestWithParam<CatalogEntry> {};
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(BadInputCatalogLibrary);
 
-// A model through the import library: asset, geometry, graphs.
+// A model through the import library: asset, geometry, graphs; or a MaterialX document.
 wg::DiagnosticList importModelFile(const std::string& file, bool& imported) {
   wg::DiagnosticList diagnostics;
+  if (file.ends_with(".mtlx")) {
+    auto document = wg::mtlx::loadDocument(file, {}, diagnostics);
+    imported = document && wg::mtlx::importDocument(*document, {}, diagnostics);
+    return diagnostics;
+  }
   auto asset = wg::gltf::loadAsset(file, diagnostics);
   std::optional<wg::gltf::ModelGeometry> geometry;
   if (asset) geometry = wg::gltf::readModelGeometry(*asset, diagnostics);

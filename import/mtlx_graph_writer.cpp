@@ -1,0 +1,952 @@
+#include "import/mtlx_graph_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <set>
+
+#include "compiler/literal.hpp"
+
+namespace wg::mtlx {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// A value in the graph: a literal, or a link to a node's output; with its MaterialX type.
+struct Value {
+  Json literal;
+  std::string link;
+  std::string type;  // float, integer, boolean, vector2, color3, vector3, color4, vector4
+  bool tangentNormal = false;  // from a normalmap node: a tangent-space normal
+
+  Json input() const { return link.empty() ? literal : Json(link); }
+  bool isLiteral() const { return link.empty(); }
+};
+
+int widthOf(std::string_view type) {
+  if (type == "float" || type == "integer" || type == "boolean") return 1;
+  if (type == "vector2") return 2;
+  if (type == "color3" || type == "vector3") return 3;
+  if (type == "color4" || type == "vector4") return 4;
+  return 0;
+}
+
+// "0.5, 0.25, 1" as a literal of `type`; nullopt when it is not one.
+std::optional<Json> parseLiteral(const std::string& text, const std::string& type) {
+  if (type == "boolean") {
+    if (text == "true" || text == "false") return Json(text == "true");
+    return std::nullopt;
+  }
+  int width = widthOf(type);
+  if (width == 0) return std::nullopt;
+  Json values = Json::array();
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    std::size_t comma = std::min(text.find(',', at), text.size());
+    std::string part = text.substr(at, comma - at);
+    part.erase(0, part.find_first_not_of(" \t\n\r"));
+    part.erase(part.find_last_not_of(" \t\n\r") + 1);
+    char* end = nullptr;
+    double v = std::strtod(part.c_str(), &end);
+    if (part.empty() || *end != '\0' || !std::isfinite(v) || std::fabs(v) > 3.4e38) return std::nullopt;
+    if (type == "integer" && v != std::floor(v)) return std::nullopt;
+    values.push_back(v);
+    at = comma + 1;
+  }
+  if (static_cast<int>(values.size()) != width) return std::nullopt;
+  return width == 1 ? values[0] : values;
+}
+
+Json splat(double v, int width) { return width == 1 ? Json(v) : Json(std::vector<double>(width, v)); }
+
+// A short decimal: 0.04 / 0.08 is 0.5, not 0.5000000000000001.
+double rounded(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.7g", v);
+  return std::strtod(text, nullptr);
+}
+
+std::string nameOf(pugi::xml_node node) { return node.attribute("name").value(); }
+
+// An input the UE4 model cannot hold, and when setting it changes nothing: its neutral
+// value, or the lobe weight that switches it off.
+struct IgnoredInput {
+  const char* prefix;  // the input, or every input starting with it when it ends in '_'
+  const char* weight;  // the lobe's weight input ("" for none)
+  const char* neutral; // the value that changes nothing ("" for none)
+};
+
+struct ShadingModel {
+  const char* category;
+  // graph output -> (input, default) of the model; "" when the model has no such input
+  const char* baseColor;
+  const char* baseWeight;
+  const char* metallic;
+  const char* roughness;
+  const char* emissive;
+  const char* emissiveWeight;
+  const char* opacity;
+  const char* normal;
+  const char* occlusion;
+  const char* specularWeight;
+  const char* ior;
+  std::vector<std::pair<const char*, const char*>> defaults;  // input -> default value text
+  std::vector<IgnoredInput> ignored;
+};
+
+const std::vector<ShadingModel>& shadingModels() {
+  static const std::vector<ShadingModel> kModels = {
+      {"standard_surface", "base_color", "base", "metalness", "specular_roughness", "emission_color", "emission", "opacity",
+       "normal", "", "specular", "specular_IOR",
+       {{"base", "1"}, {"base_color", "0.8, 0.8, 0.8"}, {"metalness", "0"}, {"specular_roughness", "0.2"},
+        {"emission", "0"}, {"emission_color", "1, 1, 1"}, {"opacity", "1, 1, 1"}, {"specular", "1"}, {"specular_IOR", "1.5"}},
+       {{"diffuse_roughness", "", "0"}, {"specular_color", "", "1, 1, 1"}, {"specular_anisotropy", "", "0"},
+        {"specular_rotation", "specular_anisotropy", "0"}, {"transmission", "", "0"}, {"transmission_", "transmission", ""},
+        {"subsurface", "", "0"}, {"subsurface_", "subsurface", ""}, {"sheen", "", "0"}, {"sheen_", "sheen", ""},
+        {"coat", "", "0"}, {"coat_", "coat", ""}, {"thin_film_thickness", "", "0"}, {"thin_film_", "thin_film_thickness", ""},
+        {"thin_walled", "", "false"}, {"tangent", "", ""}}},
+      {"open_pbr_surface", "base_color", "base_weight", "base_metalness", "specular_roughness", "emission_color",
+       "emission_luminance", "geometry_opacity", "geometry_normal", "", "specular_weight", "specular_ior",
+       {{"base_weight", "1"}, {"base_color", "0.8, 0.8, 0.8"}, {"base_metalness", "0"}, {"specular_roughness", "0.3"},
+        {"emission_luminance", "0"}, {"emission_color", "1, 1, 1"}, {"geometry_opacity", "1"}, {"specular_weight", "1"},
+        {"specular_ior", "1.5"}},
+       {{"base_diffuse_roughness", "", "0"}, {"specular_color", "", "1, 1, 1"}, {"specular_roughness_anisotropy", "", "0"},
+        {"specular_ior_level", "", "0.5"}, {"transmission_weight", "", "0"}, {"transmission_", "transmission_weight", ""},
+        {"subsurface_weight", "", "0"}, {"subsurface_", "subsurface_weight", ""}, {"fuzz_weight", "", "0"},
+        {"fuzz_", "fuzz_weight", ""}, {"coat_weight", "", "0"}, {"coat_", "coat_weight", ""},
+        {"thin_film_weight", "", "0"}, {"thin_film_", "thin_film_weight", ""}, {"geometry_thin_walled", "", "false"},
+        {"geometry_tangent", "", ""}, {"geometry_coat_", "coat_weight", ""}}},
+      {"gltf_pbr", "base_color", "", "metallic", "roughness", "emissive", "emissive_strength", "alpha", "normal", "occlusion",
+       "specular", "ior",
+       {{"base_color", "1, 1, 1"}, {"metallic", "1"}, {"roughness", "1"}, {"emissive", "0, 0, 0"}, {"emissive_strength", "1"},
+        {"alpha", "1"}, {"occlusion", "1"}, {"specular", "1"}, {"ior", "1.5"}},
+       {{"specular_color", "", "1, 1, 1"}, {"transmission", "", "0"}, {"thickness", "transmission", "0"}, {"attenuation_", "transmission", ""},
+        {"sheen_color", "", "0, 0, 0"}, {"sheen_roughness", "sheen_color", ""}, {"clearcoat", "", "0"},
+        {"clearcoat_", "clearcoat", ""}, {"iridescence", "", "0"}, {"iridescence_", "iridescence", ""},
+        {"dispersion", "", "0"}, {"anisotropy_strength", "", "0"}, {"anisotropy_rotation", "anisotropy_strength", ""},
+        {"tangent", "", ""}}},
+      {"UsdPreviewSurface", "diffuseColor", "", "metallic", "roughness", "emissiveColor", "", "opacity", "normal", "occlusion",
+       "", "ior",
+       {{"diffuseColor", "0.18, 0.18, 0.18"}, {"metallic", "0"}, {"roughness", "0.5"}, {"emissiveColor", "0, 0, 0"},
+        {"opacity", "1"}, {"occlusion", "1"}, {"ior", "1.5"}, {"normal", "0, 0, 1"}},
+       {{"useSpecularWorkflow", "", "0"}, {"specularColor", "useSpecularWorkflow", ""}, {"clearcoat", "", "0"},
+        {"clearcoatRoughness", "clearcoat", ""}, {"displacement", "", "0"}}},
+  };
+  return kModels;
+}
+
+const ShadingModel* shadingModel(std::string_view category) {
+  for (const auto& m : shadingModels())
+    if (category == m.category) return &m;
+  return nullptr;
+}
+
+class GraphWriter {
+ public:
+  GraphWriter(const Document& doc, const GraphNaming& naming, const ImageFiles& images, DiagnosticList& diags)
+      : doc_(doc), naming_(naming), images_(images), diags_(diags) {}
+
+  std::optional<Json> build(pugi::xml_node material) {
+    pugi::xml_node shader = surfaceShader(doc_, material);
+    if (!shader) {
+      problem(DiagCode::MtlxBadReference, material,
+              "material '" + quoteUserText(nameOf(material)) + "' has no surfaceshader input naming a shader node",
+              "connect its surfaceshader input to a shader node with nodename");
+      return std::nullopt;
+    }
+    const ShadingModel* model = shadingModel(shader.name());
+    if (!model) {
+      diags_.report(DiagCode::MtlxUnsupportedNode, doc_.locate(shader),
+                    {quoteUserText(nameOf(shader)), quoteUserText(shader.name()),
+                     "use standard_surface, open_pbr_surface, gltf_pbr or UsdPreviewSurface"});
+      return std::nullopt;
+    }
+    shader_ = shader;
+    model_ = model;
+    Json output = shaderOutput();
+    if (failed_) return std::nullopt;
+    Json graph;
+    graph["name"] = naming_.name;
+    graph["description"] = naming_.description;
+    if (!textures_.empty()) graph["textures"] = textures_;
+    graph["nodes"] = nodes_;
+    graph["output"] = output;
+    graph["alphaMode"] = alphaMode_;
+    if (alphaMode_ == "mask") graph["alphaCutoff"] = alphaCutoff_;
+    graph["doubleSided"] = false;
+    graph["weather"] = naming_.weatherPreset == "none"
+                           ? Json("none")
+                           : Json{{"preset", naming_.weatherPreset}, {"effects", {{"displacement", false}}}};
+    return graph;
+  }
+
+ private:
+  // --- diagnostics ---
+
+  void problem(DiagCode code, pugi::xml_node at, const std::string& what, const std::string& fix) {
+    diags_.report(code, doc_.locate(at), {what, fix});
+    if (diagnosticInfo(code).severity == Severity::Error) failed_ = true;
+  }
+
+  Value failedValue(const std::string& type) {
+    failed_ = true;
+    return {splat(0, std::max(1, widthOf(type))), "", type};
+  }
+
+  Value schemaError(pugi::xml_node at, const std::string& what, const std::string& expected, const std::string& actual,
+                    const std::string& type) {
+    diags_.report(DiagCode::MtlxSchema, doc_.locate(at), {what, expected, actual});
+    return failedValue(type);
+  }
+
+  // --- graph nodes ---
+
+  std::string uniqueId(std::string id) {
+    for (char& c : id)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.') c = '_';
+    std::string base = id;
+    for (int n = 2; !ids_.insert(id).second; ++n) id = base + "_" + std::to_string(n);
+    return id;
+  }
+
+  // Adds a node and returns the value of its output.
+  Value node(const std::string& id, const char* op, Json inputs, const std::string& type, const char* output = "out") {
+    std::string unique = uniqueId(id);
+    Json n{{"id", unique}, {"op", op}};
+    if (!inputs.empty()) n["inputs"] = std::move(inputs);
+    nodes_.push_back(std::move(n));
+    return {Json(), unique + "." + output, type};
+  }
+
+  Value swizzle(const std::string& id, const Value& in, const std::string& channels, const std::string& type) {
+    return node(id, "swizzle", {{"in", in.input()}, {"channels", channels}}, type);
+  }
+
+  // MaterialX texture coordinates start at the bottom of the image, the graph's (as glTF's) at the top.
+  Value flippedV(const std::string& id, const Value& uv) {
+    Value u = swizzle(id + "_u", uv, "x", "float"), v = swizzle(id + "_v", uv, "y", "float");
+    Value up = node(id + "_flip", "one_minus", {{"in", v.input()}}, "float");
+    return node(id, "combine2", {{"x", u.input()}, {"y", up.input()}}, "vector2");
+  }
+
+  // --- the shader ---
+
+  Json shaderOutput() {
+    const ShadingModel& m = *model_;
+    warnIgnoredInputs();
+    Json output;
+    Value base = shaderInput(m.baseColor, "color3");
+    if (*m.baseWeight) base = product("baseColor", base, shaderInput(m.baseWeight, "float"));
+    output["baseColor"] = base.input();
+    output["metallic"] = shaderInput(m.metallic, "float").input();
+    output["roughness"] = shaderInput(m.roughness, "float").input();
+    if (auto specular = specularLevel()) output["specular"] = *specular;
+    if (auto normal = normalOutput()) output["normal"] = *normal;
+    if (*m.occlusion) {
+      Value occlusion = shaderInput(m.occlusion, "float");
+      if (!(occlusion.isLiteral() && occlusion.literal == Json(1.0))) output["ambientOcclusion"] = occlusion.input();
+    }
+    Value emissive = shaderInput(m.emissive, "color3");
+    if (*m.emissiveWeight) emissive = product("emissive", emissive, shaderInput(m.emissiveWeight, "float"));
+    if (!(emissive.isLiteral() && emissive.literal == splat(0, 3))) output["emissive"] = emissive.input();
+    addOpacity(output);
+    return output;
+  }
+
+  // a x b, folded when both are literals so constant materials stay literal.
+  Value product(const std::string& id, const Value& a, const Value& b) {
+    if (a.isLiteral() && b.isLiteral() && b.literal.is_number()) {
+      if (b.literal == Json(1.0)) return a;
+      Json out = a.literal;
+      for (auto& v : out) v = rounded(v.get<double>() * b.literal.get<double>());
+      if (out.is_number()) out = rounded(a.literal.get<double>() * b.literal.get<double>());
+      return {out, "", a.type};
+    }
+    return node(nameOf(shader_) + "." + id, "multiply", {{"a", a.input()}, {"b", b.input()}}, a.type);
+  }
+
+  // The value of a shader input (its default when absent), checked against `type`.
+  Value shaderInput(const char* name, const std::string& type) {
+    pugi::xml_node input = childInput(shader_, name);
+    if (input) return inputValue(input, {}, type);
+    for (const auto& [input, text] : model_->defaults)
+      if (std::string_view(input) == name) return {*parseLiteral(text, type), "", type};
+    return {splat(0, widthOf(type)), "", type};
+  }
+
+  // F0 = specular weight x ((ior - 1) / (ior + 1))^2, as the graph's specular = F0 / 0.08.
+  std::optional<Json> specularLevel() {
+    const ShadingModel& m = *model_;
+    Value ior = shaderInput(m.ior, "float");
+    Value weight = *m.specularWeight ? shaderInput(m.specularWeight, "float") : Value{Json(1.0), "", "float"};
+    if (!ior.isLiteral() || !weight.isLiteral()) {
+      warnAdjusted(shader_, "the specular level of shader '" + quoteUserText(nameOf(shader_)) +
+                                "' is connected; the graph keeps the dielectric default (F0 0.04)",
+                   "give the IOR and specular weight as values");
+      return std::nullopt;
+    }
+    double r = (ior.literal.get<double>() - 1) / (ior.literal.get<double>() + 1);
+    double level = rounded(weight.literal.get<double>() * r * r / 0.08);
+    if (level > 1) {
+      warnAdjusted(shader_, "the specular level of shader '" + quoteUserText(nameOf(shader_)) + "' (F0 " +
+                                std::to_string(level * 0.08) + ") is above the UE4 model's 0.08; it is clamped",
+                   "an IOR above 1.79 cannot be held by the graph's specular output");
+      level = 1;
+    }
+    return level;
+  }
+
+  std::optional<Json> normalOutput() {
+    pugi::xml_node input = childInput(shader_, model_->normal);
+    if (!input) return std::nullopt;
+    Value normal = inputValue(input, {}, "vector3");
+    if (normal.tangentNormal) return normal.input();
+    if (std::string_view(model_->category) == "UsdPreviewSurface") return normal.input();  // tangent space already
+    if (failed_ || (!input.attribute("nodename") && !input.attribute("nodegraph"))) return std::nullopt;  // failed, or the surface's own
+    warnAdjusted(input, "the normal of shader '" + quoteUserText(nameOf(shader_)) +
+                            "' does not come from a normalmap node; the graph keeps the surface normal",
+                 "connect the normal through a normalmap node");
+    return std::nullopt;
+  }
+
+  void addOpacity(Json& output) {
+    const ShadingModel& m = *model_;
+    bool colour = std::string_view(m.category) == "standard_surface";
+    Value opacity = shaderInput(m.opacity, colour ? "color3" : "float");
+    if (colour) {  // the UE4 model has one opacity: the mean of the three
+      if (opacity.isLiteral())
+        opacity = {rounded((opacity.literal[0].get<double>() + opacity.literal[1].get<double>() + opacity.literal[2].get<double>()) / 3),
+                   "", "float"};
+      else
+        opacity = node(nameOf(shader_) + ".opacity", "dot", {{"a", opacity.input()}, {"b", splat(1.0 / 3, 3)}}, "float");
+    }
+    alphaMode_ = opacity.isLiteral() && opacity.literal == Json(1.0) ? "opaque" : "blend";
+    if (std::string_view(m.category) == "gltf_pbr") gltfAlphaMode(opacity);
+    if (std::string_view(m.category) == "UsdPreviewSurface") usdAlphaMode();
+    if (alphaMode_ != "opaque") output["opacity"] = opacity.input();
+  }
+
+  // gltf_pbr's alpha_mode: 0 opaque, 1 mask (with alpha_cutoff), 2 blend.
+  void gltfAlphaMode(const Value&) {
+    Value mode = shaderInput("alpha_mode", "integer");
+    Value cutoff = shaderInput("alpha_cutoff", "float");
+    if (!mode.isLiteral() || !cutoff.isLiteral()) {
+      problem(DiagCode::MtlxFeatureAdjusted, shader_, "alpha_mode and alpha_cutoff of shader '" + quoteUserText(nameOf(shader_)) +
+                                                          "' are connected; the material is opaque",
+              "give them as values");
+      alphaMode_ = "opaque";
+      return;
+    }
+    int value = mode.literal.is_number() ? static_cast<int>(mode.literal.get<double>()) : 0;
+    alphaMode_ = value == 1 ? "mask" : value == 2 ? "blend" : "opaque";
+    alphaCutoff_ = std::clamp(cutoff.isLiteral() && cutoff.literal.is_number() ? cutoff.literal.get<double>() : 0.5, 0.0, 1.0);
+  }
+
+  // UsdPreviewSurface: opacityThreshold > 0 cuts out, else opacity below 1 blends.
+  void usdAlphaMode() {
+    Value threshold = shaderInput("opacityThreshold", "float");
+    if (threshold.isLiteral() && threshold.literal.is_number() && threshold.literal.get<double>() > 0) {
+      alphaMode_ = "mask";
+      alphaCutoff_ = std::clamp(threshold.literal.get<double>(), 0.0, 1.0);
+    }
+  }
+
+  void warnIgnoredInputs() {
+    for (pugi::xml_node input : shader_.children("input")) {
+      std::string name = nameOf(input);
+      for (const auto& ignored : model_->ignored) {
+        std::string_view prefix = ignored.prefix;
+        bool matches = prefix.ends_with('_') ? name.starts_with(prefix) : name == prefix;
+        if (!matches || inert(input, ignored)) continue;
+        diags_.report(DiagCode::MtlxInputIgnored, doc_.locate(input), {quoteUserText(nameOf(shader_)), quoteUserText(name)});
+        break;
+      }
+    }
+  }
+
+  // An ignored input changes nothing when it holds its neutral value, or its lobe is off.
+  bool inert(pugi::xml_node input, const IgnoredInput& ignored) const {
+    auto holds = [](pugi::xml_node in, const char* neutral) {
+      if (!in.attribute("value") || in.attribute("nodename") || in.attribute("nodegraph") || in.attribute("interfacename"))
+        return false;
+      std::string type = in.attribute("type").value();
+      auto a = parseLiteral(in.attribute("value").value(), type), b = parseLiteral(neutral, type);
+      return a && b && *a == *b;
+    };
+    if (*ignored.neutral && holds(input, ignored.neutral)) return true;
+    if (!*ignored.weight) return false;
+    pugi::xml_node weight = childInput(shader_, ignored.weight);
+    return !weight || holds(weight, "0") || holds(weight, "0, 0, 0");
+  }
+
+  void warnAdjusted(pugi::xml_node at, const std::string& what, const std::string& fix) {
+    problem(DiagCode::MtlxFeatureAdjusted, at, what, fix);
+  }
+
+  // --- inputs and connections ---
+
+  static pugi::xml_node childInput(pugi::xml_node node, std::string_view name) {
+    for (pugi::xml_node input : node.children("input"))
+      if (name == input.attribute("name").value()) return input;
+    return {};
+  }
+
+  // The value an <input> gives, in `scope` (a nodegraph, or empty for the document).
+  Value inputValue(pugi::xml_node input, pugi::xml_node scope, const std::string& expected) {
+    std::string type = input.attribute("type") ? input.attribute("type").value() : expected;
+    if (widthOf(type) == 0)
+      return schemaError(input, "the type of input '" + quoteUserText(nameOf(input)) + "'", "a MaterialX value type (float, color3, vector2...)",
+                         "'" + quoteUserText(type) + "'", expected);
+    if (widthOf(type) != widthOf(expected) && !(expected == "float" && type == "integer"))
+      return schemaError(input, "input '" + quoteUserText(nameOf(input)) + "'", expected, type, expected);
+    Value v = connectedValue(input, scope, type);
+    if (v.type != type && !failed_)
+      return schemaError(input, "the connection of input '" + quoteUserText(nameOf(input)) + "' (" + type + ")",
+                         "an output of type " + type, "one of type " + v.type, type);
+    return v;
+  }
+
+  Value connectedValue(pugi::xml_node input, pugi::xml_node scope, const std::string& type) {
+    if (pugi::xml_attribute nodename = input.attribute("nodename")) {
+      pugi::xml_node upstream = scope ? childNode(scope, nodename.value()) : doc_.topLevel(nodename.value());
+      if (!upstream) return missingReference(input, "node '" + quoteUserText(nodename.value()) + "'", type);
+      return nodeOutput(upstream, scope, input.attribute("output").value());
+    }
+    if (pugi::xml_attribute graph = input.attribute("nodegraph")) {
+      pugi::xml_node ng = doc_.topLevel(graph.value());
+      if (!ng || std::string_view(ng.name()) != "nodegraph")
+        return missingReference(input, "node graph '" + quoteUserText(graph.value()) + "'", type);
+      return graphOutput(input, ng, input.attribute("output").value(), type);
+    }
+    if (pugi::xml_attribute iface = input.attribute("interfacename")) {
+      pugi::xml_node declared = scope ? childInput(scope, iface.value()) : pugi::xml_node();
+      if (!declared) return missingReference(input, "interface input '" + quoteUserText(iface.value()) + "'", type);
+      return inputValue(declared, {}, type);
+    }
+    if (pugi::xml_attribute value = input.attribute("value")) {
+      if (auto literal = parseLiteral(value.value(), type)) return {*literal, "", type};
+      return schemaError(input, "the value of input '" + quoteUserText(nameOf(input)) + "'", "a " + type,
+                         "'" + quoteUserText(value.value()) + "'", type);
+    }
+    return {splat(0, widthOf(type)), "", type};
+  }
+
+  Value missingReference(pugi::xml_node input, const std::string& what, const std::string& type) {
+    problem(DiagCode::MtlxBadReference, input, "input '" + quoteUserText(nameOf(input)) + "' names " + what + ", which does not exist",
+            "connect it to an element of the document");
+    return failedValue(type);
+  }
+
+  static pugi::xml_node childNode(pugi::xml_node scope, std::string_view name) {
+    for (pugi::xml_node n : scope.children())
+      if (n.type() == pugi::node_element && name == n.attribute("name").value() && std::string_view(n.name()) != "input" &&
+          std::string_view(n.name()) != "output")
+        return n;
+    return {};
+  }
+
+  Value graphOutput(pugi::xml_node from, pugi::xml_node graph, std::string_view outputName, const std::string& type) {
+    pugi::xml_node output;
+    for (pugi::xml_node o : graph.children("output"))
+      if (outputName.empty() || outputName == o.attribute("name").value()) {
+        output = o;
+        break;
+      }
+    if (!output) return missingReference(from, "output '" + quoteUserText(std::string(outputName)) + "' of its node graph", type);
+    pugi::xml_node upstream = childNode(graph, output.attribute("nodename").value());
+    if (!upstream) return missingReference(output, "node '" + quoteUserText(output.attribute("nodename").value()) + "'", type);
+    return nodeOutput(upstream, graph, output.attribute("output").value());
+  }
+
+  // --- nodes ---
+
+  Value nodeOutput(pugi::xml_node node, pugi::xml_node scope, const std::string& output) {
+    auto key = std::make_pair(node.internal_object(), output);
+    if (auto done = done_.find(key); done != done_.end()) return done->second;
+    if (std::find(path_.begin(), path_.end(), node) != path_.end()) return cycle(node);
+    if (failedNodes_.count(node.internal_object())) return failedValue(node.attribute("type").value());
+    path_.push_back(node);
+    std::size_t errorsBefore = diags_.items().size();
+    Value v = translate(node, scope, output);
+    path_.pop_back();
+    done_[key] = v;
+    if (diags_.items().size() != errorsBefore && failed_) failedNodes_.insert(node.internal_object());  // report a node once
+    return v;
+  }
+
+  Value cycle(pugi::xml_node node) {
+    std::string loop;
+    for (auto it = std::find(path_.begin(), path_.end(), node); it != path_.end(); ++it) loop += nameOf(*it) + " -> ";
+    problem(DiagCode::MtlxBadReference, node, "the node graph has a cycle: " + quoteUserText(loop + nameOf(node), 200),
+            "break the cycle; a node cannot depend on its own output");
+    return failedValue(node.attribute("type").value());
+  }
+
+  struct Context {
+    pugi::xml_node node, scope;
+    std::string id, type;
+  };
+
+  // One MaterialX node, as graph nodes.
+  Value translate(pugi::xml_node n, pugi::xml_node scope, const std::string& output) {
+    const std::string category = n.name(), type = n.attribute("type").value();
+    const std::string id = (scope ? nameOf(scope) + "." : std::string()) + nameOf(n);
+    if (widthOf(type) == 0 && type != "multioutput")
+      return schemaError(n, "the type of node '" + quoteUserText(nameOf(n)) + "'", "a MaterialX value type (float, color3, vector2...)",
+                         "'" + quoteUserText(type) + "'", "float");
+    Context c{n, scope, id, type};
+    static const std::map<std::string, Value (GraphWriter::*)(const Context&)> kNodes = {
+        {"constant", &GraphWriter::constant},     {"add", &GraphWriter::binary},          {"subtract", &GraphWriter::binary},
+        {"multiply", &GraphWriter::binary},       {"divide", &GraphWriter::binary},       {"max", &GraphWriter::binary},
+        {"min", &GraphWriter::binary},            {"power", &GraphWriter::power},         {"dotproduct", &GraphWriter::dotProduct},
+        {"mix", &GraphWriter::mix},               {"clamp", &GraphWriter::clamp},         {"sin", &GraphWriter::unary},
+        {"cos", &GraphWriter::unary},             {"absval", &GraphWriter::unary},        {"floor", &GraphWriter::unary},
+        {"sqrt", &GraphWriter::unary},            {"invert", &GraphWriter::invert},       {"convert", &GraphWriter::convert},
+        {"swizzle", &GraphWriter::swizzleNode},   {"extract", &GraphWriter::extract},     {"combine2", &GraphWriter::combine},
+        {"combine3", &GraphWriter::combine},      {"combine4", &GraphWriter::combine},    {"texcoord", &GraphWriter::texcoord},
+        {"position", &GraphWriter::geometry},     {"normal", &GraphWriter::geometry},     {"image", &GraphWriter::image},
+        {"tiledimage", &GraphWriter::image},      {"hextiledimage", &GraphWriter::image}, {"normalmap", &GraphWriter::normalMap},
+        {"noise2d", &GraphWriter::noise2d},       {"noise3d", &GraphWriter::noise3d},     {"fractal3d", &GraphWriter::fractal3d},
+        {"ifgreater", &GraphWriter::ifGreater},   {"ifgreatereq", &GraphWriter::ifGreater}, {"rgbtohsv", &GraphWriter::rgbToHsv},
+        {"hsvtorgb", &GraphWriter::hsvToRgb},
+        {"place2d", &GraphWriter::place2d},
+    };
+    if (category.starts_with("separate")) return separate(c, output);
+    auto it = kNodes.find(category);
+    if (it == kNodes.end()) {
+      diags_.report(DiagCode::MtlxUnsupportedNode, doc_.locate(n),
+                    {quoteUserText(nameOf(n)), quoteUserText(category), "docs/materialx-import.md lists the nodes the import maps; "
+                                                                        "replace this one in the document"});
+      return failedValue(type);
+    }
+    return (this->*(it->second))(c);
+  }
+
+  // The node's input `name` as `type` (its MaterialX default when absent).
+  Value in(const Context& c, const char* name, const std::string& type, Json fallback) {
+    pugi::xml_node input = childInput(c.node, name);
+    if (!input) return {std::move(fallback), "", type};
+    return inputValue(input, c.scope, type);
+  }
+
+  // An input of the type it declares (fallbackType when absent or not a value type).
+  Value declared(const Context& c, const char* name, const std::string& fallbackType) {
+    pugi::xml_node input = childInput(c.node, name);
+    std::string type = input ? input.attribute("type").value() : fallbackType;
+    if (widthOf(type) == 0) type = fallbackType;
+    return in(c, name, type, splat(0, widthOf(type)));
+  }
+
+  // An input of the node's own type.
+  Value own(const Context& c, const char* name, double fallback) { return in(c, name, c.type, splat(fallback, widthOf(c.type))); }
+
+  // An input that may be a float or the node's own type (MaterialX's "FA" variants).
+  Value inEither(const Context& c, const char* name, double fallback) {
+    pugi::xml_node input = childInput(c.node, name);
+    std::string type = input && std::string_view(input.attribute("type").value()) == "float" ? "float" : c.type;
+    return in(c, name, type, splat(fallback, widthOf(type)));
+  }
+
+  // A literal that must be given as a value: an op option the graph needs at compile time.
+  std::optional<double> literalInput(const Context& c, const char* name, double fallback) {
+    Value v = in(c, name, "float", fallback);
+    if (v.isLiteral()) return v.literal.get<double>();
+    schemaError(childInput(c.node, name), "input '" + std::string(name) + "' of node '" + quoteUserText(nameOf(c.node)) + "'",
+                "a value", "a connection", "float");
+    return std::nullopt;
+  }
+
+  Value constant(const Context& c) { return own(c, "value", 0); }
+
+  Value binary(const Context& c) {
+    std::string op = c.node.name();
+    double identity = op == "multiply" || op == "divide" ? 1 : 0;
+    Value a = own(c, "in1", identity), b = inEither(c, "in2", identity);
+    return node(c.id, op.c_str(), {{"a", a.input()}, {"b", b.input()}}, c.type);
+  }
+
+  Value power(const Context& c) {
+    Value a = own(c, "in1", 0), b = inEither(c, "in2", 1);
+    return node(c.id, "pow", {{"base", a.input()}, {"exponent", b.input()}}, c.type);
+  }
+
+  Value dotProduct(const Context& c) {
+    Value a = declared(c, "in1", "vector3"), b = in(c, "in2", a.type, splat(0, widthOf(a.type)));
+    return node(c.id, "dot", {{"a", a.input()}, {"b", b.input()}}, "float");
+  }
+
+  Value mix(const Context& c) {
+    Value fg = own(c, "fg", 0), bg = own(c, "bg", 0);
+    Value t = inEither(c, "mix", 0);
+    return node(c.id, "lerp", {{"a", bg.input()}, {"b", fg.input()}, {"t", t.input()}}, c.type);
+  }
+
+  Value clamp(const Context& c) {
+    Value x = own(c, "in", 0);
+    Value low = inEither(c, "low", 0), high = inEither(c, "high", 1);
+    return node(c.id, "clamp", {{"x", x.input()}, {"low", low.input()}, {"high", high.input()}}, c.type);
+  }
+
+  Value unary(const Context& c) {
+    std::string op = c.node.name();
+    Value x = own(c, "in", 0);
+    return node(c.id, op == "absval" ? "abs" : op.c_str(), {{"in", x.input()}}, c.type);
+  }
+
+  Value invert(const Context& c) {
+    Value x = own(c, "in", 0), amount = inEither(c, "amount", 1);
+    return node(c.id, "subtract", {{"a", amount.input()}, {"b", x.input()}}, c.type);
+  }
+
+  // convert: float to any width (splatted), colour <-> vector of one width, 3 <-> 4 (alpha 1), 2 <-> 3 (z 0).
+  Value convert(const Context& c) {
+    Value x = declared(c, "in", "float");
+    int a = widthOf(x.type), b = widthOf(c.type);
+    if (x.type == "boolean") return node(c.id, "select", {{"condition", x.input()}, {"ifTrue", 1.0}, {"ifFalse", 0.0}}, c.type);
+    if (a == b) return {x.literal, x.link, c.type};
+    if (a == 1) return node(c.id, "multiply", {{"a", x.input()}, {"b", splat(1, b)}}, c.type);
+    if (b < a) return swizzle(c.id, x, std::string("xyzw").substr(0, b), c.type);
+    Json parts;
+    const char* names[] = {"x", "y", "z", "w"};
+    for (int i = 0; i < b; ++i)
+      parts[names[i]] = i < a ? swizzle(c.id + "_" + names[i], x, names[i], "float").input() : Json(b == 4 && i == 3 ? 1.0 : 0.0);
+    return node(c.id, b == 3 ? "combine3" : "combine4", parts, c.type);
+  }
+
+  Value swizzleNode(const Context& c) {
+    Value x = declared(c, "in", "float");
+    const std::string& from = x.type;
+    std::string channels = childInput(c.node, "channels").attribute("value").value(), mapped;
+    for (char ch : channels) {
+      std::size_t at = std::string_view("rgbaxyzw").find(ch);
+      if (at == std::string::npos || static_cast<int>(at % 4) >= widthOf(from))
+        return schemaError(c.node, "the channels of swizzle '" + quoteUserText(nameOf(c.node)) + "'",
+                           "1 to 4 of the input's channels (rgba or xyzw)", "'" + quoteUserText(channels) + "'", c.type);
+      mapped += "xyzw"[at % 4];
+    }
+    if (static_cast<int>(mapped.size()) != widthOf(c.type))
+      return schemaError(c.node, "the channel count of swizzle '" + quoteUserText(nameOf(c.node)) + "'",
+                         std::to_string(widthOf(c.type)) + " for type " + c.type, std::to_string(mapped.size()), c.type);
+    return swizzle(c.id, x, mapped, c.type);
+  }
+
+  Value extract(const Context& c) {
+    Value x = declared(c, "in", "vector3");
+    const std::string& from = x.type;
+    Value index = in(c, "index", "integer", 0.0);
+    int i = index.isLiteral() ? static_cast<int>(index.literal.get<double>()) : -1;
+    if (i < 0 || i >= widthOf(from))
+      return schemaError(c.node, "the index of extract '" + quoteUserText(nameOf(c.node)) + "'",
+                         "a value from 0 to " + std::to_string(widthOf(from) - 1), index.isLiteral() ? index.literal.dump() : "a connection", "float");
+    return swizzle(c.id, x, std::string(1, "xyzw"[i]), "float");
+  }
+
+  // separate2/3/4: outputs outx.. or outr..
+  Value separate(const Context& c, const std::string& output) {
+    Value x = declared(c, "in", "vector3");
+    const std::string& from = x.type;
+    std::size_t at = output.size() == 4 && output.starts_with("out") ? std::string_view("rgbaxyzw").find(output[3]) : std::string::npos;
+    if (at == std::string::npos || static_cast<int>(at % 4) >= widthOf(from))
+      return schemaError(c.node, "the output of " + std::string(c.node.name()) + " '" + quoteUserText(nameOf(c.node)) + "'",
+                         "outr, outg, outb, outa or outx, outy, outz, outw", "'" + quoteUserText(output) + "'", "float");
+    return swizzle(c.id + "_" + output, x, std::string(1, "xyzw"[at % 4]), "float");
+  }
+
+  Value combine(const Context& c) {
+    int width = widthOf(c.type);
+    Json parts;
+    const char* names[] = {"x", "y", "z", "w"};
+    const char* inputs[] = {"in1", "in2", "in3", "in4"};
+    for (int i = 0; i < width; ++i) parts[names[i]] = in(c, inputs[i], "float", 0.0).input();
+    return node(c.id, width == 2 ? "combine2" : width == 3 ? "combine3" : "combine4", parts, c.type);
+  }
+
+  Value texcoord(const Context& c) {
+    Value index = in(c, "index", "integer", 0.0);
+    int set = index.isLiteral() ? static_cast<int>(index.literal.get<double>()) : 0;
+    if (set > 1) warnAdjusted(c.node, "texcoord '" + quoteUserText(nameOf(c.node)) + "' reads set " + std::to_string(set) + "; set 0 is read",
+                              "the graph has texture coordinate sets 0 and 1");
+    Value uv = flippedV(c.id, node(c.id + "_mesh", set == 1 ? "texcoord1" : "texcoord", Json::object(), "vector2"));
+    if (c.type == "vector3") return node(c.id + "_3", "combine3", {{"x", swizzle(c.id + "_x", uv, "x", "float").input()},
+                                                                    {"y", swizzle(c.id + "_y", uv, "y", "float").input()}, {"z", 0.0}}, c.type);
+    return uv;
+  }
+
+  Value geometry(const Context& c) {
+    std::string space = childInput(c.node, "space").attribute("value").value();
+    if (space != "world")
+      warnAdjusted(c.node, std::string(c.node.name()) + " '" + quoteUserText(nameOf(c.node)) + "' is in " +
+                               (space.empty() ? "object" : quoteUserText(space)) + " space; the graph reads world space",
+                   "the graph knows world space only; it equals object space for an object at the origin, unrotated and unscaled");
+    bool position = std::string_view(c.node.name()) == "position";
+    return node(c.id, position ? "world_position" : "world_normal", Json::object(), "vector3");
+  }
+
+  // --- images ---
+
+  // The nearest fileprefix or colorspace: on the element or its closest ancestor.
+  static std::string inherited(pugi::xml_node node, const char* attribute) {
+    for (; node; node = node.parent())
+      if (pugi::xml_attribute a = node.attribute(attribute)) return a.value();
+    return "";
+  }
+
+  std::string addressMode(const Context& c, const char* name, const char* fallback) {
+    pugi::xml_node input = childInput(c.node, name);
+    std::string mode = input ? input.attribute("value").value() : fallback;
+    if (mode == "periodic") return "repeat";
+    if (mode == "mirror") return "mirror";
+    if (mode != "clamp")
+      warnAdjusted(input, "address mode '" + quoteUserText(mode) + "' of image '" + quoteUserText(nameOf(c.node)) + "' is read as clamp",
+                   "the graph's wrap modes are repeat, clamp and mirror");
+    return "clamp";
+  }
+
+  std::string textureColorSpace(pugi::xml_node file, const std::string& type) {
+    std::string space = inherited(file, "colorspace");
+    if (type != "color3" && type != "color4") return "linear";
+    if (space == "srgb_texture") return "srgb";
+    if (!space.empty() && space != "lin_rec709")
+      warnAdjusted(file, "colour space '" + quoteUserText(space) + "' is read as lin_rec709",
+                   "the graph reads srgb_texture and lin_rec709; convert the image to one of them");
+    return "linear";
+  }
+
+  Value image(const Context& c) {
+    std::string category = c.node.name();
+    pugi::xml_node file = childInput(c.node, "file");
+    if (!file || !file.attribute("value"))
+      return schemaError(c.node, "image '" + quoteUserText(nameOf(c.node)) + "'", "a file input with a value", "none", c.type);
+    if (category == "hextiledimage")
+      warnAdjusted(c.node, "hextiledimage '" + quoteUserText(nameOf(c.node)) + "' is read as a plain tiled image",
+                   "the graph has no hexagonal tiling; tiling repeats may show");
+    auto written = images_(file, inherited(file, "fileprefix") + file.attribute("value").value());
+    if (!written) {
+      failed_ = true;
+      return failedValue(c.type);
+    }
+    Json texture{{"file", *written}, {"colorSpace", textureColorSpace(file, c.type)}};
+    std::string u = addressMode(c, "uaddressmode", "periodic"), v = addressMode(c, "vaddressmode", "periodic");
+    texture["wrap"] = u == v ? Json(u) : Json::array({u, v});
+    texture["filter"] = std::string(childInput(c.node, "filtertype").attribute("value").value()) == "closest" ? "nearest" : "linear";
+    std::string name = textureName(texture);
+    Value uv = textureCoordinate(c, category);
+    Value texel = node(c.id, "sample", {{"texture", name}, {"uv", flippedV(c.id + "_uv", uv).input()}}, "color4", "rgba");
+    std::string base = texel.link.substr(0, texel.link.rfind('.') + 1);
+    int width = widthOf(c.type);
+    if (width == 1) return {Json(), base + "r", c.type};
+    if (width == 3) return {Json(), base + "rgb", c.type};
+    if (width == 4) return {Json(), base + "rgba", c.type};
+    return swizzle(c.id + "_rg", texel, "xy", c.type);
+  }
+
+  // One texture per distinct file and sampler.
+  std::string textureName(const Json& texture) {
+    for (const auto& [name, declared] : textures_.items())
+      if (declared == texture) return name;
+    std::string name = "image" + std::to_string(textures_.size());
+    textures_[name] = texture;
+    return name;
+  }
+
+  // image: texcoord; tiledimage: texcoord x uvtiling - uvoffset; hextiledimage: texcoord x tiling.
+  Value textureCoordinate(const Context& c, const std::string& category) {
+    Value uv = childInput(c.node, "texcoord") ? in(c, "texcoord", "vector2", Json()) : defaultTexcoord(c.id + "_texcoord");
+    if (category == "image") return uv;
+    const char* tiling = category == "tiledimage" ? "uvtiling" : "tiling";
+    Value scale = in(c, tiling, "vector2", Json::array({1.0, 1.0}));
+    Value scaled = node(c.id + "_tiled", "multiply", {{"a", uv.input()}, {"b", scale.input()}}, "vector2");
+    if (category != "tiledimage" || !childInput(c.node, "uvoffset")) return scaled;
+    Value offset = in(c, "uvoffset", "vector2", Json::array({0.0, 0.0}));
+    return node(c.id + "_offset", "subtract", {{"a", scaled.input()}, {"b", offset.input()}}, "vector2");
+  }
+
+  // place2d, in MaterialX's order: (uv - pivot) / scale, rotated clockwise by `rotate`
+  // degrees, minus offset, plus pivot.
+  Value place2d(const Context& c) {
+    Value uv = childInput(c.node, "texcoord") ? in(c, "texcoord", "vector2", Json()) : defaultTexcoord(c.id + "_texcoord");
+    Value pivot = in(c, "pivot", "vector2", Json::array({0.0, 0.0})), scale = in(c, "scale", "vector2", Json::array({1.0, 1.0}));
+    Value offset = in(c, "offset", "vector2", Json::array({0.0, 0.0}));
+    auto degrees = literalInput(c, "rotate", 0);
+    if (!degrees) return failedValue("vector2");
+    Value centred = node(c.id + "_pivot", "subtract", {{"a", uv.input()}, {"b", pivot.input()}}, "vector2");
+    Value placed = node(c.id + "_scale", "divide", {{"a", centred.input()}, {"b", scale.input()}}, "vector2");
+    if (*degrees != 0) {
+      double a = *degrees * 3.14159265358979323846 / 180, cs = rounded(std::cos(a)), sn = rounded(std::sin(a));
+      Value x = node(c.id + "_rotx", "dot", {{"a", placed.input()}, {"b", Json::array({cs, sn})}}, "float");
+      Value y = node(c.id + "_roty", "dot", {{"a", placed.input()}, {"b", Json::array({-sn, cs})}}, "float");
+      placed = node(c.id + "_rotate", "combine2", {{"x", x.input()}, {"y", y.input()}}, "vector2");
+    }
+    Value moved = node(c.id + "_offset", "subtract", {{"a", placed.input()}, {"b", offset.input()}}, "vector2");
+    return node(c.id, "add", {{"a", moved.input()}, {"b", pivot.input()}}, "vector2");
+  }
+
+  Value defaultTexcoord(const std::string& id) { return flippedV(id, node(id + "_mesh", "texcoord", Json::object(), "vector2")); }
+
+  Value normalMap(const Context& c) {
+    Value texel = in(c, "in", "vector3", Json::array({0.5, 0.5, 1.0}));
+    auto scale = literalInput(c, "scale", 1.0);
+    if (!scale) return failedValue("vector3");
+    double strength = std::clamp(*scale, -16.0, 16.0);
+    if (strength != *scale)
+      warnAdjusted(c.node, "the scale of normalmap '" + quoteUserText(nameOf(c.node)) + "' is clamped to [-16, 16]",
+                   "normal_unpack takes strengths in that range");
+    Value n = node(c.id, "normal_unpack", {{"rgb", texel.input()}, {"strength", strength}}, "vector3");
+    n.tangentNormal = true;
+    return n;
+  }
+
+  // --- noise: the graph's 2D gradient noise, signed as MaterialX's is ---
+
+  Value signedNoise(const std::string& id, const Value& p) {
+    Value g = node(id, "gradient_noise", {{"p", p.input()}}, "float");
+    return node(id + "_signed", "remap", {{"x", g.input()}, {"outLow", -1.0}, {"outHigh", 1.0}}, "float");
+  }
+
+  // 3D noise as the mean of 2D noise on the xy, yz and zx planes (offset apart).
+  Value signedNoise3(const std::string& id, const Value& p) {
+    const std::pair<const char*, Json> planes[] = {{"xy", Json::array({0.0, 0.0})}, {"yz", Json::array({31.7, 11.3})},
+                                                   {"zx", Json::array({7.1, 53.9})}};
+    Json sum;
+    for (const auto& [channels, offset] : planes) {
+      Value plane = swizzle(id + "_" + channels, p, channels, "vector2");
+      Value shifted = node(id + "_" + channels + "_at", "add", {{"a", plane.input()}, {"b", offset}}, "vector2");
+      Value n = node(id + "_" + channels + "_noise", "gradient_noise", {{"p", shifted.input()}}, "float");
+      sum = sum.is_null() ? n.input() : node(id + "_" + channels + "_sum", "add", {{"a", sum}, {"b", n.input()}}, "float").input();
+    }
+    Value mean = node(id + "_mean", "multiply", {{"a", sum}, {"b", 1.0 / 3}}, "float");
+    return node(id + "_signed", "remap", {{"x", mean.input()}, {"outLow", -1.0}, {"outHigh", 1.0}}, "float");
+  }
+
+  bool floatOnly(const Context& c) {
+    if (c.type == "float") return true;
+    schemaError(c.node, "the type of " + std::string(c.node.name()) + " '" + quoteUserText(nameOf(c.node)) + "'", "float", c.type, "float");
+    return false;
+  }
+
+  // amplitude x noise + pivot
+  Value scaledNoise(const Context& c, const Value& noise) {
+    Value amplitude = in(c, "amplitude", "float", 1.0), pivot = in(c, "pivot", "float", 0.0);
+    Value scaled = node(c.id + "_amplitude", "multiply", {{"a", noise.input()}, {"b", amplitude.input()}}, "float");
+    return node(c.id, "add", {{"a", scaled.input()}, {"b", pivot.input()}}, "float");
+  }
+
+  Value noise2d(const Context& c) {
+    if (!floatOnly(c)) return failedValue("float");
+    Value uv = childInput(c.node, "texcoord") ? in(c, "texcoord", "vector2", Json()) : defaultTexcoord(c.id + "_texcoord");
+    return scaledNoise(c, signedNoise(c.id + "_noise", uv));
+  }
+
+  Value position(const Context& c) {
+    if (childInput(c.node, "position")) return in(c, "position", "vector3", Json());
+    return node(c.id + "_position", "world_position", Json::object(), "vector3");
+  }
+
+  Value noise3d(const Context& c) {
+    if (!floatOnly(c)) return failedValue("float");
+    return scaledNoise(c, signedNoise3(c.id + "_noise", position(c)));
+  }
+
+  // sum over octaves i of diminish^i x noise3d(p x lacunarity^i), x amplitude.
+  Value fractal3d(const Context& c) {
+    if (!floatOnly(c)) return failedValue("float");
+    auto octaves = literalInput(c, "octaves", 3), lacunarity = literalInput(c, "lacunarity", 2), diminish = literalInput(c, "diminish", 0.5);
+    if (!octaves || !lacunarity || !diminish) return failedValue("float");
+    if (*octaves < 1 || *octaves > 8)
+      return schemaError(childInput(c.node, "octaves"), "the octaves of fractal3d '" + quoteUserText(nameOf(c.node)) + "'",
+                         "1 to 8", std::to_string(static_cast<int>(*octaves)), "float");
+    Value p = position(c);
+    Json sum;
+    for (int i = 0; i < static_cast<int>(*octaves); ++i) {
+      std::string octave = c.id + "_octave" + std::to_string(i);
+      Value pi = node(octave + "_p", "multiply", {{"a", p.input()}, {"b", std::pow(*lacunarity, i)}}, "vector3");
+      Value term = node(octave, "multiply", {{"a", signedNoise3(octave + "_noise", pi).input()}, {"b", std::pow(*diminish, i)}}, "float");
+      sum = sum.is_null() ? term.input() : node(octave + "_sum", "add", {{"a", sum}, {"b", term.input()}}, "float").input();
+    }
+    Value amplitude = in(c, "amplitude", "float", 1.0);
+    return node(c.id, "multiply", {{"a", sum}, {"b", amplitude.input()}}, "float");
+  }
+
+  // ifgreater: value1 > value2 ? in1 : in2; ifgreatereq: value1 >= value2 ? in1 : in2.
+  Value ifGreater(const Context& c) {
+    Value a = in(c, "value1", "float", 1.0), b = in(c, "value2", "float", 0.0);
+    Value in1 = own(c, "in1", 0), in2 = own(c, "in2", 0);
+    bool orEqual = std::string_view(c.node.name()) == "ifgreatereq";
+    Value test = node(c.id + "_test", orEqual ? "less" : "greater", {{"a", a.input()}, {"b", b.input()}}, "boolean");
+    return node(c.id, "select", {{"condition", test.input()}, {"ifTrue", (orEqual ? in2 : in1).input()},
+                                 {"ifFalse", (orEqual ? in1 : in2).input()}}, c.type);
+  }
+
+  // Hue, saturation, value without branches: the max channel and the hue's sextant come
+  // from two ordered lerps (the steps pick which channel is larger).
+  Value rgbToHsv(const Context& c) {
+    Value rgb = in(c, "in", c.type, splat(0, 3));
+    auto part = [&](const Value& v, const char* ch) { return swizzle(c.id + "_" + ch, v, ch, "float").input(); };
+    Json r = part(rgb, "x"), g = part(rgb, "y"), b = part(rgb, "z");
+    Value gb = node(c.id + "_gb", "combine4", {{"x", g}, {"y", b}, {"z", 0.0}, {"w", -1.0 / 3}}, "vector4");
+    Value bg = node(c.id + "_bg", "combine4", {{"x", b}, {"y", g}, {"z", -1.0}, {"w", 2.0 / 3}}, "vector4");
+    Value gAboveB = node(c.id + "_gAboveB", "step", {{"edge", b}, {"x", g}}, "float");
+    Value p = node(c.id + "_p", "lerp", {{"a", bg.input()}, {"b", gb.input()}, {"t", gAboveB.input()}}, "vector4");
+    Json px = part(p, "x"), py = part(p, "y"), pz = part(p, "z"), pw = part(p, "w");
+    Value low = node(c.id + "_qlow", "combine4", {{"x", px}, {"y", py}, {"z", pw}, {"w", r}}, "vector4");
+    Value high = node(c.id + "_qhigh", "combine4", {{"x", r}, {"y", py}, {"z", pz}, {"w", px}}, "vector4");
+    Value rAbove = node(c.id + "_rAbove", "step", {{"edge", px}, {"x", r}}, "float");
+    Value q = node(c.id + "_q", "lerp", {{"a", low.input()}, {"b", high.input()}, {"t", rAbove.input()}}, "vector4");
+    Json qx = part(q, "x"), qy = part(q, "y"), qz = part(q, "z"), qw = part(q, "w");
+    Value chroma = node(c.id + "_chroma", "subtract", {{"a", qx}, {"b", node(c.id + "_min", "min", {{"a", qw}, {"b", qy}}, "float").input()}}, "float");
+    constexpr double kTiny = 1e-10;  // keeps grey (chroma 0) and black finite
+    Value span = node(c.id + "_span", "add", {{"a", node(c.id + "_six", "multiply", {{"a", chroma.input()}, {"b", 6.0}}, "float").input()}, {"b", kTiny}}, "float");
+    Value slope = node(c.id + "_slope", "divide", {{"a", node(c.id + "_diff", "subtract", {{"a", qw}, {"b", qy}}, "float").input()}, {"b", span.input()}}, "float");
+    Value hue = node(c.id + "_hue", "abs", {{"in", node(c.id + "_hueSum", "add", {{"a", qz}, {"b", slope.input()}}, "float").input()}}, "float");
+    Value saturation = node(c.id + "_sat", "divide", {{"a", chroma.input()}, {"b", node(c.id + "_value", "add", {{"a", qx}, {"b", kTiny}}, "float").input()}}, "float");
+    return node(c.id, "combine3", {{"x", hue.input()}, {"y", saturation.input()}, {"z", qx}}, c.type);
+  }
+
+  // rgb = v x lerp(1, saturate(|frac(h + (1, 2/3, 1/3)) x 6 - 3| - 1), s)
+  Value hsvToRgb(const Context& c) {
+    Value hsv = in(c, "in", c.type, splat(0, 3));
+    Value h = swizzle(c.id + "_h", hsv, "x", "float"), s = swizzle(c.id + "_s", hsv, "y", "float"), v = swizzle(c.id + "_v", hsv, "z", "float");
+    Value shifted = node(c.id + "_shift", "add", {{"a", h.input()}, {"b", Json::array({1.0, 2.0 / 3, 1.0 / 3})}}, "vector3");
+    Value wrapped = node(c.id + "_frac", "frac", {{"in", shifted.input()}}, "vector3");
+    Value ramp = node(c.id + "_ramp", "remap", {{"x", wrapped.input()}, {"outLow", -3.0}, {"outHigh", 3.0}}, "vector3");
+    Value tent = node(c.id + "_abs", "abs", {{"in", ramp.input()}}, "vector3");
+    Value pure = node(c.id + "_pure", "saturate", {{"in", node(c.id + "_less", "subtract", {{"a", tent.input()}, {"b", 1.0}}, "vector3").input()}}, "vector3");
+    Value tinted = node(c.id + "_tint", "lerp", {{"a", 1.0}, {"b", pure.input()}, {"t", s.input()}}, "vector3");
+    return node(c.id, "multiply", {{"a", tinted.input()}, {"b", v.input()}}, c.type);
+  }
+
+  const Document& doc_;
+  const GraphNaming& naming_;
+  const ImageFiles& images_;
+  DiagnosticList& diags_;
+  pugi::xml_node shader_;
+  const ShadingModel* model_ = nullptr;
+  Json nodes_ = Json::array(), textures_ = Json::object();
+  std::set<std::string> ids_;
+  std::map<std::pair<const void*, std::string>, Value> done_;
+  std::vector<pugi::xml_node> path_;
+  std::set<const void*> failedNodes_;
+  std::string alphaMode_ = "opaque";
+  double alphaCutoff_ = 0.5;
+  bool failed_ = false;
+};
+
+}  // namespace
+
+pugi::xml_node surfaceShader(const Document& document, pugi::xml_node material) {
+  for (pugi::xml_node input : material.children("input"))
+    if (std::string_view(input.attribute("name").value()) == "surfaceshader" && input.attribute("nodename"))
+      return document.topLevel(input.attribute("nodename").value());
+  return {};
+}
+
+std::optional<nlohmann::ordered_json> materialGraph(const Document& document, pugi::xml_node material,
+                                                    const GraphNaming& naming, const ImageFiles& images,
+                                                    DiagnosticList& diagnostics) {
+  return GraphWriter(document, naming, images, diagnostics).build(material);
+}
+
+}  // namespace wg::mtlx
