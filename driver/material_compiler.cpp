@@ -29,12 +29,13 @@ bool isFileSafe(char c) {
 }
 }  // namespace
 
-// Safe names are kept as they are. Any other name is sanitised and marked with its hash
-// after a '.', which no kept name contains, so distinct names never share a stem.
+// Safe names are kept as they are (a name Windows reserves, CON or lpt1, is not safe).
+// Any other name is sanitised and marked with its hash after a '.', which no kept name
+// contains, so distinct names never share a stem.
 std::string fileStemFor(std::string_view name) {
   constexpr std::size_t kMaxStem = 64;
   const bool safe = !name.empty() && name.size() <= kMaxStem &&
-                    std::all_of(name.begin(), name.end(), isFileSafe);
+                    std::all_of(name.begin(), name.end(), isFileSafe) && !isWindowsReservedName(name);
   if (safe) return std::string(name);
   constexpr std::size_t kMaxSanitized = 48;
   std::string out;
@@ -42,6 +43,7 @@ std::string fileStemFor(std::string_view name) {
     if (out.size() >= kMaxSanitized) break;
     out += isFileSafe(c) ? c : '_';
   }
+  if (isWindowsReservedName(out)) out += '_';  // Windows reserves "CON.anything" too
   return (out.empty() ? "material" : out) + "." + nameMark(name);
 }
 

@@ -69,17 +69,21 @@ bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std:
   out.extension = imageExtension(bytes, size);
   int components = 0;
   ImageProblem& problem = ctx.imageErrors[slot];
-  constexpr auto kUnreadable = DiagCode::GltfResource, kTooLarge = DiagCode::GltfInvalidData;
+  constexpr auto kUnreadable = DiagCode::GltfResource, kInvalidData = DiagCode::GltfInvalidData;
   if (out.extension.empty()) problem = {kUnreadable, "it is neither PNG nor JPEG", "store images as PNG or JPEG"};
   else if (!headerSize(bytes, size, out.extension, out.width, out.height, components))
     problem = {kUnreadable, "its header cannot be read", "re-save the image"};
+  else if (out.width < 1 || out.height < 1)
+    problem = {kInvalidData, "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) +
+                                 " pixels; an image has at least 1x1",
+               "re-save the image"};
   else if (out.width > kMaxImageFileDimension || out.height > kMaxImageFileDimension)
-    problem = {kTooLarge,
+    problem = {kInvalidData,
                "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) + " pixels; the limit is " +
                    std::to_string(kMaxImageFileDimension) + " on each side",
                "resize the image to at most 8192 pixels on each side"};
   else if (ctx.imageBytes + static_cast<std::size_t>(size) > kMaxImageBytes)
-    problem = {kTooLarge, "the model's images together exceed the limit of 1 GiB", "make the images smaller or fewer"};
+    problem = {kInvalidData, "the model's images together exceed the limit of 1 GiB", "make the images smaller or fewer"};
   if (!problem.message.empty()) {
     *err += "image " + std::to_string(index) + ": " + problem.message;
     return false;
@@ -193,13 +197,13 @@ bool parseWithTinygltf(Asset& asset, const std::vector<std::uint8_t>& bytes, boo
     return false;
   }
   ctx.images.resize(asset.model.images.size());
-  // tinygltf only warns about an external image it cannot find (and it decodes '+' in
-  // URIs as a space, unlike RFC 3986), so every image must have reached acceptImage.
+  // tinygltf only warns about an external image it cannot find, so every image must
+  // have reached acceptImage.
   for (std::size_t i = 0; i < ctx.images.size(); ++i)
     if (ctx.images[i].bytes.empty()) {
       diags.report(DiagCode::GltfResource, asset.locate(appendPointer("/images", i)),
                    {"image " + std::to_string(i), "it could not be read (" + quoteUserText(warn, 200) + ")",
-                    "check the file beside the model; rename files whose names hold '+'"});
+                    "check the file beside the model"});
       return false;
     }
   asset.images = std::move(ctx.images);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -36,6 +37,7 @@ struct Rule {
   int length = 0;                  // exact NumberArray length; 0: any
   bool required = false;
   std::span<const std::int64_t> allowed = {};  // an Index's only values; empty: any
+  std::size_t minItems = 0;                    // an ObjectArray's fewest elements
 };
 
 using enum Type;
@@ -75,7 +77,7 @@ constexpr std::array kRules = {
     Rule{Node, "scale", K::NumberArray, Opaque, {}, 3},
     Rule{Node, "translation", K::NumberArray, Opaque, {}, 3},
     Rule{Node, "weights", K::NumberArray},
-    Rule{Mesh, "primitives", K::ObjectArray, Primitive, {}, 0, kRequired},
+    Rule{Mesh, "primitives", K::ObjectArray, Primitive, {}, 0, kRequired, {}, 1},
     Rule{Mesh, "weights", K::NumberArray},
     Rule{Primitive, "attributes", K::IndexMap, Opaque, "accessors", 0, kRequired},
     Rule{Primitive, "indices", K::Index, Opaque, "accessors"},
@@ -138,6 +140,14 @@ Type extensionType(std::string_view name) {
   return Opaque;
 }
 
+// Every number the importer reads becomes a float (a factor, a transform, a graph
+// literal), so a number beyond float's range is refused here, not by the next compile.
+constexpr std::string_view kFloatNumber = "a number within float range (at most 3.4e38 in size)";
+
+bool isFloatNumber(const nlohmann::json& j) {
+  return j.is_number() && std::abs(j.get<double>()) <= std::numeric_limits<float>::max();
+}
+
 // tinygltf stores indices, counts and enums in int; larger values would wrap.
 bool isIndex(const nlohmann::json& j) {
   constexpr std::int64_t kLargest = std::numeric_limits<std::int32_t>::max();
@@ -154,14 +164,14 @@ std::string oneOf(std::span<const std::int64_t> values) {
 std::string expected(const Rule& r) {
   switch (r.kind) {
     case K::Index: return r.allowed.empty() ? "an integer from 0 to 2147483647" : oneOf(r.allowed);
-    case K::Number: return "a number";
+    case K::Number: return std::string(kFloatNumber);
     case K::String: return "a string";
     case K::Bool: return "true or false";
     case K::Object: return "an object";
     case K::IndexArray: return "an array of integers from 0 to 2147483647";
-    case K::NumberArray: return "an array of numbers";
+    case K::NumberArray: return "an array of numbers within float range (at most 3.4e38 in size)";
     case K::StringArray: return "an array of strings";
-    case K::ObjectArray: return "an array of objects";
+    case K::ObjectArray: return r.minItems ? "an array of at least " + std::to_string(r.minItems) + " object(s)" : "an array of objects";
     case K::IndexMap: return "an object of integers from 0 to 2147483647";
   }
   return "";
@@ -178,16 +188,15 @@ bool hasKind(const nlohmann::json& j, const Rule& r) {
   switch (r.kind) {
     case K::Index:
       return isIndex(j) && (r.allowed.empty() || std::find(r.allowed.begin(), r.allowed.end(), j.get<std::int64_t>()) != r.allowed.end());
-    case K::Number: return j.is_number();
+    case K::Number: return isFloatNumber(j);
     case K::String: return j.is_string();
     case K::Bool: return j.is_boolean();
     case K::Object: return j.is_object();
     case K::IndexArray: return allOf(j, isIndex);
     case K::NumberArray:
-      return allOf(j, [](const nlohmann::json& e) { return e.is_number(); }) &&
-             (r.length == 0 || j.size() == static_cast<std::size_t>(r.length));
+      return allOf(j, isFloatNumber) && (r.length == 0 || j.size() == static_cast<std::size_t>(r.length));
     case K::StringArray: return allOf(j, [](const nlohmann::json& e) { return e.is_string(); });
-    case K::ObjectArray: return allOf(j, [](const nlohmann::json& e) { return e.is_object(); });
+    case K::ObjectArray: return allOf(j, [](const nlohmann::json& e) { return e.is_object(); }) && j.size() >= r.minItems;
     case K::IndexMap:
       if (!j.is_object()) return false;
       for (const auto& [k, v] : j.items())
@@ -207,6 +216,7 @@ class SchemaChecker {
       return false;
     }
     checkObject(doc_.root(), Root, "");
+    if (ok_) checkVersion();
     return ok_;
   }
 
@@ -222,8 +232,10 @@ class SchemaChecker {
       }
       if (!hasKind(*it, r)) {
         std::string shape = r.length ? expected(r) + " of length " + std::to_string(r.length) : expected(r);
-        std::string got = it->is_number() ? it->dump() : describeJsonKind(*it);
-        fail(DiagCode::GltfSchema, at, {shown(at), shape, got});
+        std::string where = at;
+        std::string got = actual(*it, where);
+        if (where != at) shape = kFloatNumber;  // one element of the array
+        fail(DiagCode::GltfSchema, where, {shown(where), shape, got});
         continue;
       }
       checkReferences(*it, r, at);
@@ -231,6 +243,15 @@ class SchemaChecker {
     }
     checkName(j, type, pointer);
     checkExtensions(j, pointer);
+  }
+
+  // glTF 1.0 and any later major version differ in layout; only 2.x ("2.0", "2.1") is read.
+  void checkVersion() {
+    const std::string version = doc_.root()["asset"]["version"].get<std::string>();
+    const bool digitsAfter = version.size() > 2 && std::all_of(version.begin() + 2, version.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (version.starts_with("2.") && digitsAfter) return;
+    fail(DiagCode::GltfContainer, "/asset/version",
+         {"'/asset/version' is '" + quoteUserText(version, 40) + "'", "re-export the model as glTF 2.0"});
   }
 
   // Every glTF object but the root may carry a user-facing name.
@@ -281,6 +302,20 @@ class SchemaChecker {
          {shown(at) + " is " + std::to_string(value) + ", but the file has " + std::to_string(size) + " '" + std::string(collection) + "'",
           size ? "use an index from 0 to " + std::to_string(size - 1) + ", or re-export the model"
                : "the file has no '" + std::string(collection) + "'; remove the reference or re-export the model"});
+  }
+
+  // What the file holds, for the message; an array of numbers points `at` its first
+  // number beyond float range, if that is what is wrong with it.
+  static std::string actual(const nlohmann::json& j, std::string& at) {
+    if (j.is_number()) return j.dump();
+    if (!j.is_array()) return describeJsonKind(j);
+    if (j.empty()) return "an empty array";
+    for (std::size_t i = 0; i < j.size(); ++i)
+      if (j[i].is_number() && !isFloatNumber(j[i])) {
+        at = appendPointer(at, i);
+        return j[i].dump();
+      }
+    return describeJsonKind(j);
   }
 
   static std::string shown(const std::string& pointer) { return quoteUserText(pointer, 200); }

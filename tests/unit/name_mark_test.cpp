@@ -48,5 +48,17 @@ TEST(NameMark, MarksAreShortHexOfTheExactBytes) {
   EXPECT_FALSE(endsWithNameMark("abc.hxyz", '.'));
 }
 
+// "CON.reflect.json" cannot be made on Windows, whatever follows the dot.
+TEST(NameMark, NamesWindowsReservesAreMarked) {
+  for (const char* name : {"CON", "con", "Prn", "AUX", "nul", "COM1", "com9", "LPT1", "lpt9", "con.txt"})
+    EXPECT_TRUE(isWindowsReservedName(name)) << name;
+  for (const char* name : {"CONS", "COM0", "COM10", "LPT", "icon", "NUL_", "rock"})
+    EXPECT_FALSE(isWindowsReservedName(name)) << name;
+  const std::string stem = fileStemFor("CON");
+  EXPECT_TRUE(endsWithNameMark(stem, '.')) << stem;
+  EXPECT_FALSE(isWindowsReservedName(stem)) << stem;
+  EXPECT_NE(fileStemFor("con"), stem);
+}
+
 }  // namespace
 }  // namespace wg
