@@ -34,8 +34,8 @@ std::string locatedTimelineError(const JsonDocument& document, const std::string
   std::string pointer;
   if (!error.empty() && error.front() == '/') pointer = error.substr(0, error.find(':'));
   const SourceLocation at = document.locate(pointer);
-  return quoteUserText(at.file) + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
-         quoteUserText(error);
+  return quoteUserText(at.file, 300) + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
+         quoteUserText(error, 400);
 }
 
 // Read as graphs are: regular file, size limit, duplicate keys and depth refused.
@@ -83,6 +83,7 @@ std::string makeRenderPlan(const RenderOptions& o, const scene::Scene& scene, Re
   plan.step = o.step;
   plan.output = o.output;
   plan.framesDir = o.framesDir;
+  plan.timelinePath = o.timelinePath;
   plan.aov = o.aov;
   plan.progress = !o.quiet && ::isatty(STDERR_FILENO);
   if (std::string e = applyCamera(o, scene, plan.request); !e.empty()) return e;

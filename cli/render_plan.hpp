@@ -16,6 +16,7 @@ struct RenderPlan {
   RenderRequest request;
   unsigned samples = kDefaultColourSamples;  // the lit pass's MSAA
   std::optional<WeatherTimeline> timeline;
+  std::string timelinePath;  // names the timeline in its errors
   double step = 300.0;
   std::string output, framesDir, aov;
   bool progress = false;  // lines on stderr

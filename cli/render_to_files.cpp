@@ -57,8 +57,8 @@ std::string checkSheetSize(const std::vector<TimelineFrame>& stages, const std::
   const long long stripWidth = static_cast<long long>(stages.size()) * (width + image::kStripGap) - image::kStripGap;
   const long long largest = std::max({static_cast<long long>(sheet.width), static_cast<long long>(sheet.height), stripWidth});
   if (largest <= image::kMaxPngDimension) return "";
-  return "the timeline has " + std::to_string(stages.size()) + " stages; at " + std::to_string(width) + "x" +
-         std::to_string(height) + " its contact sheet would be " + std::to_string(sheet.width) + "x" +
+  return "timeline '" + quoteUserText(plan.timelinePath) + "' has " + std::to_string(stages.size()) + " stages; at " +
+         std::to_string(width) + "x" + std::to_string(height) + " its contact sheet would be " + std::to_string(sheet.width) + "x" +
          std::to_string(sheet.height) + " and its strip " + std::to_string(stripWidth) +
          " pixels wide, over the limit of " + std::to_string(image::kMaxPngDimension) +
          " on a side; give the timeline fewer stages (keyframes sharing a label are one stage) or render with a smaller --size";

@@ -27,15 +27,8 @@ std::string slugOf(const std::string& label) {
 
 std::vector<TimelineFrame> planTimeline(const WeatherTimeline& timeline, const RenderRequest& base, double step) {
   const auto& keys = timeline.keys;
-  // A stage is a run of consecutive keyframes with the same label (a held plateau);
-  // its frame shows the state at the end of the run. Unlabelled keyframes are stages
-  // of their own.
-  std::vector<std::pair<std::size_t, std::size_t>> runs;  // first and last keyframe
-  for (std::size_t k = 0; k < keys.size(); ++k)
-    if (!runs.empty() && !keys[k].label.empty() && keys[k].label == keys[runs.back().second].label)
-      runs.back().second = k;
-    else
-      runs.push_back({k, k});
+  // A stage's frame shows the state at the end of its run of keyframes.
+  const auto runs = timelineStages(timeline);
   double start = keys.front().time;
   double lastRunLength = keys[runs.back().second].time - keys[runs.back().first].time;
   double lastGap = keys.size() > 1 ? keys.back().time - keys[keys.size() - 2].time : 6 * 3600.0;

@@ -95,10 +95,31 @@ double WeatherTimeline::duration() const {
   return keys.size() < 2 ? 0.0 : keys.back().time - keys.front().time;
 }
 
+std::vector<std::pair<std::size_t, std::size_t>> timelineStages(const WeatherTimeline& timeline) {
+  const auto& keys = timeline.keys;
+  std::vector<std::pair<std::size_t, std::size_t>> stages;
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    if (!stages.empty() && !keys[k].label.empty() && keys[k].label == keys[stages.back().second].label)
+      stages.back().second = k;
+    else
+      stages.push_back({k, k});
+  return stages;
+}
+
 std::string validate(const WeatherTimeline& timeline) {
   if (timeline.keys.empty()) return "/keyframes: needs at least one keyframe";
+  if (timeline.keys.size() > kMaxTimelineKeyframes)
+    return keyPointer(kMaxTimelineKeyframes) + ": the timeline has " + std::to_string(timeline.keys.size()) +
+           " keyframes; the limit is " + std::to_string(kMaxTimelineKeyframes) + ", so split it or drop keyframes";
+  if (const auto stages = timelineStages(timeline); stages.size() > kMaxTimelineStages)
+    return keyPointer(stages[kMaxTimelineStages].first) + ": the timeline has " + std::to_string(stages.size()) +
+           " stages; the limit is " + std::to_string(kMaxTimelineStages) +
+           " (keyframes in a row with one label are one stage), so give neighbouring keyframes one label or split the timeline";
   for (std::size_t i = 0; i < timeline.keys.size(); ++i) {
     const WeatherKeyframe& k = timeline.keys[i];
+    if (k.label.size() > kMaxTimelineLabelBytes)
+      return keyPointer(i) + "/label: " + std::to_string(k.label.size()) + " bytes long; the limit is " +
+             std::to_string(kMaxTimelineLabelBytes) + ", so shorten the label";
     if (!std::isfinite(k.time)) return keyPointer(i) + "/time: not a finite number";
     if (i > 0 && !(k.time > timeline.keys[i - 1].time)) {
       return keyPointer(i) + "/time: must be greater than the previous keyframe's time (" +

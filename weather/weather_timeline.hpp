@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "weather/weather_simulation.hpp"
@@ -33,9 +34,22 @@ struct WeatherTimeline {
   double duration() const;
 };
 
-// "" when the timeline has at least one keyframe, finite strictly increasing times and
-// every keyframe's conditions pass validate(); otherwise the first problem, prefixed
-// with its JSON pointer ("/keyframes/2: precipitation = 2 is outside [0, 1]").
+// A timeline's limits. Each keyframe is interpolated by a linear scan at every
+// simulation step, a stage is one picture of a render's contact sheet and strip, and a
+// label is printed in its stage's caption.
+inline constexpr std::size_t kMaxTimelineKeyframes = 256;
+inline constexpr std::size_t kMaxTimelineStages = 64;
+inline constexpr std::size_t kMaxTimelineLabelBytes = 64;
+
+// The stages: runs of consecutive keyframes with the same label (a held plateau), as
+// the first and last keyframe of each. An unlabelled keyframe is a stage of its own.
+std::vector<std::pair<std::size_t, std::size_t>> timelineStages(const WeatherTimeline& timeline);
+
+// "" when the timeline has 1 to kMaxTimelineKeyframes keyframes in at most
+// kMaxTimelineStages stages, finite strictly increasing times, labels of at most
+// kMaxTimelineLabelBytes and every keyframe's conditions pass validate(); otherwise the
+// first problem, prefixed with its JSON pointer ("/keyframes/2: precipitation = 2 is
+// outside [0, 1]").
 std::string validate(const WeatherTimeline& timeline);
 
 // Most steps simulateTimeline takes (bounds the history it allocates).

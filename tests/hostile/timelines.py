@@ -26,9 +26,25 @@ class Timelines(HostileCase):
 
     def test_300_stages_are_refused_before_rendering(self):
         start = time.monotonic()
-        r = self.render(hs.timeline(300), 2, "300 stages", size="64x64")
+        r = self.render(hs.timeline(300), 2, "300 keyframes", "t.json:", "/keyframes/256", size="64x64")
         # Rendering 300 stages takes tens of seconds; refusing them, a Vulkan start-up.
         self.assertLess(time.monotonic() - start, 10 * hs.time_scale(), "the limit was checked after rendering")
+
+    # Limits named with the file, line and pointer (docs/weather-simulation.md): 256
+    # keyframes, 64 stages, labels of 64 bytes. A 10,000-character label used to give a
+    # contact sheet 120184 pixels wide, and 300 keyframes a WG9001 without the file.
+    def test_timeline_limits_name_the_file_and_pointer(self):
+        self.render(hs.timeline(100), 2, "100 stages", "t.json:", "/keyframes/64")
+        self.render(hs.timeline(50, keys_per_stage=6), 2, "300 keyframes", "t.json:", "/keyframes/256")
+        long_label = {"keyframes": [{"time": 0, "temperature": 5, "precipitation": 0, "label": "x" * 10000}]}
+        self.render(long_label, 2, "t.json:", "/keyframes/0/label", "10000 bytes")
+
+    def test_timelines_at_the_limits_are_accepted(self):
+        tl = hs.timeline(2, keys_per_stage=128)
+        tl["keyframes"][0]["label"] = "y" * 64
+        t = self.write("t.json", tl)
+        r = run_cli(["render", "--scene", "valley", "--size", "16x16", "--timeline", t, "-o", self.path("x.png")], vulkan=True)
+        self.assertSucceeds(r)
 
     def test_the_timeline_is_a_directory(self):
         self.failsUnchanged(["render", "--scene", "valley", "--size", "32x32", "--timeline", ".", "-o", "x.png"],
