@@ -1,7 +1,7 @@
 // All-or-nothing output: files are written into a private staging folder inside the
 // output directory (created exclusively, so nothing planted there is followed), and
-// only when every one of them is written are they renamed into place. A failed run
-// leaves the output directory as it was.
+// only when every one of them is written and synced to disk are they renamed into
+// place. A failed run leaves the output directory as it was.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -23,6 +23,7 @@ class StagedDirectory {
 
  private:
   std::string ensureStaging();
+  std::string syncStaged();
   std::filesystem::path directory_, staging_;
   std::vector<std::string> names_;
   std::vector<std::filesystem::path> created_;  // folders this run made, deepest last
