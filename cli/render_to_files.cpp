@@ -8,6 +8,7 @@
 #include "cli/diagnostic_output.hpp"
 #include "compiler/literal.hpp"
 #include "host/display_image.hpp"
+#include "host/frame_target_plan.hpp"
 #include "host/image/contact_sheet.hpp"
 #include "host/image/png_file.hpp"
 #include "host/material_compile_error.hpp"
@@ -92,12 +93,22 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
   return kExitOk;
 }
 
+// The MSAA samples the frame's targets fit at, or 0 after saying why none fits.
+unsigned samplesThatFit(const vk::Context& ctx, const RenderPlan& plan) {
+  const FrameTargetPlan targets = planFrameTargets(plan.request.width, plan.request.height, plan.samples, frameLimits(ctx));
+  if (targets.samples == 0) std::fprintf(stderr, "weathergen: error: %s\n", targets.note.c_str());
+  else if (!targets.note.empty()) std::fprintf(stderr, "weathergen: note: %s\n", targets.note.c_str());
+  return targets.samples;
+}
+
 }  // namespace
 
 RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPlan& plan, const std::string& graphsDir) {
   RenderedFiles result;
+  const unsigned samples = samplesThatFit(ctx, plan);
+  if (samples == 0) return {kExitBadInput, {}};
   try {
-    SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(plan.samples));
+    SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(samples));
     result.exitCode = plan.timeline ? renderTimelineSheet(renderer, ctx, plan) : renderOneFrame(renderer, ctx, plan);
     if (result.exitCode == kExitOk) result.materialInputs = renderer.materialInputFiles();
   } catch (const MaterialCompileError& e) {

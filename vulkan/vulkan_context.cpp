@@ -223,6 +223,19 @@ std::unique_ptr<Context> Context::borrow(VkPhysicalDevice physical, VkDevice dev
   return ctx;
 }
 
+Context::MemoryLimits Context::memoryLimits() const {
+  VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  properties.pNext = &maintenance3;
+  vkGetPhysicalDeviceProperties2(physical_, &properties);
+  MemoryLimits limits;
+  limits.largestAllocation = maintenance3.maxMemoryAllocationSize;
+  for (std::uint32_t i = 0; i < memory_.memoryHeapCount; ++i)
+    if (memory_.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      limits.deviceLocalHeap = std::max(limits.deviceLocalHeap, memory_.memoryHeaps[i].size);
+  return limits;
+}
+
 std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags flags) const {
   for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i)
     if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & flags) == flags) return i;

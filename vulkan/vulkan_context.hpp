@@ -54,6 +54,13 @@ class Context {
   const std::vector<std::string>& validationMessages() const { return messages_; }
   void clearValidationMessages() { messages_.clear(); }
 
+  // The most bytes one allocation may hold (maxMemoryAllocationSize) and the size of
+  // the largest device-local heap, for callers that size large images before allocating.
+  struct MemoryLimits {
+    VkDeviceSize largestAllocation = 0, deviceLocalHeap = 0;
+  };
+  MemoryLimits memoryLimits() const;
+
   // Memory type with all of `flags` among `typeBits`; UINT32_MAX when none.
   std::uint32_t findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags flags) const;
 
