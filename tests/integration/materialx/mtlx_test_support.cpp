@@ -29,8 +29,8 @@ std::vector<std::string> codesOf(const nlohmann::json& diagnostics) {
   return codes;
 }
 
-nlohmann::json evalOutputs(const fs::path& graph, const std::string& at, const std::string& extra) {
-  CommandResult run = runCommand(shellQuote(WG_CLI_PATH) + " eval " + shellQuote(graph.string()) + " --weather-preset none" +
+nlohmann::json evalOutputs(const fs::path& graph, const std::string& at, const std::string& extra, const std::string& preset) {
+  CommandResult run = runCommand(shellQuote(WG_CLI_PATH) + " eval " + shellQuote(graph.string()) + " --weather-preset " + preset +
                                  (at.empty() ? "" : " --at " + at) + " " + extra + " 2>&1");
   EXPECT_EQ(run.exitCode, 0) << run.output;
   auto json = nlohmann::json::parse(run.output, nullptr, false);

@@ -24,9 +24,10 @@ ImportResult importDocument(const std::filesystem::path& document, const std::fi
 // The codes of the diagnostics, sorted, e.g. {"WG5203"}.
 std::vector<std::string> codesOf(const nlohmann::json& diagnostics);
 
-// `weathergen eval GRAPH --weather-preset none --at AT` (AT as eval takes it, may be
-// empty): the "outputs" object.
-nlohmann::json evalOutputs(const std::filesystem::path& graph, const std::string& at = "", const std::string& extra = "");
+// `weathergen eval GRAPH --weather-preset PRESET --at AT EXTRA` (AT as eval takes it, may
+// be empty): the "outputs" object.
+nlohmann::json evalOutputs(const std::filesystem::path& graph, const std::string& at = "", const std::string& extra = "",
+                           const std::string& preset = "none");
 
 // Compiles a graph for glsl, hlsl and spirv, and checks every shader with the independent
 // validators (glslangValidator, spirv-val); "" or what failed.

@@ -1,0 +1,199 @@
+// Hostile and broken MaterialX documents: each is a clear error with its code, file, line
+// and column, and writes nothing; a failed import leaves an existing output directory as
+// it was.
+#include <gtest/gtest.h>
+
+#include "mtlx_test_support.hpp"
+
+namespace wg::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A document around `body`, the elements inside <materialx>.
+std::string document(const std::string& body) {
+  return "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n" + body +
+         "</materialx>\n";
+}
+
+// A standard_surface material whose base_color comes from `connection` (attributes).
+std::string material(const std::string& connection) {
+  return "  <standard_surface name=\"SR\" type=\"surfaceshader\">\n"
+         "    <input name=\"base_color\" type=\"color3\" " + connection + " />\n"
+         "  </standard_surface>\n"
+         "  <surfacematerial name=\"M\" type=\"material\">\n"
+         "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"SR\" />\n"
+         "  </surfacematerial>\n";
+}
+
+class MaterialXHostile : public ::testing::Test {
+ protected:
+  TempDir dir_{"mtlx-hostile"};
+
+  fs::path write(const std::string& name, const std::string& text) {
+    fs::path file = dir_.path() / name;
+    writeFile(file, text);
+    return file;
+  }
+
+  // The import fails with exactly `code`, each diagnostic located, and writes nothing.
+  nlohmann::json expectRejected(const fs::path& doc, const std::string& code, const std::string& extra = "") {
+    fs::path out = dir_.path() / "out";
+    ImportResult run = importDocument(doc, out, extra);
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_EQ(codesOf(run.diagnostics), std::vector<std::string>{code}) << run.output;
+    for (const auto& d : run.diagnostics) {
+      EXPECT_GE(d.value("line", 0), 1) << d.dump();
+      EXPECT_GE(d.value("column", 0), 1) << d.dump();
+      EXPECT_FALSE(d.value("hint", "").empty()) << d.dump();
+    }
+    EXPECT_FALSE(fs::exists(out)) << "a failed import wrote its output directory";
+    return run.diagnostics;
+  }
+};
+
+TEST_F(MaterialXHostile, MalformedXmlNamesLineAndColumn) {
+  auto d = expectRejected(write("broken.mtlx", document("  <standard_surface name=\"SR\" type=\"surfaceshader\">\n"
+                                                         "    <input name=\"base\" type=\"float\" value=\"1\">\n"
+                                                         "  </standard_surface>\n")),
+                          "WG5201");
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0]["line"], 5);  // where the mismatched end tag shows
+}
+
+TEST_F(MaterialXHostile, BillionLaughsIsRefusedAndNothingIsExpanded) {
+  std::string entities = "<!DOCTYPE materialx [\n  <!ENTITY lol \"lol\">\n";
+  for (int i = 1; i <= 9; ++i) {
+    entities += "  <!ENTITY lol" + std::to_string(i) + " \"";
+    for (int j = 0; j < 10; ++j) entities += "&lol" + (i == 1 ? std::string() : std::to_string(i - 1)) + ";";
+    entities += "\">\n";
+  }
+  entities += "]>\n";
+  std::string text = document(material("value=\"&lol9;\""));
+  text.insert(text.find("<materialx"), entities);
+  auto d = expectRejected(write("laughs.mtlx", text), "WG5201");
+  EXPECT_NE(d[0]["message"].get<std::string>().find("DOCTYPE"), std::string::npos) << d.dump();
+}
+
+// pugixml expands only XML's five predefined entities and character references; a
+// custom entity stays text, which is no colour.
+TEST_F(MaterialXHostile, UndeclaredEntityStaysTextAndIsNoValue) {
+  auto d = expectRejected(write("entity.mtlx", document(material("value=\"&lol9;\""))), "WG5202");
+  EXPECT_NE(d[0]["message"].get<std::string>().find("&lol9;"), std::string::npos) << d.dump();
+}
+
+TEST_F(MaterialXHostile, IncludeLoopIsNamed) {
+  write("b.mtlx", document("  <xi:include href=\"a.mtlx\" />\n"));
+  auto d = expectRejected(write("a.mtlx", document("  <xi:include href=\"b.mtlx\" />\n" + material("value=\"1, 0, 0\""))), "WG5205");
+  EXPECT_NE(d[0]["message"].get<std::string>().find("a.mtlx -> b.mtlx -> a.mtlx"), std::string::npos) << d.dump();
+}
+
+TEST_F(MaterialXHostile, IncludeOutsideTheSearchPathIsNotRead) {
+  fs::create_directories(dir_.path() / "docs");
+  write("outside.mtlx", document(material("value=\"1, 0, 0\"")));
+  expectRejected(write("docs/inside.mtlx", document("  <xi:include href=\"../outside.mtlx\" />\n")), "WG5205");
+  expectRejected(write("docs/absolute.mtlx", document("  <xi:include href=\"/etc/passwd\" />\n")), "WG5205");
+}
+
+TEST_F(MaterialXHostile, IncludeInsideASearchPathFolderIsRead) {
+  fs::create_directories(dir_.path() / "docs");
+  fs::create_directories(dir_.path() / "library");
+  write("library/materials.mtlx", document(material("value=\"1, 0, 0\"")));
+  fs::path doc = write("docs/look.mtlx", document("  <xi:include href=\"materials.mtlx\" />\n"
+                                                  "  <look name=\"L\"><materialassign name=\"a\" geom=\"/g\" material=\"M\" /></look>\n"));
+  ImportResult run = importDocument(doc, dir_.path() / "out", "--search-path " + shellQuote((dir_.path() / "library").string()));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  auto index = nlohmann::json::parse(readFile(dir_.path() / "out/look.import.json"));
+  EXPECT_EQ(index["looks"][0]["assignments"][0]["graph"], "look_M.json") << index.dump(2);
+}
+
+TEST_F(MaterialXHostile, HugeAttributeIsAResourceLimit) {
+  expectRejected(write("huge.mtlx", document(material("value=\"" + std::string(100000, '1') + "\""))), "WG1007");
+}
+
+TEST_F(MaterialXHostile, UnknownTypeIsASchemaError) {
+  expectRejected(write("type.mtlx", document("  <constant name=\"m\" type=\"matrix44\">\n"
+                                             "    <input name=\"value\" type=\"matrix44\" value=\"1\" />\n  </constant>\n" +
+                                             material("nodename=\"m\""))),
+                 "WG5202");
+}
+
+TEST_F(MaterialXHostile, NodeGraphCycleIsNamed) {
+  auto d = expectRejected(write("cycle.mtlx", document("  <nodegraph name=\"NG\">\n"
+                                                       "    <add name=\"a\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"b\" /></add>\n"
+                                                       "    <add name=\"b\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"a\" /></add>\n"
+                                                       "    <output name=\"out\" type=\"color3\" nodename=\"a\" />\n  </nodegraph>\n" +
+                                                       material("nodegraph=\"NG\" output=\"out\""))),
+                          "WG5203");
+  EXPECT_NE(d[0]["message"].get<std::string>().find("a -> b -> a"), std::string::npos) << d.dump();
+}
+
+TEST_F(MaterialXHostile, WrongTypeConnectionIsASchemaError) {
+  expectRejected(write("wrong.mtlx", document("  <constant name=\"f\" type=\"float\"><input name=\"value\" type=\"float\" value=\"0.5\" /></constant>\n" +
+                                              material("nodename=\"f\""))),
+                 "WG5202");
+  expectRejected(write("vector.mtlx", document("  <constant name=\"v\" type=\"vector3\"><input name=\"value\" type=\"vector3\" value=\"1, 0, 0\" /></constant>\n" +
+                                               material("nodename=\"v\""))),
+                 "WG5202");
+}
+
+TEST_F(MaterialXHostile, UnsupportedNodeIsNamed) {
+  auto d = expectRejected(write("cells.mtlx", document("  <cellnoise3d name=\"cells\" type=\"float\" />\n"
+                                                       "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"float\" nodename=\"cells\" /></convert>\n" +
+                                                       material("nodename=\"c\""))),
+                          "WG5204");
+  EXPECT_NE(d[0]["message"].get<std::string>().find("cellnoise3d"), std::string::npos);
+}
+
+TEST_F(MaterialXHostile, MissingImageIsAnErrorOrThePlaceholder) {
+  fs::path doc = write("image.mtlx", document("  <image name=\"img\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"albedo.png\" /></image>\n" +
+                                              material("nodename=\"img\"")));
+  auto d = expectRejected(doc, "WG5205");
+  EXPECT_NE(d[0]["hint"].get<std::string>().find("--missing-images placeholder"), std::string::npos);
+  ImportResult run = importDocument(doc, dir_.path() / "placeholder", "--missing-images placeholder");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(codesOf(run.diagnostics), std::vector<std::string>{"WG5302"});
+  EXPECT_EQ(listFiles(dir_.path() / "placeholder"),
+            (std::vector<std::string>{"image.import.json", "image_M.json", "image_placeholder.png"}));
+  EXPECT_EQ(compileAndValidate(dir_.path() / "placeholder/image_M.json", dir_.path() / "shaders"), "");
+  // (128, 128, 255), linear: the document names no colour space
+  auto got = evalOutputs(dir_.path() / "placeholder/image_M.json");
+  EXPECT_NEAR(got["baseColor"][0].get<double>(), 128 / 255.0, 1e-4);
+  EXPECT_NEAR(got["baseColor"][2].get<double>(), 1.0, 1e-4);
+}
+
+TEST_F(MaterialXHostile, ImagePathLeavingTheSearchPathIsNotRead) {
+  write("secret.png", "not read");
+  fs::create_directories(dir_.path() / "docs");
+  expectRejected(write("docs/escape.mtlx", document("  <image name=\"img\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"../secret.png\" /></image>\n" +
+                                                    material("nodename=\"img\""))),
+                 "WG5205");
+  expectRejected(write("docs/absolute.mtlx", document("  <image name=\"img\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"/etc/passwd\" /></image>\n" +
+                                                      material("nodename=\"img\""))),
+                 "WG5205");
+}
+
+TEST_F(MaterialXHostile, FailedImportLeavesTheOutputDirectoryAsItWas) {
+  fs::path out = dir_.path() / "kept";
+  fs::create_directories(out);
+  writeFile(out / "mine.txt", "keep me");
+  ImportResult run = importDocument(write("bad.mtlx", document(material("nodename=\"ghost\""))), out);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(listFiles(out), std::vector<std::string>{"mine.txt"});
+  EXPECT_EQ(readFile(out / "mine.txt"), "keep me");
+}
+
+TEST_F(MaterialXHostile, DiagnosticsNameTheElementPath) {
+  auto d = expectRejected(write("path.mtlx", document("  <nodegraph name=\"NG\">\n"
+                                                      "    <multiply name=\"m\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"nobody\" /></multiply>\n"
+                                                      "    <output name=\"out\" type=\"color3\" nodename=\"m\" />\n  </nodegraph>\n" +
+                                                      material("nodegraph=\"NG\" output=\"out\""))),
+                          "WG5203");
+  EXPECT_EQ(d[0]["pointer"], "/materialx/nodegraph[NG]/multiply[m]/input[in1]");
+  EXPECT_EQ(d[0]["line"], 4);
+  EXPECT_EQ(d[0]["column"], 38);  // the <input element's '<'
+
+}
+
+}  // namespace
+}  // namespace wg::testing
