@@ -19,6 +19,7 @@
 #include "driver/batch_compile.hpp"
 #include "cli/depfile.hpp"
 #include "cli/effect_overrides_option.hpp"
+#include "cli/run_inputs.hpp"
 #include "cli/staged_directory.hpp"
 #include "compiler/material_input_files.hpp"
 #include "cli/progress_line.hpp"
@@ -226,23 +227,23 @@ std::optional<std::map<std::string, std::string>> graphFiles(const GraphOutput& 
   return files;
 }
 
-// No output, the depfile included, may replace an input: a graph, a library or an image;
-// nor may the depfile replace an output.
+// No output, the depfile included, may replace an input (a graph, a library or an
+// image: RunInputs), nor may the depfile replace an output.
 std::string outputOverwritesInput(const std::vector<DepfileRule>& rules, const std::string& depfile) {
+  RunInputs inputs;
+  std::vector<PlannedOutput> outputs;
+  for (const auto& rule : rules) {
+    inputs.add(rule.inputs);
+    for (const auto& output : rule.outputs) outputs.push_back({"-o", output});
+  }
+  if (!depfile.empty()) outputs.push_back({"--depfile", depfile});
+  if (std::string e = inputs.checkOutputs(outputs); !e.empty()) return e;
   std::error_code ec;
-  std::set<std::filesystem::path> inputs;
+  std::set<std::filesystem::path> written;
   for (const auto& rule : rules)
-    for (const auto& input : rule.inputs) inputs.insert(std::filesystem::weakly_canonical(input, ec));
-  auto clash = [&](const std::string& output) { return inputs.count(std::filesystem::weakly_canonical(output, ec)) > 0; };
-  if (!depfile.empty() && clash(depfile)) return "--depfile '" + quoteUserText(depfile) + "' is one of the inputs; choose another path";
-  std::set<std::filesystem::path> outputs;
-  for (const auto& rule : rules)
-    for (const auto& output : rule.outputs) outputs.insert(std::filesystem::weakly_canonical(output, ec));
-  if (!depfile.empty() && outputs.count(std::filesystem::weakly_canonical(depfile, ec)))
+    for (const auto& output : rule.outputs) written.insert(std::filesystem::weakly_canonical(output, ec));
+  if (!depfile.empty() && written.count(std::filesystem::weakly_canonical(depfile, ec)))
     return "--depfile '" + quoteUserText(depfile) + "' is one of the outputs; choose another path";
-  for (const auto& rule : rules)
-    for (const auto& output : rule.outputs)
-      if (clash(output)) return "the output '" + quoteUserText(output) + "' would replace one of the inputs; choose another output directory";
   return "";
 }
 

@@ -48,21 +48,6 @@ int renderSnowfieldScene(const RenderOptions& o) {
   }
 }
 
-// The picture (and a timeline's strip) must not replace a file the render reads.
-std::string outputReplacesInput(const RenderOptions& o) {
-  std::error_code ec;
-  std::vector<std::filesystem::path> outputs = {std::filesystem::weakly_canonical(o.output, ec)};
-  if (!o.timelinePath.empty())
-    outputs.push_back(std::filesystem::weakly_canonical(std::filesystem::path(o.output).replace_extension(".strip.png"), ec));
-  for (const std::string* input : {&o.materialPath, &o.modelPath, &o.timelinePath}) {
-    if (input->empty()) continue;
-    const auto in = std::filesystem::weakly_canonical(*input, ec);
-    for (const auto& out : outputs)
-      if (out == in) return "-o '" + quoteUserText(o.output) + "' would replace the input '" + quoteUserText(*input) + "'; choose another output";
-  }
-  return "";
-}
-
 // --frames DIR is created when the stages are written: a file on its way fails now.
 std::string checkFramesFolder(const std::string& framesDir) {
   std::error_code ec;
@@ -87,7 +72,7 @@ std::string checkRenderOptions(const RenderOptions& o) {
   if (o.watchRenders && !o.watch) return "--watch-renders takes --watch";
   if (!o.framesDir.empty())
     if (std::string e = checkFramesFolder(o.framesDir); !e.empty()) return e;
-  return outputReplacesInput(o);
+  return "";
 }
 
 // The scene and what to draw of it: checked before a device is opened.
@@ -96,9 +81,14 @@ struct PreparedRender {
   RenderPlan plan;
 };
 
+// The outputs are checked against the scene's files and the timeline here, before a
+// device is opened, and against the materials' files once they are compiled.
 int prepareRender(const RenderOptions& o, PreparedRender& prepared) {
   if (int e = chooseScene(o, prepared.source)) return e;
-  if (std::string e = makeRenderPlan(o, prepared.source.scene, prepared.plan); !e.empty()) return usageError(e);
+  RenderPlan& plan = prepared.plan;
+  if (std::string e = makeRenderPlan(o, prepared.source.scene, plan); !e.empty()) return usageError(e);
+  plan.inputs.add(prepared.source.inputFiles);
+  if (std::string e = plan.inputs.checkOutputs(plannedOutputs(plan, prepared.source.scene.name)); !e.empty()) return usageError(e);
   return kExitOk;
 }
 

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <filesystem>
 #include <set>
 
 #include "compiler/debug_views.hpp"
@@ -91,7 +92,26 @@ std::string makeRenderPlan(const RenderOptions& o, const scene::Scene& scene, Re
   EvalInputs inputs = defaultEvalInputs();
   inputs.frame.sunDirection = {scene.towardsSun.x, scene.towardsSun.y, scene.towardsSun.z};
   if (std::string e = applyAovAndWeather(o.aov, o.weatherLists, inputs, plan.request); !e.empty()) return e;
+  if (!o.timelinePath.empty()) plan.inputs.add(std::filesystem::path(o.timelinePath));
   return readTimeline(o.timelinePath, plan.timeline);
+}
+
+std::filesystem::path stripPath(const RenderPlan& plan) {
+  return std::filesystem::path(plan.output).replace_extension(".strip.png");
+}
+
+std::filesystem::path framePath(const RenderPlan& plan, const std::string& sceneName, const std::string& stageSlug) {
+  return std::filesystem::path(plan.framesDir) / (sceneName + "-" + stageSlug + ".png");
+}
+
+std::vector<PlannedOutput> plannedOutputs(const RenderPlan& plan, const std::string& sceneName,
+                                          const std::vector<std::string>& stageSlugs) {
+  std::vector<PlannedOutput> outputs{{"-o", plan.output}};
+  if (!plan.timeline) return outputs;
+  outputs.push_back({"-o", stripPath(plan)});
+  if (plan.framesDir.empty()) return outputs;
+  for (const auto& slug : stageSlugs) outputs.push_back({"--frames", framePath(plan, sceneName, slug)});
+  return outputs;
 }
 
 }  // namespace wg

@@ -2,12 +2,14 @@
 // timeline if any, and where the pictures go. Made from the options for each scene,
 // since the default sun and a framed orbit camera come from the scene.
 #pragma once
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/eval_inputs.hpp"
 #include "cli/render_options.hpp"
+#include "cli/run_inputs.hpp"
 #include "weather/weather_timeline.hpp"
 
 namespace wg {
@@ -20,7 +22,15 @@ struct RenderPlan {
   double step = 300.0;
   std::string output, framesDir, aov;
   bool progress = false;  // lines on stderr
+  RunInputs inputs;       // the scene's files and the timeline; the materials' are added once compiled
 };
+
+// Every file the render writes: the picture, and for a timeline its strip and, with
+// --frames, one picture per stage (`stageSlugs`, TimelineFrame::slug).
+std::vector<PlannedOutput> plannedOutputs(const RenderPlan& plan, const std::string& sceneName,
+                                          const std::vector<std::string>& stageSlugs = {});
+std::filesystem::path stripPath(const RenderPlan& plan);
+std::filesystem::path framePath(const RenderPlan& plan, const std::string& sceneName, const std::string& stageSlug);
 
 // "" or a usage message (unknown camera, bad weather, unreadable timeline).
 std::string makeRenderPlan(const RenderOptions& options, const scene::Scene& scene, RenderPlan& plan);

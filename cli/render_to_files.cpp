@@ -33,9 +33,19 @@ int writePicture(const std::string& path, const Image& picture) {
   return kExitOk;
 }
 
+// The outputs against every file the render read, its materials' libraries and images
+// too: those are known once the first frame has compiled them, before anything is written.
+std::string outputsReplaceInputs(const SceneRenderer& renderer, const RenderPlan& plan,
+                                 const std::vector<std::string>& stageSlugs = {}) {
+  RunInputs inputs = plan.inputs;
+  inputs.add(renderer.materialInputFiles());
+  return inputs.checkOutputs(plannedOutputs(plan, renderer.scene().name, stageSlugs));
+}
+
 int renderOneFrame(SceneRenderer& renderer, vk::Context& ctx, const RenderPlan& plan) {
   RenderedFrame frame = renderer.render(plan.request);
   if (!reportValidation(ctx)) return kExitInternal;
+  if (std::string e = outputsReplaceInputs(renderer, plan); !e.empty()) return usageError(e);
   if (int e = writePicture(plan.output, toDisplayImage(frame))) return e;
   if (plan.progress) std::fprintf(stderr, "render: wrote %s (%ux%u)\n", plan.output.c_str(), frame.width, frame.height);
   return kExitOk;
@@ -73,6 +83,9 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
     if (plan.progress) std::fprintf(stderr, "render: [%zu/%zu] %s\n", i, n, quoteUserText(label).c_str());
   });
   if (!reportValidation(ctx)) return kExitInternal;
+  std::vector<std::string> slugs;
+  for (const auto& stage : stages) slugs.push_back(stage.slug);
+  if (std::string e = outputsReplaceInputs(renderer, plan, slugs); !e.empty()) return usageError(e);
   const std::string& sceneName = renderer.scene().name;
   std::vector<image::LabelledFrame> frames;
   std::vector<Image> strip;
@@ -80,16 +93,15 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
     Image img = toDisplayImage(stage.frame);
     if (!plan.framesDir.empty()) {
       std::filesystem::create_directories(plan.framesDir);
-      std::string path = (std::filesystem::path(plan.framesDir) / (sceneName + "-" + stage.slug + ".png")).string();
-      if (int e = writePicture(path, img)) return e;
+      if (int e = writePicture(framePath(plan, sceneName, stage.slug).string(), img)) return e;
     }
     frames.push_back({img, stage.lines});
     strip.push_back(std::move(img));
   }
   if (int e = writePicture(plan.output, image::contactSheet(title, frames, kSheetColumns))) return e;
-  std::filesystem::path stripPath = std::filesystem::path(plan.output).replace_extension(".strip.png");
-  if (int e = writePicture(stripPath.string(), image::frameStrip(strip))) return e;
-  if (plan.progress) std::fprintf(stderr, "render: wrote %s and %s\n", plan.output.c_str(), stripPath.string().c_str());
+  const std::string stripFile = stripPath(plan).string();
+  if (int e = writePicture(stripFile, image::frameStrip(strip))) return e;
+  if (plan.progress) std::fprintf(stderr, "render: wrote %s and %s\n", plan.output.c_str(), stripFile.c_str());
   return kExitOk;
 }
 

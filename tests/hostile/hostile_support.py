@@ -214,6 +214,28 @@ def timeline(stages, keys_per_stage=1):
     return {"keyframes": keys}
 
 
+def triangle_model(folder, name="box", material=None, image=None, version="2.0", buffer_uri=None, image_uri="tex.png"):
+    """Writes a one-triangle glTF model, NAME.gltf with its buffer NAME.bin and image
+    tex.png beside it, into `folder`; returns the .gltf path. `material` replaces the
+    material, `image` the PNG's bytes."""
+    positions = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    texcoords = struct.pack("<6f", 0, 0, 1, 0, 0, 1)
+    buffer_uri = buffer_uri or name + ".bin"
+    write(os.path.join(folder, buffer_uri.replace("%2B", "+")), positions + texcoords)
+    write(os.path.join(folder, image_uri.replace("%2B", "+")), image if image is not None else png_bytes(2, 2))
+    model = {
+        "asset": {"version": version}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "material": 0}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                      {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 24}],
+        "buffers": [{"uri": buffer_uri, "byteLength": 60}],
+        "materials": [material or {"name": "Mat", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+        "textures": [{"source": 0}], "images": [{"uri": image_uri}],
+    }
+    return write(os.path.join(folder, name + ".gltf"), model)
+
+
 def read(path, mode="rb"):
     with open(str(path), mode) as f:
         return f.read()
