@@ -167,7 +167,7 @@ std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string
 }
 
 int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o, unsigned width, unsigned height,
-                  const std::string& graphsDir) {
+                  const std::string& graphsDir, const std::vector<ImportedOrigin>& modelOrigins) {
   std::string error;
   auto ctx = vk::Context::create({o.device, false}, error);
   if (!ctx) return deviceUnavailable(error, o.device);
@@ -183,8 +183,8 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   try {
     for (auto& scene : scenes)
       gpuBytes = std::max(gpuBytes, measureScene(*ctx, std::move(scene), graphsDir, width, height, o));
-  } catch (const MaterialCompileError& e) {  // a user's graph (--material) that does not compile
-    printDiagnostics(e.diagnostics(), false);
+  } catch (const MaterialCompileError& e) {  // a user's graph (--material, --model) that does not compile
+    printDiagnostics(inModelTerms(e.diagnostics(), modelOrigins), false);
     return kExitBadInput;
   }
   rusage usage{};
@@ -208,7 +208,7 @@ int runBenchRenderCommand(int argc, char** argv) {
   std::vector<scene::Scene> scenes;
   ModelScene model;  // keeps the model's imported graphs while it is drawn
   if (int e = chooseScenes(o, model, scenes)) return e;
-  return measureScenes(scenes, o, pixels->width, pixels->height, graphsDir);
+  return measureScenes(scenes, o, pixels->width, pixels->height, graphsDir, model.origins);
 }
 
 }  // namespace wg

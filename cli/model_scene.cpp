@@ -108,6 +108,31 @@ bool standAtOrigin(std::vector<scene::SceneObject>& objects, float scale) {
   return true;
 }
 
+std::string nameInParentheses(const std::string& name, const char* unnamed) {
+  return " (" + (name.empty() ? std::string(unnamed) : quoteUserText(name, 80)) + ")";
+}
+
+// A data: URI is the image itself, not a name.
+std::string externalUri(const std::string& uri) { return uri.starts_with("data:") ? "" : uri; }
+
+// Each imported graph and image, and the glTF object it was made from.
+std::vector<ImportedOrigin> importedOrigins(const gltf::Asset& asset, const gltf::ImportedModel& imported,
+                                            const std::filesystem::path& dir) {
+  std::vector<ImportedOrigin> origins;
+  for (std::size_t i = 0; i < imported.materialGraphs.size(); ++i) {
+    const std::string pointer = appendPointer("/materials", i);
+    origins.push_back({(dir / imported.materialGraphs[i]).string(), asset.locate(pointer),
+                       "material " + std::to_string(i) + nameInParentheses(asset.model.materials[i].name, "unnamed")});
+  }
+  if (!imported.defaultGraph.empty())
+    origins.push_back({(dir / imported.defaultGraph).string(), asset.locate("/meshes"), "the default material of primitives without one"});
+  for (std::size_t i = 0; i < imported.imageFiles.size(); ++i) {
+    origins.push_back({(dir / imported.imageFiles[i]).string(), asset.locate(appendPointer("/images", i)),
+                       "image " + std::to_string(i) + nameInParentheses(externalUri(asset.model.images[i].uri), "embedded")});
+  }
+  return origins;
+}
+
 int modelError(const gltf::Asset& asset, const std::string& message, const std::string& hint) {
   DiagnosticList list;
   list.report(DiagCode::GltfInvalidData, asset.locate(""), {message, hint});
@@ -142,6 +167,7 @@ int loadModelScene(const std::string& modelPath, const gltf::ImportSettings& set
                       "pass a smaller --model-scale (0.001 for millimetres), or re-export the model with sensible coordinates");
   out.scene = scene::stageAround("model-" + gltf::fileSafeName(std::filesystem::path(modelPath).stem().string(), "model"), std::move(objects));
   out.inputFiles = modelInputFiles(*asset);
+  out.origins = importedOrigins(*asset, *imported, out.graphs->path());
   return kExitOk;
 }
 

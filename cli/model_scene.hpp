@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/imported_origin.hpp"
 #include "cli/temporary_directory.hpp"
 #include "import/model_import.hpp"
 #include "host/scene/scene.hpp"
@@ -17,6 +18,7 @@ struct ModelScene {
   scene::Scene scene;
   std::vector<std::string> inputFiles;  // the model and the files it reads, for --watch
   std::shared_ptr<TemporaryDirectory> graphs;
+  std::vector<ImportedOrigin> origins;
 };
 
 // Returns kExitOk, or prints the diagnostics and returns the exit code.

@@ -88,6 +88,7 @@ int prepareRender(const RenderOptions& o, PreparedRender& prepared) {
   RenderPlan& plan = prepared.plan;
   if (std::string e = makeRenderPlan(o, prepared.source.scene, plan); !e.empty()) return usageError(e);
   plan.inputs.add(prepared.source.inputFiles);
+  plan.modelOrigins = prepared.source.origins;
   if (std::string e = plan.inputs.checkOutputs(plannedOutputs(plan, prepared.source.scene.name)); !e.empty()) return usageError(e);
   return kExitOk;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/eval_inputs.hpp"
+#include "cli/imported_origin.hpp"
 #include "cli/render_options.hpp"
 #include "cli/run_inputs.hpp"
 #include "weather/weather_timeline.hpp"
@@ -23,6 +24,7 @@ struct RenderPlan {
   std::string output, framesDir, aov;
   bool progress = false;  // lines on stderr
   RunInputs inputs;       // the scene's files and the timeline; the materials' are added once compiled
+  std::vector<ImportedOrigin> modelOrigins;  // --model: its diagnostics name the model, not these files
 };
 
 // Every file the render writes: the picture, and for a timeline its strip and, with

@@ -40,7 +40,7 @@ int modelOnStage(const RenderOptions& o, SceneSource& source) {
   if (!presets) return usageError(error);
   ModelScene model;
   if (int e = loadModelScene(o.modelPath, {*presets, o.snowDisplacement}, o.modelScale, model)) return e;
-  source = {std::move(model.scene), std::move(model.inputFiles), std::move(model.graphs)};
+  source = {std::move(model.scene), std::move(model.inputFiles), std::move(model.graphs), std::move(model.origins)};
   return kExitOk;
 }
 

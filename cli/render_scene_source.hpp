@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "cli/imported_origin.hpp"
 #include "cli/render_options.hpp"
 #include "cli/temporary_directory.hpp"
 #include "host/scene/scene.hpp"
@@ -19,6 +20,7 @@ struct SceneSource {
   std::vector<std::string> inputFiles;
   // --model: where its imported graphs live while the scene is drawn.
   std::shared_ptr<TemporaryDirectory> graphFolder;
+  std::vector<ImportedOrigin> origins;  // --model: what each file in graphFolder was made from
 };
 
 // "" when the options name exactly one source, else a usage message.

@@ -124,7 +124,7 @@ RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPl
     result.exitCode = plan.timeline ? renderTimelineSheet(renderer, ctx, plan) : renderOneFrame(renderer, ctx, plan);
     if (result.exitCode == kExitOk) result.materialInputs = renderer.materialInputFiles();
   } catch (const MaterialCompileError& e) {
-    printDiagnostics(e.diagnostics(), false);
+    printDiagnostics(inModelTerms(e.diagnostics(), plan.modelOrigins), false);
     result.exitCode = kExitBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "weathergen: error: %s\n", quoteUserText(e.what(), 1000).c_str());

@@ -171,6 +171,7 @@ std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry
   DiagnosticList added;
   for (std::size_t i = errorsBefore; i < diags.items().size(); ++i) added.items().push_back(diags.items()[i]);
   if (added.hasErrors()) return std::nullopt;
+  out.imageFiles = naming.imageFiles;
   out.indexFile = modelStem + ".import.json";
   out.files.push_back({out.indexFile, asText(index)});
   return out;

@@ -26,6 +26,7 @@ struct ImportedModel {
   // Graph file per glTF material index; defaultGraph for primitives without one.
   std::vector<std::string> materialGraphs;
   std::string defaultGraph;  // "" unless some primitive has no material
+  std::vector<std::string> imageFiles;  // per glTF image index
 };
 
 struct ImportSettings {
