@@ -19,7 +19,7 @@ struct BloomConstants {
 constexpr std::string_view kCommon = R"(#version 450
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(push_constant) uniform Bloom { ivec2 size; ivec2 halfSize; float threshold; float intensity; } bloom;
-layout(set = 0, binding = 0, rgba32f) uniform image2D Colour;
+layout(set = 0, binding = 0, rgba16f) uniform image2D Colour;
 layout(set = 0, binding = 1, rgba32f) uniform image2D HalfA;
 layout(set = 0, binding = 2, rgba32f) uniform image2D HalfB;
 )";

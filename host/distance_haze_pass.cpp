@@ -3,6 +3,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "backends/library_functions.hpp"
+#include "backends/shader_syntax.hpp"
+#include "nodes/pbr_shading.hpp"
+
 #include "host/material_resources.hpp"
 #include "vulkan/compute_barriers.hpp"
 #include "vulkan/runtime_shader.hpp"
@@ -10,44 +14,89 @@
 namespace wg {
 
 namespace {
+// 128 bytes: the push-constant size every Vulkan device offers.
 struct HazeConstants {
-  glm::vec4 colour;  // rgb, unused
-  glm::vec4 range;   // near, far, extinction distance, where the horizon fade starts (m)
-  std::int32_t size[2];
+  glm::mat4 clipToWorld;    // inverse view-projection: each pixel's view ray
+  glm::vec4 sun;            // towards the sun (xyz, unit), its intensity
+  glm::vec4 sky;            // the sky's zenith colour (rgb, linear), ambient intensity
+  glm::vec4 weather;        // precipitation, wind intensity, tone exposure, -
+  glm::vec4 range;          // near, far, extinction distance, where the horizon fade starts (m)
 };
+static_assert(sizeof(HazeConstants) == 128);
 
-// Depth to metres as the puffs do (the inverse of the zero-to-one projection); the
-// haze is 1 - exp(-d / distance) (Beer-Lambert), raised to 1 towards the far plane.
-constexpr std::string_view kHaze = R"(#version 450
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
-layout(push_constant) uniform Haze { vec4 colour; vec4 range; ivec2 size; } haze;
-layout(set = 0, binding = 0, rgba32f) uniform image2D Colour;
-layout(set = 0, binding = 1) uniform texture2D SceneDepth;
-layout(set = 0, binding = 2) uniform sampler DepthSampler;
+// The sky the surfaces reflect (wg_sky of the shading library, the same text), drawn
+// where nothing was, with the sun's disc and its glow fading as the sky turns overcast;
+// surfaces are hazed towards that sky's horizon in their direction (Beer-Lambert:
+// 1 - exp(-d / distance), raised to 1 towards the far plane), so there is no seam.
+constexpr std::string_view kHazeMain = R"(
 void main() {
+  ivec2 size = imageSize(Colour);
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, haze.size))) return;
+  if (any(greaterThanEqual(p, size))) return;
+  vec2 ndc = (vec2(p) + 0.5) / vec2(size) * 2.0 - 1.0;
+  vec4 nearPoint = haze.clipToWorld * vec4(ndc, 0.0, 1.0), farPoint = haze.clipToWorld * vec4(ndc, 1.0, 1.0);
+  vec3 d = normalize(farPoint.xyz / farPoint.w - nearPoint.xyz / nearPoint.w);
+  // Below kHorizonY the background is the horizon's colour: past the far plane there is
+  // no ground to show, and haze tends to the same colour, so they meet without a seam.
+  vec3 background = normalize(vec3(d.x, max(d.y, kHorizonY), d.z));
+  vec3 horizon = wg_tonemap(wg_sky(normalize(vec3(d.x, kHorizonY, d.z) + vec3(1e-6, 0.0, 0.0)), 0.0));
   float depth = texelFetch(sampler2D(SceneDepth, DepthSampler), p, 0).r;
   if (depth >= 1.0) {
     // The depth is one sample's (the multisampled resolve keeps sample 0): a pixel on
     // a silhouette may read as sky yet hold surface in its other samples. Haze it as
-    // its nearest neighbour; the sky itself, a blend towards its own colour, keeps it.
+    // its nearest neighbour; only where all nine are sky is the sky drawn.
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx)
-        depth = min(depth, texelFetch(sampler2D(SceneDepth, DepthSampler), clamp(p + ivec2(dx, dy), ivec2(0), haze.size - 1), 0).r);
-    if (depth >= 1.0) return;  // the sky itself
+        depth = min(depth, texelFetch(sampler2D(SceneDepth, DepthSampler), clamp(p + ivec2(dx, dy), ivec2(0), size - 1), 0).r);
+    if (depth >= 1.0) {
+      float clear = 1.0 - clamp(frame_precipitation * 1.5, 0.0, 1.0);
+      float toSun = dot(d, haze.sun.xyz), above = smoothstep(-0.01, 0.01, d.y);
+      float disc = smoothstep(kSunDiscCos - 2e-5, kSunDiscCos + 2e-5, toSun);
+      float glow = 0.6 * pow(max(toSun, 0.0), 400.0) + 0.12 * pow(max(toSun, 0.0), 12.0);
+      vec3 sun = frame_sunColor * haze.sun.w * (disc * kSunDiscRadiance + glow) * clear * above;
+      imageStore(Colour, p, vec4(wg_tonemap(wg_sky(background, 0.0) + sun), 1.0));
+      return;
+    }
   }
   float n = haze.range.x, f = haze.range.y;
   float metres = n * f / (f - depth * (f - n));
   float amount = max(1.0 - exp(-metres / haze.range.z), smoothstep(haze.range.w, f, metres));
   vec4 c = imageLoad(Colour, p);
-  imageStore(Colour, p, vec4(mix(c.rgb, haze.colour.rgb, amount), c.a));
+  imageStore(Colour, p, vec4(mix(c.rgb, horizon, amount), c.a));
 }
 )";
+
+// The pass's shader: its bindings, the frame names wg_sky reads bound to the push
+// constants, the shading library's sky functions, then main.
+std::string hazeShader(const glm::vec3& sunColor) {
+  std::string text = R"(#version 450
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(push_constant) uniform Haze { mat4 clipToWorld; vec4 sun; vec4 sky; vec4 weather; vec4 range; } haze;
+layout(set = 0, binding = 0, rgba16f) uniform image2D Colour;
+layout(set = 0, binding = 1) uniform texture2D SceneDepth;
+layout(set = 0, binding = 2) uniform sampler DepthSampler;
+#define frame_skyColor haze.sky.rgb
+#define frame_ambientIntensity haze.sky.w
+#define frame_precipitation haze.weather.x
+#define frame_windIntensity haze.weather.y
+#define frame_exposure haze.weather.z
+)";
+  text += "const vec3 frame_sunColor = vec3(" + std::to_string(sunColor.r) + ", " + std::to_string(sunColor.g) + ", " +
+          std::to_string(sunColor.b) + ");\n";
+  // The sun's angular radius is 0.27 degrees; drawn at 0.6 so that it reads in a
+  // 480-pixel-wide frame. Its radiance saturates the tone curve: a white disc.
+  text += "const float kSunDiscCos = 0.99994516;\nconst float kSunDiscRadiance = 40.0;\n";
+  // Just above wg_sky's horizon edge (0.04 at roughness 0), where the sky is all horizon.
+  text += "const float kHorizonY = 0.05;\n";
+  for (const ReachedPiece& piece : reachedLibraryPieces(glslSyntax(), {&kPbrShadingLibrary}, {"wg_sky", "wg_tonemap"}))
+    text += piece.text;
+  text += kHazeMain;
+  return text;
+}
 }  // namespace
 
-DistanceHazePass::DistanceHazePass(vk::Context& ctx) : ctx_(ctx) {
-  auto module = vk::compileRuntimeShader(kHaze, vk::RuntimeStage::Compute, "distance haze");
+DistanceHazePass::DistanceHazePass(vk::Context& ctx, const glm::vec3& sunColor) : ctx_(ctx) {
+  auto module = vk::compileRuntimeShader(hazeShader(sunColor), vk::RuntimeStage::Compute, "sky and distance haze");
   set_ = std::make_unique<vk::ReflectedDescriptorSet>(ctx_, std::vector{module.interface}, VK_SHADER_STAGE_COMPUTE_BIT);
   if (set_->pushConstantBytes() != sizeof(HazeConstants))
     throw std::runtime_error("haze shader: push constants are " + std::to_string(set_->pushConstantBytes()) + " bytes");
@@ -70,9 +119,11 @@ void DistanceHazePass::record(const ColourPassTargets& t, const HazeSettings& se
                           VK_IMAGE_LAYOUT_GENERAL);
   vk::Image2D::transition(t.cmd, t.depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-  HazeConstants c{glm::vec4(settings.colour, 0.f),
-                  {t.nearPlane, t.farPlane, settings.distance, settings.horizonFrom * t.farPlane},
-                  {std::int32_t(w), std::int32_t(h)}};
+  const HazeConstants c{glm::inverse(t.viewProjection),
+                        glm::vec4(settings.towardsSun, settings.sunIntensity),
+                        glm::vec4(settings.skyColour, settings.ambientIntensity),
+                        {settings.precipitation, settings.windIntensity, settings.exposure, 0.f},
+                        {t.nearPlane, t.farPlane, settings.distance, settings.horizonFrom * t.farPlane}};
   VkDescriptorSet set = set_->set();
   vkCmdBindPipeline(t.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
   vkCmdBindDescriptorSets(t.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, set_->pipelineLayout(), 0, 1, &set, 0, nullptr);

@@ -1,8 +1,9 @@
-// Distance haze (aerial perspective): every surface pixel of the colour target is
-// blended towards the sky's colour by its distance from the camera, read from the
-// colour pass's depth, so far ground fades into the sky and no frame shows where the
-// world ends. One compute dispatch on the tone-mapped colour target, after the colour
-// pass and before bloom; sky pixels (depth 1) are left alone.
+// The sky and distance haze (aerial perspective): where the colour pass drew nothing
+// (depth 1) it draws the sky the surfaces reflect, with the sun's disc; every surface
+// pixel is blended towards that sky's horizon by its distance from the camera, read
+// from the colour pass's depth, so far ground fades into the sky and no frame shows
+// where the world ends. One compute dispatch on the tone-mapped colour target, after
+// the colour pass and before bloom.
 #pragma once
 #include <glm/glm.hpp>
 
@@ -14,9 +15,13 @@
 namespace wg {
 
 struct HazeSettings {
-  // What the haze tends to: the renderer's sky (its clear colour, linear), so the
-  // horizon has no seam.
-  glm::vec3 colour{0.45f, 0.55f, 0.72f};
+  // The sky: what the frame block gives the surfaces' wg_sky (frame_skyColor and so on).
+  glm::vec3 skyColour{0.45f, 0.55f, 0.72f};
+  float ambientIntensity = 1.f;
+  float precipitation = 0.f, windIntensity = 0.f;
+  glm::vec3 towardsSun{0.f, 1.f, 0.f};
+  float sunIntensity = 1.f;
+  float exposure = 1.f;
   // Metres over which the haze reaches 1 - 1/e (Beer-Lambert extinction): about 3 km
   // visibility (Koschmieder: 3.9 x this), a hazy winter day.
   float distance = 800.f;
@@ -27,7 +32,8 @@ struct HazeSettings {
 
 class DistanceHazePass {
  public:
-  explicit DistanceHazePass(vk::Context& ctx);
+  // sunColor: the sun's radiance at full intensity, as the frame block's sunColor.
+  DistanceHazePass(vk::Context& ctx, const glm::vec3& sunColor);
   ~DistanceHazePass();
   DistanceHazePass(const DistanceHazePass&) = delete;
   DistanceHazePass& operator=(const DistanceHazePass&) = delete;

@@ -27,9 +27,9 @@ vk::UniqueRenderPass createRenderPass(VkDevice device, const VkRenderPassCreateI
 }
 }  // namespace
 
-vk::UniqueRenderPass createColourPass(VkDevice device) {
+vk::UniqueRenderPass createColourPass(VkDevice device, VkFormat colourFormat) {
   VkAttachmentDescription attachments[] = {
-      clearedAttachment(vk::kColourFormat, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL),
+      clearedAttachment(colourFormat, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL),
       clearedAttachment(vk::kDepthFormat, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL)};
   VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};

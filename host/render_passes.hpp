@@ -10,7 +10,7 @@ namespace wg {
 
 // RGBA32F colour kept for read-back and D32 depth kept for later passes (soft
 // particles); both are left attachment-optimal.
-vk::UniqueRenderPass createColourPass(VkDevice device);
+vk::UniqueRenderPass createColourPass(VkDevice device, VkFormat colourFormat);
 // The lit colour pass's samples per pixel on this device: 4 where the colour and depth
 // formats take 4 samples as attachments and the depth can be resolved
 // (Context::depthStencilResolve); 1 otherwise.

@@ -4,6 +4,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <glm/gtc/packing.hpp>
+
 #include "compiler/material_input_files.hpp"
 #include "nodes/pbr_shading.hpp"
 #include "nodes/weather_noise.hpp"
@@ -76,9 +78,9 @@ SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string g
                              VkSampleCountFlagBits colourSamples)
     : ctx_(ctx), scene_(std::move(scene)), graphsDirectory_(std::move(graphsDirectory)), timer_(ctx) {
   colourSamples_ = colourPassSamples(ctx_, colourSamples);
-  colourPass_ = colourSamples_ == VK_SAMPLE_COUNT_1_BIT ? createColourPass(ctx_.device())
+  colourPass_ = colourSamples_ == VK_SAMPLE_COUNT_1_BIT ? createColourPass(ctx_.device(), vk::kColourFormat)
                                                        : createMultisampledColourPass(ctx_, colourSamples_);
-  aovPass_ = createColourPass(ctx_.device());
+  aovPass_ = createColourPass(ctx_.device(), vk::kAovFormat);
   depthPass_ = createDepthOnlyPass(ctx_.device());
   linearClamp_ = createSampler(ctx_, "clamp", "linear");
   nearestClamp_ = createSampler(ctx_, "clamp", "nearest");
@@ -319,7 +321,7 @@ void SceneRenderer::createTargets(Frame& frame) {
   const RenderRequest& r = frame.request;
   const bool hazed = drawsHaze(scene_, r);
   VkImageUsageFlags later = r.afterColourPass || hazed ? VK_IMAGE_USAGE_STORAGE_BIT : 0;
-  frame.colour = vk::Image2D(ctx_, r.width, r.height, vk::kColourFormat,
+  frame.colour = vk::Image2D(ctx_, r.width, r.height, r.debugView == 0 ? vk::kColourFormat : vk::kAovFormat,
                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | later);
   frame.depth = vk::Image2D(ctx_, r.width, r.height, vk::kDepthFormat,
                             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
@@ -387,16 +389,22 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   const ColourPassTargets targets{cmd, &frame.colour, &frame.depth, pass.viewProjection, pass.eye, frame.clip.nearPlane,
                                   frame.clip.farPlane};
   // Haze first: falling flakes near the viewer are not as far away as the ground behind them.
-  if (drawsHaze(scene_, r)) recordHaze(targets, sky, r.weather);
+  if (drawsHaze(scene_, r)) recordHaze(targets, frame.towardsSun, r.weather);
   if (drawsPrecipitation(r)) recordPrecipitation(targets, r.weather);
   if (r.afterColourPass) r.afterColourPass(targets);
 }
 
-// Towards the sky's colour, so the ground meets the sky without a seam.
-void SceneRenderer::recordHaze(const ColourPassTargets& targets, const glm::vec3& sky, const WeatherState& weather) {
-  if (!haze_) haze_ = std::make_unique<DistanceHazePass>(ctx_);
+// The sky the surfaces reflect, and haze towards it, so the ground meets the sky without a seam.
+void SceneRenderer::recordHaze(const ColourPassTargets& targets, const glm::vec3& towardsSun, const WeatherState& weather) {
+  if (!haze_) haze_ = std::make_unique<DistanceHazePass>(ctx_, kSunColor);
   HazeSettings settings;
-  settings.colour = sky;
+  settings.skyColour = kSkyColor;
+  settings.ambientIntensity = kAmbientIntensity;
+  settings.precipitation = weather.conditions.precipitation;
+  settings.windIntensity = weather.conditions.windIntensity;
+  settings.towardsSun = towardsSun;
+  settings.sunIntensity = weather.conditions.sunIntensity;
+  settings.exposure = kToneExposure;
   // The scene's own haze and the falling snow or rain dim the view together.
   settings.distance = 1.f / (1.f / scene_.hazeDistance + precipitationExtinction(weather.conditions));
   settings.horizonFrom = kHazeHorizonFrom;
@@ -418,7 +426,15 @@ RenderedFrame SceneRenderer::readBack(Frame& frame) {
   out.gpuMilliseconds = timer_.milliseconds();
   auto raw = frame.colour.download(ctx_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
   out.rgba.resize(std::size_t(out.width) * out.height * 4);
-  std::memcpy(out.rgba.data(), raw.data(), out.rgba.size() * sizeof(float));
+  if (frame.colour.format() == vk::kAovFormat) {
+    std::memcpy(out.rgba.data(), raw.data(), out.rgba.size() * sizeof(float));
+  } else {
+    for (std::size_t i = 0; i < out.rgba.size(); ++i) {
+      std::uint16_t half;
+      std::memcpy(&half, raw.data() + 2 * i, sizeof half);
+      out.rgba[i] = glm::unpackHalf1x16(half);
+    }
+  }
   return out;
 }
 

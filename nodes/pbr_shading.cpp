@@ -142,8 +142,11 @@ vec3 wg_sky_tint() {
   return mix(frame_skyColor, vec3(0.62, 0.64, 0.68), overcast) * (1.0 - 0.45 * overcast * frame_windIntensity);
 }
 vec3 wg_sky(const vec3 d, const float roughness) {
-  vec3 zenith = wg_sky_tint() * frame_ambientIntensity;
-  vec3 horizon = mix(zenith, vec3(dot(zenith, vec3(0.2126, 0.7152, 0.0722))), 0.5) * 1.25;
+  vec3 tint = wg_sky_tint() * frame_ambientIntensity;
+  float luminance = dot(tint, vec3(0.2126, 0.7152, 0.0722));
+  // A clear sky is deepest blue overhead and palest at the horizon.
+  vec3 zenith = max(mix(vec3(luminance), tint, 2.5), vec3(0.0));
+  vec3 horizon = mix(tint, vec3(luminance), 0.3) * 1.1;
   float edge = 0.04 + roughness * roughness;
   vec3 sky = mix(horizon, zenith, sqrt(clamp(d.y, 0.0, 1.0)));
   return mix(horizon * 0.35, sky, smoothstep(-edge, edge, d.y));

@@ -84,7 +84,7 @@ MaterialPipeline::MaterialPipeline(Context& ctx, const MaterialReflection& refle
   check(vkCreatePipelineLayout(ctx.device(), &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
   layout_ = UniquePipelineLayout(ctx.device(), layout);
   colour_ = build(passes.lit, Kind::Colour, passes.litSamples);
-  if (reflection.blended() || passes.litSamples != VK_SAMPLE_COUNT_1_BIT) aov_ = build(passes.aov, Kind::Aov);
+  if (passes.aov != VK_NULL_HANDLE) aov_ = build(passes.aov, Kind::Aov);
   depth_ = build(passes.depth, Kind::Depth);
 }
 

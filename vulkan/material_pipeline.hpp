@@ -35,8 +35,8 @@ class MaterialPipeline {
   MaterialPipeline(Context& ctx, const MaterialReflection& reflection, const SpirvWords& vertex,
                    const SpirvWords& fragment, const PipelinePasses& passes);
 
-  // The lit colour pipeline; for an AOV (a debug view) the single-sampled one, where a
-  // blended material is drawn opaque with depth writes, so read-backs see its
+  // The lit colour pipeline; for an AOV (a debug view) the AOV pass's, single-sampled,
+  // where a blended material is drawn opaque with depth writes, so read-backs see its
   // attributes unblended.
   VkPipeline colourPipeline(bool aov = false) const { return aov && aov_ ? aov_.get() : colour_.get(); }
   VkPipeline depthPipeline() const { return depth_.get(); }
@@ -57,11 +57,14 @@ class MaterialPipeline {
   UniqueDescriptorSetLayout setLayouts_[2];
   UniquePipelineLayout layout_;
   UniquePipeline colour_, depth_;
-  UniquePipeline aov_;  // blended materials, or a multisampled lit pass
+  UniquePipeline aov_;  // for the AOV pass: its target is full-float, single-sampled
 };
 
 // Formats of the renderer's attachments.
-inline constexpr VkFormat kColourFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // AOVs read back unclamped, exactly
+// Lit frames are half floats, as engines' colour targets are; AOVs are read back
+// unclamped and exactly, so they stay full floats.
+inline constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kAovFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 }  // namespace wg::vk
