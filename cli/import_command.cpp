@@ -64,9 +64,9 @@ OptionTable importOptionTable(ImportOptions& o) {
                  o.searchPath.push_back(v);
                  return std::string();
                }},
-              {"--missing-images", "", "error|placeholder",
-               "MaterialX: a missing image is an error (default), or the\n"
-               "placeholder image, with a warning",
+              {"--missing-images", "", "MODE",
+               "MaterialX: error (default): a missing image is an error;\n"
+               "placeholder: the placeholder image, with a warning",
                [&o](const std::string& v) {
                  if (v != "error" && v != "placeholder") return "--missing-images takes error or placeholder, not '" + quoteUserText(v) + "'";
                  o.missingImages = v == "error" ? mtlx::MissingImages::Error : mtlx::MissingImages::Placeholder;
@@ -94,6 +94,9 @@ int parseImportOptions(int argc, char** argv, ImportOptions& o) {
   if (o.model.empty()) return usageError("no model; write 'weathergen import MODEL.gltf -o DIR'", o.json);
   if (o.outputDir.empty()) return usageError("no output directory; pass -o DIR", o.json);
   if (o.presetGiven && !o.presetMap.empty()) return usageError("--weather-preset and --preset-map exclude each other", o.json);
+  bool materialX = std::filesystem::path(o.model).extension() == ".mtlx";
+  if (!materialX && (!o.searchPath.empty() || o.missingImages != mtlx::MissingImages::Error))
+    return usageError("--search-path and --missing-images are for MaterialX documents (.mtlx)", o.json);
   return -1;
 }
 
@@ -149,7 +152,7 @@ int importMaterialX(const ImportOptions& o) {
   DiagnosticList diagnostics;
   auto document = mtlx::loadDocument(o.model, o.searchPath, diagnostics);
   std::optional<mtlx::ImportedDocument> imported;
-  if (document) imported = mtlx::importDocument(*document, {*presets, o.missingImages}, diagnostics);
+  if (document) imported = mtlx::importDocument(*document, {*presets, o.missingImages, o.displacement}, diagnostics);
   printDiagnostics(diagnostics.items(), o.json);
   if (!imported) return kExitBadInput;
   if (std::string e = replacedInput(document->inputFiles(), imported->files, o.outputDir); !e.empty()) return usageError(e, o.json);

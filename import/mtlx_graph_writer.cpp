@@ -177,8 +177,8 @@ class GraphWriter {
     graph["alphaMode"] = alphaMode_;
     if (alphaMode_ == "mask") graph["alphaCutoff"] = alphaCutoff_;
     graph["doubleSided"] = false;
-    graph["weather"] = naming_.weatherPreset == "none"
-                           ? Json("none")
+    graph["weather"] = naming_.weatherPreset == "none" || naming_.snowDisplacement
+                           ? Json(naming_.weatherPreset)
                            : Json{{"preset", naming_.weatherPreset}, {"effects", {{"displacement", false}}}};
     return graph;
   }

@@ -26,6 +26,7 @@ struct GraphNaming {
   std::string name;           // the graph's name and file stem
   std::string description;
   std::string weatherPreset;  // a preset name, "none" for no weather
+  bool snowDisplacement = false;  // off, as glTF import has it, unless asked for
 };
 
 // The graph of `material` (a <surfacematerial>), or nullopt after reporting its errors.

@@ -166,7 +166,7 @@ std::optional<ImportedDocument> importDocument(const Document& document, const I
   std::map<std::string, std::string> graphOf;
   for (std::size_t i = 0; i < materials.size(); ++i) {
     GraphNaming naming{stems[i], "MaterialX material '" + names[i] + "' of " + index["document"].get<std::string>(),
-                       settings.presets.presetFor(names[i])};
+                       settings.presets.presetFor(names[i]), settings.snowDisplacement};
     auto graph = materialGraph(document, materials[i], naming, imageFiles, diagnostics);
     if (!graph) continue;
     std::string file = stems[i] + ".json";

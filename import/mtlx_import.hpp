@@ -22,6 +22,7 @@ enum class MissingImages { Error, Placeholder };
 struct ImportSettings {
   gltf::PresetChoice presets = gltf::PresetChoice::everywhere("rock");
   MissingImages missingImages = MissingImages::Error;
+  bool snowDisplacement = false;  // see GraphNaming::snowDisplacement
 };
 
 struct ImportedDocument {
