@@ -6,6 +6,14 @@
 
 namespace wg {
 
+namespace {
+std::string replacesMessage(const PlannedOutput& output, const std::string& input) {
+  const std::string written = quoteUserText(output.path.string(), 300);
+  const std::string also = output.path.string() == input ? "" : ", which is '" + quoteUserText(input, 300) + "'";
+  return output.option + " writes '" + written + "'" + also + ", a file this run reads; choose another output path";
+}
+}  // namespace
+
 void RunInputs::add(const std::filesystem::path& input) {
   struct stat st {};
   if (::stat(input.c_str(), &st) != 0) return;
@@ -25,9 +33,7 @@ std::string RunInputs::checkOutputs(const std::vector<PlannedOutput>& outputs) c
     struct stat st {};
     if (::stat(output.path.c_str(), &st) != 0) continue;  // a new file replaces nothing
     for (const auto& input : inputs_)
-      if (input.device == st.st_dev && input.inode == st.st_ino)
-        return output.option + " writes '" + quoteUserText(output.path.string(), 300) + "', which is '" +
-               quoteUserText(input.path, 300) + "', a file this run reads; choose another output path";
+      if (input.device == st.st_dev && input.inode == st.st_ino) return replacesMessage(output, input.path);
   }
   return "";
 }

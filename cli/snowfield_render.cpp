@@ -5,12 +5,37 @@
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/run_inputs.hpp"
 #include "host/display_image.hpp"
 #include "host/image/contact_sheet.hpp"
 #include "host/image/png_file.hpp"
 #include "host/snowfield/snowfield_scene.hpp"
 
 namespace wg {
+
+namespace {
+
+std::filesystem::path stripPath(const SnowfieldRenderOptions& o) {
+  return std::filesystem::path(o.output).replace_extension(".strip.png");
+}
+
+std::filesystem::path framePath(const SnowfieldRenderOptions& o, std::size_t index) {
+  char name[64];
+  std::snprintf(name, sizeof name, "snowfield-%02zu.png", index + 1);
+  return std::filesystem::path(o.framesDir) / name;
+}
+
+// The pictures against the bundled graphs and images the scene reads, known once the
+// first frame has compiled them, before any picture is written.
+std::string outputsReplaceInputs(const SceneRenderer& renderer, const SnowfieldRenderOptions& o, std::size_t frameCount) {
+  RunInputs inputs;
+  inputs.add(renderer.materialInputFiles());
+  std::vector<PlannedOutput> outputs{{"-o", o.output}, {"-o", stripPath(o)}};
+  for (std::size_t i = 0; i < frameCount && !o.framesDir.empty(); ++i) outputs.push_back({"--frames", framePath(o, i)});
+  return inputs.checkOutputs(outputs);
+}
+
+}  // namespace
 
 int renderSnowfield(const SnowfieldRenderOptions& o) {
   std::string error;
@@ -37,12 +62,12 @@ int renderSnowfield(const SnowfieldRenderOptions& o) {
       std::fprintf(stderr, "weathergen: error: Vulkan validation messages\n");
       return kExitInternal;
     }
+    if (i == 0)
+      if (std::string e = outputsReplaceInputs(renderer, o, times.size()); !e.empty()) return usageError(e);
     Image img = toDisplayImage(frame);
     if (!o.framesDir.empty()) {
       std::filesystem::create_directories(o.framesDir);
-      char name[64];
-      std::snprintf(name, sizeof name, "snowfield-%02zu.png", i + 1);
-      if (std::string e = image::writePng((std::filesystem::path(o.framesDir) / name).string(), img); !e.empty()) {
+      if (std::string e = image::writePng(framePath(o, i).string(), img); !e.empty()) {
         std::fprintf(stderr, "weathergen: error: %s\n", e.c_str());
         return kExitBadInput;
       }
@@ -52,14 +77,14 @@ int renderSnowfield(const SnowfieldRenderOptions& o) {
   }
   const std::string title = "weathergen  snowfield: prints that leave the window come back";
   constexpr int kSheetColumns = 3;
-  std::filesystem::path stripPath = std::filesystem::path(o.output).replace_extension(".strip.png");
+  const std::string stripFile = stripPath(o).string();
   for (auto [path, picture] : {std::pair{o.output, image::contactSheet(title, frames, kSheetColumns)},
-                               std::pair{stripPath.string(), image::frameStrip(strip)}})
+                               std::pair{stripFile, image::frameStrip(strip)}})
     if (std::string e = image::writePng(path, picture); !e.empty()) {
       std::fprintf(stderr, "weathergen: error: %s\n", e.c_str());
       return kExitBadInput;
     }
-  if (o.progress) std::fprintf(stderr, "render: wrote %s and %s\n", o.output.c_str(), stripPath.string().c_str());
+  if (o.progress) std::fprintf(stderr, "render: wrote %s and %s\n", o.output.c_str(), stripFile.c_str());
   return kExitOk;
 }
 

@@ -6,6 +6,7 @@ with exit 2 naming the input, and every file is left as it was. bench-render and
 bench-snow write no file, so they have no output to check."""
 
 import os
+import shutil
 import unittest
 
 import hostile_support as hs
@@ -101,6 +102,16 @@ class Identity(HostileCase):
         self.plant(self.path("frames", "stand-g-01-stage-0.png"), self.path("g/tex.png"), "hard link")
         self.refused(["render", "--material", self.graph, "--size", "32x32", "--timeline", self.timeline,
                       "-o", self.path("x.png"), "--frames", self.path("frames")], "tex.png", vulkan=True)
+
+    # The snowfield reads the bundled graphs (here a copy, through --graphs).
+    def test_render_snowfield_output_and_frames(self):
+        graphs = self.path("graphs")
+        shutil.copytree(self.source("graphs"), graphs)
+        base = ["render", "--scene", "snowfield", "--graphs", graphs, "--size", "16x16"]
+        self.refused(base + ["-o", os.path.join(graphs, "snowfield.json")], "snowfield.json", vulkan=True)
+        os.mkdir(self.path("frames"))
+        os.link(os.path.join(graphs, "snow_layer.json"), self.path("frames", "snowfield-02.png"))
+        self.refused(base + ["-o", self.path("x.png"), "--frames", self.path("frames")], "snow_layer.json", vulkan=True)
 
 
 if __name__ == "__main__":
