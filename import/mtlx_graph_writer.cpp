@@ -709,7 +709,7 @@ class GraphWriter {
     std::string space = inherited(file, "colorspace");
     if (type != "color3" && type != "color4") return "linear";
     if (space == "srgb_texture") return "srgb";
-    if (!space.empty() && space != "lin_rec709")
+    if (!space.empty() && space != "lin_rec709" && space != "none")  // "none": the bytes as they are
       warnAdjusted(file, "colour space '" + quoteUserText(space) + "' is read as lin_rec709",
                    "the graph reads srgb_texture and lin_rec709; convert the image to one of them");
     return "linear";
