@@ -23,6 +23,13 @@ render road-rain --scene road --camera orbit:150,18,30 --weather precipitation=0
 render stand-rock-snow --material graphs/rock.json --camera sun-side --weather temperature=-4,snowLevel=0.6,frostLevel=0.5
 render model-engine-snow --model /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb \
   --model-scale 0.01 --weather temperature=-3,snowLevel=0.6,frostLevel=0.4
+# A MaterialX material (the MaterialX project's procedural marble) on the stand, dry and in snow.
+build/weathergen import -q "${WEATHERGEN_MATERIALX_EXAMPLES:-../shared/materialx}/StandardSurface/standard_surface_marble_solid.mtlx" \
+  -o "$tmp/marble" 2>/dev/null
+render materialx-marble-dry --material "$tmp/marble/standard_surface_marble_solid_Marble_3D.json"
+render materialx-marble-snow --material "$tmp/marble/standard_surface_marble_solid_Marble_3D.json" \
+  --weather temperature=-5,precipitation=0.5,snowLevel=0.5
+rm -rf "$tmp/marble"
 # The snowfield writes a contact sheet of its key moments; keep the second: trails and ruts.
 build/weathergen render --scene snowfield --size "$size" --device cpu -q --frames "$tmp/snowfield" -o "$tmp/sheet.png"
 cp "$(ls "$tmp"/snowfield/*.png | sed -n 2p)" "$tmp/snowfield-prints.png"
