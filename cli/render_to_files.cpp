@@ -126,6 +126,10 @@ RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPl
   } catch (const MaterialCompileError& e) {
     printDiagnostics(inModelTerms(e.diagnostics(), plan.modelOrigins), false);
     result.exitCode = kExitBadInput;
+  } catch (const vk::OutOfMemory& e) {
+    std::fprintf(stderr, "weathergen: error: the device ran out of memory (%s); render with a smaller --size or --samples 1\n",
+                 e.what());
+    result.exitCode = kExitBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "weathergen: error: %s\n", quoteUserText(e.what(), 1000).c_str());
     result.exitCode = kExitInternal;

@@ -9,7 +9,10 @@
 namespace wg::vk {
 
 void check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed (VkResult " + std::to_string(result) + ")");
+  if (result == VK_SUCCESS) return;
+  const std::string message = std::string(what) + " failed (VkResult " + std::to_string(result) + ")";
+  if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY) throw OutOfMemory(message);
+  throw std::runtime_error(message);
 }
 
 namespace {

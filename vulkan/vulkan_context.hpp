@@ -4,6 +4,7 @@
 #include <vulkan/vulkan.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -103,7 +104,15 @@ class Context {
   bool borrowed_ = false;
 };
 
-// Throws std::runtime_error naming the call when a Vulkan call fails.
+// A Vulkan call ran out of device or host memory: a resource limit the input met (a
+// frame or texture too large), not a bug.
+class OutOfMemory : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws OutOfMemory, or std::runtime_error for any other failure, naming the call when
+// a Vulkan call fails.
 void check(VkResult result, const char* what);
 
 }  // namespace wg::vk

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 namespace wg {
 namespace {
 
@@ -58,6 +60,21 @@ TEST(FrameTargetPlan, ASideOverTheDeviceLimitIsRefused) {
   const FrameTargetPlan plan = planFrameTargets(8192, 100, 1, limits);
   EXPECT_EQ(plan.samples, 0u);
   EXPECT_NE(plan.note.find("4096x50"), std::string::npos) << plan.note;
+}
+
+// What still runs out of memory after planning is a resource limit too, which render
+// reports with exit 1, not an internal error.
+TEST(VulkanCheck, OutOfMemoryIsItsOwnError) {
+  EXPECT_THROW(vk::check(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory"), vk::OutOfMemory);
+  EXPECT_THROW(vk::check(VK_ERROR_OUT_OF_HOST_MEMORY, "vkAllocateMemory"), vk::OutOfMemory);
+  try {
+    vk::check(VK_ERROR_DEVICE_LOST, "vkQueueSubmit");
+    FAIL() << "no exception";
+  } catch (const vk::OutOfMemory&) {
+    FAIL() << "a lost device is not a memory limit";
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_NO_THROW(vk::check(VK_SUCCESS, "vkCreateImage"));
 }
 
 }  // namespace
