@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "cli/option_table.hpp"
+#include "cli/run_inputs.hpp"
 #include "cli/staged_directory.hpp"
 #include "compiler/literal.hpp"
 #include "import/gltf_asset.hpp"
@@ -100,22 +101,19 @@ int parseImportOptions(int argc, char** argv, ImportOptions& o) {
   return -1;
 }
 
-// The model and the files it reads must never be replaced by an output.
-std::string outputOverwritesInput(const gltf::Asset& asset, const std::filesystem::path& dir, const gltf::ImportedModel& imported) {
-  std::error_code ec;
-  std::vector<std::filesystem::path> inputs;
-  for (const auto& f : asset.inputFiles()) inputs.push_back(std::filesystem::weakly_canonical(f, ec));
-  for (const auto& f : imported.files) {
-    std::filesystem::path target = std::filesystem::weakly_canonical(dir / f.name, ec);
-    if (std::find(inputs.begin(), inputs.end(), target) != inputs.end())
-      return "the output '" + quoteUserText(f.name) + "' would replace the model or a file it reads";
-  }
-  return "";
+// The model or document and the files it reads must never be replaced by an output.
+std::string replacedInput(const std::vector<std::filesystem::path>& inputs, const std::vector<gltf::ImportedFile>& files,
+                          const std::filesystem::path& dir) {
+  RunInputs read;
+  read.add(inputs);
+  std::vector<PlannedOutput> outputs;
+  for (const auto& f : files) outputs.push_back({"-o", dir / f.name});
+  return read.checkOutputs(outputs);
 }
 
 int writeImport(const gltf::Asset& asset, const gltf::ImportedModel& imported, const ImportOptions& o) {
-  if (std::string e = outputOverwritesInput(asset, o.outputDir, imported); !e.empty())
-    return usageError(e + "; choose another output directory", o.json);
+  if (std::string e = replacedInput(asset.inputFiles(), imported.files, o.outputDir); !e.empty())
+    return usageError(e, o.json);
   StagedDirectory out(o.outputDir);
   for (const auto& f : imported.files)
     if (std::string e = out.stage(f.name, f.bytes); !e.empty()) return usageError(e, o.json);
@@ -124,18 +122,6 @@ int writeImport(const gltf::Asset& asset, const gltf::ImportedModel& imported, c
     std::printf("import: %zu material graph(s) and %zu image(s) from %s into %s (index: %s)\n",
                  imported.materialGraphs.size() + (imported.defaultGraph.empty() ? 0 : 1), asset.model.images.size(),
                  quoteUserText(asset.file, 200).c_str(), quoteUserText(o.outputDir, 200).c_str(), imported.indexFile.c_str());
-// The document and the files it includes must never be replaced by an output.
-std::string replacedInput(const std::vector<std::filesystem::path>& inputs, const std::vector<gltf::ImportedFile>& files,
-                          const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::vector<std::filesystem::path> read;
-  for (const auto& f : inputs) read.push_back(std::filesystem::weakly_canonical(f, ec));
-  for (const auto& f : files)
-    if (std::find(read.begin(), read.end(), std::filesystem::weakly_canonical(dir / f.name, ec)) != read.end())
-      return "the output '" + quoteUserText(f.name) + "' would replace the document or a file it includes; choose another output directory";
-  return "";
-}
-
 // Publishes imported files into the output directory, all or none; "" or the error.
 std::string publish(const std::vector<gltf::ImportedFile>& files, const std::string& dir) {
   StagedDirectory out(dir);
