@@ -512,9 +512,11 @@ class GraphWriter {
         {"noise2d", &GraphWriter::noise2d},       {"noise3d", &GraphWriter::noise3d},     {"fractal3d", &GraphWriter::fractal3d},
         {"ifgreater", &GraphWriter::ifGreater},   {"ifgreatereq", &GraphWriter::ifGreater}, {"rgbtohsv", &GraphWriter::rgbToHsv},
         {"hsvtorgb", &GraphWriter::hsvToRgb},
-        {"place2d", &GraphWriter::place2d},
+        {"place2d", &GraphWriter::place2d},       {"gltf_image", &GraphWriter::gltfImage},
+        {"gltf_normalmap", &GraphWriter::gltfNormalMap},
     };
     if (category.starts_with("separate")) return separate(c, output);
+    if (category == "gltf_colorimage") return gltfColorImage(c, output);
     auto it = kNodes.find(category);
     if (it == kNodes.end()) {
       diags_.report(DiagCode::MtlxUnsupportedNode, doc_.locate(n),
@@ -717,30 +719,63 @@ class GraphWriter {
 
   Value image(const Context& c) {
     std::string category = c.node.name();
-    pugi::xml_node file = childInput(c.node, "file");
-    if (!file || !file.attribute("value"))
-      return schemaError(c.node, "image '" + quoteUserText(nameOf(c.node)) + "'", "a file input with a value", "none", c.type);
     if (category == "hextiledimage")
       warnAdjusted(c.node, "hextiledimage '" + quoteUserText(nameOf(c.node)) + "' is read as a plain tiled image",
                    "the graph has no hexagonal tiling; tiling repeats may show");
-    auto written = images_(file, inherited(file, "fileprefix") + file.attribute("value").value());
-    if (!written) {
-      failed_ = true;
-      return failedValue(c.type);
+    return sampleImage(c, textureCoordinate(c, category), c.type);
+  }
+
+  // glTF's image nodes: a place2d about the image's top-left corner (glTF's uv origin),
+  // the image, then gltf_image's factor.
+  Value gltfImage(const Context& c) {
+    Value texel = sampleImage(c, placement(c, c.id + "_place", Json::array({0.0, 1.0})), c.type);
+    if (!childInput(c.node, "factor")) return texel;
+    return node(c.id + "_factor", "multiply", {{"a", texel.input()}, {"b", inEither(c, "factor", 1).input()}}, c.type);
+  }
+
+  // gltf_colorimage: image x color x geomcolor; outputs outcolor (rgb) and outa.
+  Value gltfColorImage(const Context& c, const std::string& output) {
+    if (output != "outcolor" && output != "outa")
+      return schemaError(c.node, "the output of gltf_colorimage '" + quoteUserText(nameOf(c.node)) + "'", "outcolor or outa",
+                         "'" + quoteUserText(output) + "'", "float");
+    auto key = std::make_pair(c.node.internal_object(), std::string("rgba"));
+    if (!done_.count(key)) {
+      Value texel = sampleImage(c, placement(c, c.id + "_place", Json::array({0.0, 1.0})), "color4");
+      Value colour = in(c, "color", "color4", splat(1, 4)), geometry = in(c, "geomcolor", "color4", splat(1, 4));
+      Value tinted = node(c.id + "_color", "multiply", {{"a", texel.input()}, {"b", colour.input()}}, "color4");
+      done_[key] = node(c.id + "_geomcolor", "multiply", {{"a", tinted.input()}, {"b", geometry.input()}}, "color4");
     }
-    Json texture{{"file", *written}, {"colorSpace", textureColorSpace(file, c.type)}};
+    const Value& rgba = done_[key];
+    return output == "outa" ? swizzle(c.id + "_a", rgba, "w", "float") : swizzle(c.id + "_rgb", rgba, "xyz", "color3");
+  }
+
+  // gltf_normalmap: a tangent-space normal map at the placed uv.
+  Value gltfNormalMap(const Context& c) {
+    Value texel = sampleImage(c, placement(c, c.id + "_place", Json::array({0.0, 1.0})), "vector3");
+    Value n = node(c.id, "normal_unpack", {{"rgb", texel.input()}, {"strength", 1.0}}, "vector3");
+    n.tangentNormal = true;
+    return n;
+  }
+
+  // The node's file sampled at `uv` (MaterialX's, v up), as `type`.
+  Value sampleImage(const Context& c, const Value& uv, const std::string& type) {
+    pugi::xml_node file = childInput(c.node, "file");
+    if (!file || !file.attribute("value"))
+      return schemaError(c.node, "image '" + quoteUserText(nameOf(c.node)) + "'", "a file input with a value", "none", type);
+    auto written = images_(file, inherited(file, "fileprefix") + file.attribute("value").value());
+    if (!written) return failedValue(type);
+    Json texture{{"file", *written}, {"colorSpace", textureColorSpace(file, type)}};
     std::string u = addressMode(c, "uaddressmode", "periodic"), v = addressMode(c, "vaddressmode", "periodic");
     texture["wrap"] = u == v ? Json(u) : Json::array({u, v});
     texture["filter"] = std::string(childInput(c.node, "filtertype").attribute("value").value()) == "closest" ? "nearest" : "linear";
     std::string name = textureName(texture);
-    Value uv = textureCoordinate(c, category);
-    Value texel = node(c.id, "sample", {{"texture", name}, {"uv", flippedV(c.id + "_uv", uv).input()}}, "color4", "rgba");
+    Value texel = node(c.id + "_texel", "sample", {{"texture", name}, {"uv", flippedV(c.id + "_uv", uv).input()}}, "color4", "rgba");
     std::string base = texel.link.substr(0, texel.link.rfind('.') + 1);
-    int width = widthOf(c.type);
-    if (width == 1) return {Json(), base + "r", c.type};
-    if (width == 3) return {Json(), base + "rgb", c.type};
-    if (width == 4) return {Json(), base + "rgba", c.type};
-    return swizzle(c.id + "_rg", texel, "xy", c.type);
+    int width = widthOf(type);
+    if (width == 1) return {Json(), base + "r", type};
+    if (width == 3) return {Json(), base + "rgb", type};
+    if (width == 4) return {Json(), base + "rgba", type};
+    return swizzle(c.id + "_rg", texel, "xy", type);
   }
 
   // One texture per distinct file and sampler.
@@ -766,22 +801,24 @@ class GraphWriter {
 
   // place2d, in MaterialX's order: (uv - pivot) / scale, rotated clockwise by `rotate`
   // degrees, minus offset, plus pivot.
-  Value place2d(const Context& c) {
-    Value uv = childInput(c.node, "texcoord") ? in(c, "texcoord", "vector2", Json()) : defaultTexcoord(c.id + "_texcoord");
-    Value pivot = in(c, "pivot", "vector2", Json::array({0.0, 0.0})), scale = in(c, "scale", "vector2", Json::array({1.0, 1.0}));
+  Value place2d(const Context& c) { return placement(c, c.id, Json::array({0.0, 0.0})); }
+
+  Value placement(const Context& c, const std::string& id, const Json& pivotDefault) {
+    Value uv = childInput(c.node, "texcoord") ? in(c, "texcoord", "vector2", Json()) : defaultTexcoord(id + "_texcoord");
+    Value pivot = in(c, "pivot", "vector2", pivotDefault), scale = in(c, "scale", "vector2", Json::array({1.0, 1.0}));
     Value offset = in(c, "offset", "vector2", Json::array({0.0, 0.0}));
     auto degrees = literalInput(c, "rotate", 0);
     if (!degrees) return failedValue("vector2");
-    Value centred = node(c.id + "_pivot", "subtract", {{"a", uv.input()}, {"b", pivot.input()}}, "vector2");
-    Value placed = node(c.id + "_scale", "divide", {{"a", centred.input()}, {"b", scale.input()}}, "vector2");
+    Value centred = node(id + "_pivot", "subtract", {{"a", uv.input()}, {"b", pivot.input()}}, "vector2");
+    Value placed = node(id + "_scale", "divide", {{"a", centred.input()}, {"b", scale.input()}}, "vector2");
     if (*degrees != 0) {
       double a = *degrees * 3.14159265358979323846 / 180, cs = rounded(std::cos(a)), sn = rounded(std::sin(a));
-      Value x = node(c.id + "_rotx", "dot", {{"a", placed.input()}, {"b", Json::array({cs, sn})}}, "float");
-      Value y = node(c.id + "_roty", "dot", {{"a", placed.input()}, {"b", Json::array({-sn, cs})}}, "float");
-      placed = node(c.id + "_rotate", "combine2", {{"x", x.input()}, {"y", y.input()}}, "vector2");
+      Value x = node(id + "_rotx", "dot", {{"a", placed.input()}, {"b", Json::array({cs, sn})}}, "float");
+      Value y = node(id + "_roty", "dot", {{"a", placed.input()}, {"b", Json::array({-sn, cs})}}, "float");
+      placed = node(id + "_rotate", "combine2", {{"x", x.input()}, {"y", y.input()}}, "vector2");
     }
-    Value moved = node(c.id + "_offset", "subtract", {{"a", placed.input()}, {"b", offset.input()}}, "vector2");
-    return node(c.id, "add", {{"a", moved.input()}, {"b", pivot.input()}}, "vector2");
+    Value moved = node(id + "_offset", "subtract", {{"a", placed.input()}, {"b", offset.input()}}, "vector2");
+    return node(id, "add", {{"a", moved.input()}, {"b", pivot.input()}}, "vector2");
   }
 
   Value defaultTexcoord(const std::string& id) { return flippedV(id, node(id + "_mesh", "texcoord", Json::object(), "vector2")); }
