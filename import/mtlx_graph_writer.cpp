@@ -15,6 +15,12 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+// The compiler's node limit (docs/graph-format.md): a graph past it could not compile,
+// and the import stops before it holds that much. The translation recurses along node
+// chains, a few KiB of stack a node: 256 keeps it near 1 MiB; MaterialX's own examples
+// chain at most 13 nodes.
+constexpr std::size_t kMaxGraphNodes = 100000, kMaxChainDepth = 256;
+
 // A value in the graph: a literal, or a link to a node's output; with its MaterialX type.
 struct Value {
   Json literal;
@@ -214,6 +220,11 @@ class GraphWriter {
 
   // Adds a node and returns the value of its output.
   Value node(const std::string& id, const char* op, Json inputs, const std::string& type, const char* output = "out") {
+    if (nodes_.size() == kMaxGraphNodes) {
+      diags_.report(DiagCode::ResourceLimit, doc_.locate(shader_),
+                    {"the graph node count", "over " + std::to_string(kMaxGraphNodes), std::to_string(kMaxGraphNodes)});
+      failed_ = true;
+    }
     std::string unique = uniqueId(id);
     Json n{{"id", unique}, {"op", op}};
     if (!inputs.empty()) n["inputs"] = std::move(inputs);
@@ -467,6 +478,11 @@ class GraphWriter {
     auto key = std::make_pair(node.internal_object(), output);
     if (auto done = done_.find(key); done != done_.end()) return done->second;
     if (std::find(path_.begin(), path_.end(), node) != path_.end()) return cycle(node);
+    if (path_.size() == kMaxChainDepth) {
+      diags_.report(DiagCode::ResourceLimit, doc_.locate(node), {"the node chain depth", "over " + std::to_string(kMaxChainDepth),
+                                                                 std::to_string(kMaxChainDepth)});
+      return failedValue(node.attribute("type").value());
+    }
     if (failedNodes_.count(node.internal_object())) return failedValue(node.attribute("type").value());
     path_.push_back(node);
     std::size_t errorsBefore = diags_.items().size();

@@ -195,5 +195,42 @@ TEST_F(MaterialXHostile, DiagnosticsNameTheElementPath) {
 
 }
 
+// The translation recurses along node chains: a deep chain is a limit, not a crash.
+TEST_F(MaterialXHostile, DeepNodeChainIsAResourceLimit) {
+  std::string body = "  <constant name=\"n0\" type=\"color3\"><input name=\"value\" type=\"color3\" value=\"0.5, 0.5, 0.5\" /></constant>\n";
+  for (int i = 1; i < 5000; ++i)
+    body += "  <add name=\"n" + std::to_string(i) + "\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"n" +
+            std::to_string(i - 1) + "\" /></add>\n";
+  expectRejected(write("chain.mtlx", document(body + material("nodename=\"n4999\""))), "WG1007");
+}
+
+TEST_F(MaterialXHostile, ReimportIsByteIdenticalWherever) {
+  std::string text = document("  <nodegraph name=\"NG\">\n"
+                              "    <noise2d name=\"n\" type=\"float\" />\n"
+                              "    <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"float\" nodename=\"n\" /></convert>\n"
+                              "    <output name=\"out\" type=\"color3\" nodename=\"c\" />\n  </nodegraph>\n" +
+                              material("nodegraph=\"NG\" output=\"out\""));
+  fs::create_directories(dir_.path() / "elsewhere/deeper");
+  importDocument(write("same.mtlx", text), dir_.path() / "first");
+  importDocument(write("elsewhere/deeper/same.mtlx", text), dir_.path() / "second");
+  auto files = listFiles(dir_.path() / "first");
+  ASSERT_EQ(files, listFiles(dir_.path() / "second"));
+  ASSERT_EQ(files.size(), 2u);
+  for (const auto& f : files) EXPECT_EQ(readFile(dir_.path() / "first" / f), readFile(dir_.path() / "second" / f)) << f;
+}
+
+TEST_F(MaterialXHostile, PresetMapChoosesEachMaterialsWeather) {
+  std::string two = material("value=\"1, 0, 0\"");
+  std::string second = two;
+  for (auto [from, to] : {std::pair<std::string, std::string>{"\"SR\"", "\"SR2\""}, {"\"M\"", "\"Ground\""}})
+    for (std::size_t at; (at = second.find(from)) != std::string::npos;) second.replace(at, from.size(), to);
+  ImportResult run = importDocument(write("two.mtlx", document(two + second)), dir_.path() / "out", "--preset-map '*Ground*=terrain'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  auto index = nlohmann::json::parse(readFile(dir_.path() / "out/two.import.json"));
+  EXPECT_EQ(index["materials"][0]["weatherPreset"], "none");
+  EXPECT_EQ(index["materials"][1]["weatherPreset"], "terrain");
+  EXPECT_EQ(nlohmann::json::parse(readFile(dir_.path() / "out/two_Ground.json"))["weather"]["preset"], "terrain");
+}
+
 }  // namespace
 }  // namespace wg::testing
