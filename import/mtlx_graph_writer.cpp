@@ -529,7 +529,8 @@ class GraphWriter {
         {"ifgreater", &GraphWriter::ifGreater},   {"ifgreatereq", &GraphWriter::ifGreater}, {"rgbtohsv", &GraphWriter::rgbToHsv},
         {"hsvtorgb", &GraphWriter::hsvToRgb},
         {"place2d", &GraphWriter::place2d},       {"gltf_image", &GraphWriter::gltfImage},
-        {"gltf_normalmap", &GraphWriter::gltfNormalMap},
+        {"gltf_normalmap", &GraphWriter::gltfNormalMap}, {"geomcolor", &GraphWriter::vertexColour},
+        {"geompropvalue", &GraphWriter::geometricProperty},
     };
     if (category.starts_with("separate")) return separate(c, output);
     if (category == "gltf_colorimage") return gltfColorImage(c, output);
@@ -701,6 +702,26 @@ class GraphWriter {
                    "the graph knows world space only; it equals object space for an object at the origin, unrotated and unscaled");
     bool position = std::string_view(c.node.name()) == "position";
     return node(c.id, position ? "world_position" : "world_normal", Json::object(), "vector3");
+  }
+
+  // The mesh's vertex colour (colour set 0), as wide as the node's type.
+  Value vertexColour(const Context& c) {
+    Value colour = node(c.id + "_rgba", "vertex_color", Json::object(), "color4");
+    int width = widthOf(c.type);
+    return width == 4 ? Value{Json(), colour.link, c.type} : swizzle(c.id, colour, std::string("xyz").substr(0, width), c.type);
+  }
+
+  // geompropvalue: the texture coordinates and vertex colours the graph has, by their
+  // usual names (UV0/st, UV1; Cd/displayColor/color).
+  Value geometricProperty(const Context& c) {
+    std::string name = childInput(c.node, "geomprop").attribute("value").value();
+    bool uv = name == "UV0" || name == "st" || name == "UV1", colour = name == "Cd" || name == "displayColor" || name == "color";
+    if (uv && c.type == "vector2")
+      return flippedV(c.id, node(c.id + "_mesh", name == "UV1" ? "texcoord1" : "texcoord", Json::object(), "vector2"));
+    if (colour && widthOf(c.type) >= 3) return vertexColour(c);
+    return schemaError(c.node, "the geomprop of geompropvalue '" + quoteUserText(nameOf(c.node)) + "'",
+                       "UV0, st or UV1 (vector2), or Cd, displayColor or color (color3, color4)",
+                       "'" + quoteUserText(name) + "' (" + c.type + ")", c.type);
   }
 
   // --- images ---
