@@ -58,6 +58,7 @@ double median(std::vector<double> v) {
 struct BenchRenderOptions {
   std::string sceneArg = "all", device, size = "1920x1080", materialPath, modelPath;
   float modelScale = 1.f;
+  std::optional<std::string> quality;
   WeatherEffectOverrides effects;
   int frames = 30;
   unsigned samples = kDefaultColourSamples;
@@ -84,6 +85,7 @@ OptionTable benchRenderOptionTable(BenchRenderOptions& o) {
       {"--samples", "", "N", "MSAA samples per pixel of the lit pass, 1 for none (default 4)",
        [&o](const std::string& v) { return setSampleCount(v, o.samples); }},
       {"--device", "", "NAME", "Vulkan device, as render takes it", storeValue(o.device)},
+      {"--quality", "", "TIER", kQualityOptionHelp, storeChecked(o.quality, checkQualityTierName)},
       {"--effects", "", "LIST", kEffectsOptionHelp,
        [&o](const std::string& v) { return addEffectOverrides(v, o.effects); }},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
@@ -115,11 +117,12 @@ struct BenchRequests {
   RenderRequest none, neutral, branchOnly, active;
 };
 
-BenchRequests benchRequests(glm::vec3 sun, unsigned width, unsigned height, const WeatherEffectOverrides& effects) {
+BenchRequests benchRequests(glm::vec3 sun, unsigned width, unsigned height, const BenchRenderOptions& o) {
   RenderRequest base;
   base.width = width;
   base.height = height;
-  base.weatherEffects = effects;  // "none" compiles without weather, so without them
+  base.weatherEffects = o.effects;  // "none" compiles without weather, so without them or a tier
+  base.quality = o.quality;
   base.weather.conditions.sunDirection = {sun.x, sun.y, sun.z};
   base.weather.conditions.temperature = 15.f;  // neutral: dry and warm, every level 0
   BenchRequests r{base, base, base, base};
@@ -142,7 +145,7 @@ struct Series {
 // measuring them one after another made "none" alone vary by a fifth between runs.
 std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string& graphsDir, unsigned width,
                          unsigned height, const BenchRenderOptions& o) {
-  const BenchRequests requests = benchRequests(scene.towardsSun, width, height, o.effects);
+  const BenchRequests requests = benchRequests(scene.towardsSun, width, height, o);
   const RenderRequest* order[] = {&requests.none, &requests.neutral, &requests.branchOnly, &requests.active};
   std::string name = scene.name;
   SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(o.samples));
@@ -174,6 +177,7 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o
   std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
               "warm-up rounds), colour pass only.\n\n",
               ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpRounds);
+  if (o.quality) std::printf("Quality tier of every weathered configuration: %s.\n\n", o.quality->c_str());
   if (!o.effects.empty())
     std::printf("Effects switched in every weathered configuration: %s.\n\n", effectOverridesText(o.effects).c_str());
   std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | "

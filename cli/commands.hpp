@@ -12,5 +12,6 @@ int runRenderCommand(int argc, char** argv);
 int runBenchRenderCommand(int argc, char** argv);
 int runBenchSnowCommand(int argc, char** argv);
 int runImportCommand(int argc, char** argv);
+int runStatsCommand(int argc, char** argv);
 
 }  // namespace wg

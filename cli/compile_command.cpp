@@ -71,6 +71,7 @@ struct Options {
   bool quiet = false;
   bool help = false;
   std::optional<std::string> weatherPreset;
+  std::optional<std::string> quality;
   WeatherEffectOverrides effects;
   int jobs = 0;  // 0: one per core
   std::string depfile;
@@ -140,6 +141,7 @@ std::vector<Option> materialAndReportOptions(Options& o) {
       {"--weather-preset", "", "NAME",
        "weather preset for every graph, replacing the graph's own\n(rock, terrain, foliage, river, road, none)",
        storeChecked(o.weatherPreset, checkWeatherPresetName)},
+      {"--quality", "", "TIER", kQualityOptionHelp, storeChecked(o.quality, checkQualityTierName)},
       {"--effects", "", "LIST", kEffectsOptionHelp,
        [&o](const std::string& v) { return addEffectOverrides(v, o.effects); }},
       {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
@@ -264,6 +266,7 @@ CompileOptions compileOptionsFor(const Options& o) {
   options.optimize = o.optimize;
   options.weatherPreset = o.weatherPreset;
   options.weatherEffects = o.effects;
+  options.quality.requested = o.quality;
   options.hashKeyedFileStem = o.variants.has_value();
   return options;
 }

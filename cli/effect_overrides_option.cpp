@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "compiler/literal.hpp"
+#include "compiler/quality_tiers.hpp"
 
 namespace wg {
 
@@ -43,6 +44,11 @@ std::string addEffectOverrides(const std::string& text, WeatherEffectOverrides& 
     if (comma == std::string_view::npos) return "";
     rest.remove_prefix(comma + 1);
   }
+}
+
+std::string checkQualityTierName(const std::string& name) {
+  if (findQualityTier(name)) return "";
+  return "--quality: unknown tier '" + quoteUserText(name) + "' (tiers: " + qualityTierList() + ")";
 }
 
 std::string effectOverridesText(const WeatherEffectOverrides& effects) {

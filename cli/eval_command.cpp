@@ -47,6 +47,7 @@ struct Options {
   std::vector<std::string> graphs;  // one, checked after parsing
   std::string graph;
   std::optional<std::string> weatherPreset;
+  std::optional<std::string> quality;
   WeatherEffectOverrides effects;
   std::vector<std::pair<std::string, std::string>> lists;  // flag, "name=value,..." in order
   bool help = false;
@@ -66,6 +67,7 @@ OptionTable evalOptionTable(Options& o) {
               {"--weather-preset", "", "NAME",
                "weather preset, replacing the graph's own\n(rock, terrain, foliage, river, road, none)",
                storeChecked(o.weatherPreset, checkWeatherPresetName)},
+              {"--quality", "", "TIER", kQualityOptionHelp, storeChecked(o.quality, checkQualityTierName)},
               {"--effects", "", "LIST", kEffectsOptionHelp,
                [&o](const std::string& v) { return addEffectOverrides(v, o.effects); }},
               {"--weather", "", "name=value,...", "frame block weather members (below)", storeList(o, "--weather")},
@@ -194,7 +196,8 @@ std::optional<IrGraph> buildEvalGraph(const Options& o) {
   std::optional<IrGraph> ir;
   if (auto text = readGraphFile(o.graph, diagnostics))
     ir = buildOptimizedIr(o.graph, std::move(*text), diagnostics,
-                          CompileOptions{.weatherPreset = o.weatherPreset, .weatherEffects = o.effects});
+                          CompileOptions{.weatherPreset = o.weatherPreset, .weatherEffects = o.effects,
+                                         .quality = {.requested = o.quality}});
   if (!diagnostics.empty()) printDiagnostics(diagnostics.items(), o.json);
   if (!ir || diagnostics.hasErrors()) return std::nullopt;
   return ir;

@@ -13,6 +13,7 @@ constexpr const char* kUsage = R"(weathergen - weather-aware material graph comp
 Usage:
   weathergen compile GRAPH... -o DIR [options]   compile material graphs
   weathergen eval GRAPH [options]                evaluate a material at one point on the CPU
+  weathergen stats GRAPH... [--json]             SPIR-V cost per material, tier, stage, language
   weathergen import MODEL.gltf -o DIR            glTF 2.0 materials -> weather-aware graphs
   weathergen render --scene NAME -o OUT.png      draw a validation scene on Vulkan (lavapipe)
   weathergen bench-render [--scene NAME]         GPU time of the weather, timestamp queries
@@ -61,6 +62,7 @@ int runSubcommand(int argc, char** argv) {
   }
   if (command == "compile") return wg::runCompileCommand(argc, argv);
   if (command == "eval") return wg::runEvalCommand(argc, argv);
+  if (command == "stats") return wg::runStatsCommand(argc, argv);
   if (command == "import") return wg::runImportCommand(argc, argv);
   if (command == "render") return wg::runRenderCommand(argc, argv);
   if (command == "bench-render") return wg::runBenchRenderCommand(argc, argv);

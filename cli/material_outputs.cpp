@@ -11,15 +11,15 @@ namespace wg {
 namespace {
 
 constexpr std::array<OutputTarget, 7> kOutputTargets = {{
-    {"glsl", "NAME.vert.glsl NAME.frag.glsl", &OutputTargets::glsl, true},
-    {"hlsl", "NAME.vert.hlsl NAME.frag.hlsl", &OutputTargets::hlsl, true},
-    {"spirv", "NAME.{glsl,hlsl}.{vert,frag}.spv and .spvasm", &OutputTargets::spirv, true},
-    {"msl", "NAME.vert.msl NAME.frag.msl", &OutputTargets::msl, false},
-    {"glsles", "NAME.vert.es.glsl NAME.frag.es.glsl", &OutputTargets::glslEs, false},
+    {"glsl", "NAME.vert.glsl NAME.frag.glsl", &OutputTargets::glsl, true, "high"},
+    {"hlsl", "NAME.vert.hlsl NAME.frag.hlsl", &OutputTargets::hlsl, true, "high"},
+    {"spirv", "NAME.{glsl,hlsl}.{vert,frag}.spv and .spvasm", &OutputTargets::spirv, true, "high"},
+    {"msl", "NAME.vert.msl NAME.frag.msl", &OutputTargets::msl, false, "low"},
+    {"glsles", "NAME.vert.es.glsl NAME.frag.es.glsl", &OutputTargets::glslEs, false, "low"},
     {"surface", "NAME.surface.glsl NAME.surface.es.glsl NAME.surface.hlsl (the unlit surface)",
-     &OutputTargets::surface, false},
+     &OutputTargets::surface, false, "high"},
     {"filament", "NAME.mat (a Filament material lighting the surface; build it with matc)", &OutputTargets::filament,
-     false},
+     false, "high"},
 }};
 
 }  // namespace
@@ -58,6 +58,18 @@ void applyOutputTargets(const OutputTargets& targets, CompileOptions& options) {
   options.emitSurface = targets.surface;
   options.emitFilament = targets.filament;
   options.emitCppHeader = targets.header;
+  // Every target chosen defaults to low (GLSL ES, MSL: mobile GPUs): the tier is low;
+  // any other among them makes it high, for one compile serves every target.
+  bool allLow = false;
+  for (const auto& target : kOutputTargets)
+    if (targets.*(target.flag)) {
+      if (target.defaultQuality != "low") {
+        allLow = false;
+        break;
+      }
+      allLow = true;
+    }
+  options.quality.fallback = allLow ? "low" : "high";
 }
 
 std::map<std::string, std::string> materialOutputs(const CompiledMaterial& m, const OutputTargets& targets,

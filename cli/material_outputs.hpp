@@ -21,13 +21,14 @@ struct OutputTarget {
   std::string_view files;  // what it writes, for the usage text
   bool OutputTargets::*flag;
   bool inAll;  // part of --target all
+  std::string_view defaultQuality;  // the tier it gets when nothing else names one
 };
 std::span<const OutputTarget> outputTargets();
 
 // A comma-separated --target list; nullopt with `error` set on an unknown name.
 std::optional<OutputTargets> parseOutputTargets(std::string_view list, std::string& error);
 
-// The compile options the targets need.
+// The compile options the targets need, and the quality tier they default to.
 void applyOutputTargets(const OutputTargets& targets, CompileOptions& options);
 
 // path -> bytes, every path under `dir` and named after the material's file stem.

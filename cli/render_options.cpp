@@ -129,6 +129,7 @@ std::vector<Option> weatherOptions(RenderOptions& o) {
          o.weatherPreset = v;
          return checkWeatherPresetName(v);
        }},
+      {"--quality", "", "TIER", kQualityOptionHelp, storeChecked(o.request.quality, checkQualityTierName)},
       {"--effects", "", "LIST", kEffectsOptionHelp,
        [&o](const std::string& v) { return addEffectOverrides(v, o.request.weatherEffects); }},
   };

@@ -462,7 +462,7 @@ class Builder {
 
   void resolveWeather() {
     auto config = resolveWeatherConfig(graph_.weather, graph_.weatherPointer.empty() ? "/weather" : graph_.weatherPointer,
-                                       options_.weatherPreset, options_.weatherEffects, doc_, diags_);
+                                       options_.weatherPreset, options_.quality, options_.weatherEffects, doc_, diags_);
     if (!config) {
       failed_ = true;
       return;

@@ -8,6 +8,7 @@
 #include "compiler/ir.hpp"
 #include "compiler/json_document.hpp"
 #include "compiler/material_graph.hpp"
+#include "compiler/quality_tiers.hpp"
 
 namespace wg {
 
@@ -21,6 +22,7 @@ struct IrLimits {
 struct IrBuildOptions {
   std::optional<std::string> weatherPreset;  // the CLI's --weather-preset, replacing the graph's
   WeatherEffectOverrides weatherEffects;    // the CLI's --effects, over the graph's own
+  QualityChoice quality;                    // the CLI's --quality, else the graph's, else the targets' default
   IrLimits limits;
 };
 

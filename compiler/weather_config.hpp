@@ -45,6 +45,7 @@ const WeatherEffectFlag* findWeatherEffectFlag(std::string_view name);  // nullp
 
 struct WeatherConfig {
   std::string preset = "none";
+  std::string quality = "high";  // the tier applied (compiler/quality_tiers.hpp)
   WeatherEffects effects;
   // Eq. 3.1 switches: inclination, sun, height, wind (a factor switched off counts as 1).
   std::array<float, 4> terms{1.f, 1.f, 1.f, 1.f};
@@ -66,14 +67,18 @@ using WeatherEffectOverrides = std::vector<std::pair<std::string, bool>>;
 std::vector<std::string_view> weatherPresetNames();
 std::optional<WeatherConfig> weatherPreset(std::string_view name);
 
+struct QualityChoice;
+
 // Resolves the graph's "weather" value (a preset name or an object with "preset" and
-// overrides), with presetOverride (the CLI's --weather-preset) replacing the preset and
-// effectOverrides applied last while the weather is active. Reports WG4001-WG4009 (an
-// unknown overridden effect as WG4006, without a location, whether or not the weather
-// is active) and returns nullopt on errors.
+// overrides), with presetOverride (the CLI's --weather-preset) replacing the preset,
+// then the quality tier (the caller's, the block's "quality" or the fallback), then
+// the block's own overrides, and effectOverrides last while the weather is active.
+// Reports WG4001-WG4009 (an unknown overridden effect or tier as WG4006, without a
+// location, whether or not the weather is active) and returns nullopt on errors.
 std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::json>& block,
                                                   const std::string& pointer,
                                                   const std::optional<std::string>& presetOverride,
+                                                  const QualityChoice& quality,
                                                   const WeatherEffectOverrides& effectOverrides,
                                                   const JsonDocument& document, DiagnosticList& diagnostics);
 

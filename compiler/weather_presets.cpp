@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "compiler/literal.hpp"
+#include "compiler/quality_tiers.hpp"
 #include "compiler/weather_config.hpp"
 
 namespace wg {
@@ -190,7 +191,7 @@ void applyNumberSetting(const std::string& key, const nlohmann::json& value, con
   auto setting = std::find_if(kNumberSettings.begin(), kNumberSettings.end(),
                               [&key](const NumberSetting& s) { return s.name == key; });
   if (setting == kNumberSettings.end()) {
-    std::vector<std::string_view> names = {"preset", "effects", "weights", "terms"};
+    std::vector<std::string_view> names = {"preset", "quality", "effects", "weights", "terms"};
     for (const auto& s : kNumberSettings) names.push_back(s.name);
     errors.report(DiagCode::UnknownWeatherKey, at, {"setting", quoteUserText(key), unknownNameHint(key, names, "settings")});
     return;
@@ -213,7 +214,7 @@ void applyOverrides(const nlohmann::json& overrides, const std::string& pointer,
                     SettingErrors& errors) {
   for (const auto& [key, value] : overrides.items()) {
     std::string at = appendPointer(pointer, key);
-    if (key == "preset" || key == "description") continue;
+    if (key == "preset" || key == "description" || key == "quality") continue;
     if (key == "effects") applyEffects(value, at, config, errors);
     else if (key == "weights" || key == "terms") applyFourNumbers(key, value, at, config, errors);
     else applyNumberSetting(key, value, at, config, errors);
@@ -237,6 +238,45 @@ bool applyEffectOverrides(const WeatherEffectOverrides& overrides, WeatherConfig
   return ok;
 }
 
+// "unknown weather quality tier 'x'", with the nearest names as its hint.
+void reportUnknownTier(DiagnosticList& diags, SourceLocation at, const std::string& name) {
+  std::vector<std::string_view> names;
+  for (const QualityTier& t : qualityTiers()) names.push_back(t.name);
+  diags.report(DiagCode::UnknownWeatherKey, std::move(at),
+               {"quality tier", quoteUserText(name), unknownNameHint(name, names, "tiers")});
+}
+
+// The tier the caller asks for, else the block's "quality", else the fallback, over the
+// preset's effects. False when a tier is unknown or the block's is not a string.
+bool applyQuality(const QualityChoice& quality, const nlohmann::json* block, const std::string& pointer,
+                  WeatherConfig& config, SettingErrors& errors) {
+  std::string name = quality.fallback;
+  SourceLocation at;
+  if (block && block->contains("quality")) {
+    const std::string qualityAt = appendPointer(pointer, "quality");
+    const nlohmann::json& value = block->at("quality");
+    if (!value.is_string()) {
+      errors.wrongKind(qualityAt, "setting 'quality'", "a tier's name (" + qualityTierList() + ")", describeJsonKind(value));
+      return false;
+    }
+    name = value.get<std::string>();
+    at = errors.doc.locate(qualityAt);
+  }
+  if (quality.requested) {
+    name = *quality.requested;
+    at = SourceLocation{};
+  }
+  const QualityTier* tier = findQualityTier(name);
+  if (!tier) {
+    reportUnknownTier(errors.diags, at, name);
+    errors.ok = false;
+    return false;
+  }
+  config.quality = tier->name;
+  applyQualityTier(*tier, config.effects);
+  return true;
+}
+
 }  // namespace
 
 const std::array<WeatherEffectFlag, kWeatherEffectCount>& weatherEffectFlags() { return kEffectFlags; }
@@ -256,6 +296,7 @@ std::optional<WeatherConfig> weatherPreset(std::string_view name) {
 
 std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::json>& block, const std::string& pointer,
                                                   const std::optional<std::string>& presetOverride,
+                                                  const QualityChoice& quality,
                                                   const WeatherEffectOverrides& effectOverrides,
                                                   const JsonDocument& doc, DiagnosticList& diags) {
   SettingErrors errors{doc, diags};
@@ -267,6 +308,7 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
                  {quoteUserText(named.name), unknownNameHint(named.name, weatherPresetNames(), "presets")});
     return std::nullopt;
   }
+  if (!applyQuality(quality, named.overrides, pointer, *config, errors)) return std::nullopt;
   if (named.overrides) applyOverrides(*named.overrides, pointer, *config, errors);
   if (!applyEffectOverrides(effectOverrides, *config, diags)) return std::nullopt;
   return errors.ok ? config : std::nullopt;

@@ -60,6 +60,7 @@ std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string tex
   IrBuildOptions buildOptions;
   buildOptions.weatherPreset = options.weatherPreset;
   buildOptions.weatherEffects = options.weatherEffects;
+  buildOptions.quality = options.quality;
   auto ir = buildIr(*graph, *document, diagnostics, buildOptions);
   if (!ir) return std::nullopt;
   if (auto violation = runPassPipeline(*ir, options.passes)) {

@@ -11,6 +11,7 @@
 #include "compiler/ir.hpp"
 #include "compiler/material_interface.hpp"
 #include "compiler/pass_pipeline.hpp"
+#include "compiler/quality_tiers.hpp"
 #include "compiler/static_switches.hpp"
 #include "driver/spirv_module_cache.hpp"
 
@@ -22,6 +23,7 @@ struct CompileOptions {
   bool optimize = false;  // spirv-opt performance passes (-O)
   std::optional<std::string> weatherPreset;  // replaces the graph's preset (--weather-preset)
   WeatherEffectOverrides weatherEffects;     // switched over the graph's own effects (--effects)
+  QualityChoice quality;                     // the tier (--quality); compiler/quality_tiers.hpp
   bool emitReflection = true;  // off for callers that only want shader text
   bool emitCppHeader = false;  // C++ std140 structs of the uniform blocks (--emit-header)
   // SPIRV-Cross translations of each stage's validated, pre-optimisation SPIR-V

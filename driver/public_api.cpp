@@ -60,6 +60,7 @@ Result compileOrThrow(std::string_view fileName, std::string_view json, const Op
   internal.optimize = options.optimize;
   if (!options.weatherPreset.empty()) internal.weatherPreset = options.weatherPreset;
   internal.weatherEffects.assign(options.effects.begin(), options.effects.end());
+  if (!options.quality.empty()) internal.quality.requested = options.quality;
   internal.emitCppHeader = options.cppHeader;
   internal.emitSurface = options.surface;
   internal.switches = wg::SwitchValues(options.switches.begin(), options.switches.end());

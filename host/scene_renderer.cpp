@@ -121,19 +121,25 @@ void SceneRenderer::uploadTerrain() {
   terrainHeight_.upload(ctx_, scene_.terrainHeights.data(), scene_.terrainHeights.size() * sizeof(float));
 }
 
-// One compiled material per graph, preset and effect overrides; the unweathered variant
-// ignores the overrides, so every request shares it.
+// One compiled material per graph, preset, quality tier and effect overrides; the
+// unweathered variant ignores the tier and the overrides, so every request shares it.
 MaterialResources& SceneRenderer::material(const std::string& graph, const std::optional<std::string>& preset,
+                                           const std::optional<std::string>& quality,
                                            const WeatherEffectOverrides& effects) {
   const bool unweathered = preset == "none";
   std::string key = graph + "|" + preset.value_or("");
-  if (!unweathered)
+  if (!unweathered) {
+    key += "|" + quality.value_or("");
     for (const auto& [name, on] : effects) key += "|" + name + (on ? "=on" : "=off");
+  }
   auto& slot = materials_[key];
   if (!slot) {
     CompileOptions options;
     options.weatherPreset = preset;
-    if (!unweathered) options.weatherEffects = effects;
+    if (!unweathered) {
+      options.weatherEffects = effects;
+      options.quality.requested = quality;
+    }
     slot = std::make_unique<MaterialResources>(ctx_, scene::graphFilePath(graph, graphsDirectory_), options);
   }
   return *slot;
@@ -192,7 +198,8 @@ std::vector<MaterialResources*> SceneRenderer::materialsFor(const RenderRequest&
   std::optional<std::string> preset = request.weatherPreset;
   if (!preset && neutral && request.unweatheredVariantWhenNeutral) preset = "none";
   std::vector<MaterialResources*> mats;
-  for (const auto& o : scene_.objects) mats.push_back(&material(o.graph, preset, request.weatherEffects));
+  for (const auto& o : scene_.objects)
+    mats.push_back(&material(o.graph, preset, request.quality, request.weatherEffects));
   return mats;
 }
 

@@ -41,6 +41,7 @@ struct RenderRequest {
   WeatherState weather;
   std::optional<std::string> weatherPreset;  // replaces every material's preset ("none" for baselines)
   WeatherEffectOverrides weatherEffects;     // switched over every weathered material's own effects
+  std::optional<std::string> quality;        // the quality tier of every weathered material (low, medium, high)
   bool shadows = true;
   // Draw only this object (the others still cast shadows and shelter from the sky);
   // "" draws all. Lets tests know which material covers a pixel.
@@ -106,7 +107,7 @@ class SceneRenderer {
   struct Pass;
   struct Frame;
   MaterialResources& material(const std::string& graph, const std::optional<std::string>& preset,
-                              const WeatherEffectOverrides& effects);
+                              const std::optional<std::string>& quality, const WeatherEffectOverrides& effects);
   vk::MaterialPipeline& pipelineOf(MaterialResources& material, const RenderRequest& request);
   void uploadTerrain();
   // The sky-exposure map, built once (sky_exposure_map.cpp).

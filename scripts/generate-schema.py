@@ -280,6 +280,9 @@ defs["weatherBlock"] = {
     "properties": {
         "preset": {"$ref": "#/$defs/weatherPreset"},
         "description": {"type": "string"},
+        "quality": {"enum": ["low", "medium", "high"],
+                    "description": "quality tier (docs/weather-model.md, Quality tiers): low = seed 000's terms, medium = "
+                                   "plus sky exposure, high = plus the looks; the CLI's --quality overrides it"},
         "effects": {"type": "object", "additionalProperties": False, "description": "switch a preset's effects on or off",
                     "properties": {e: {"anyOf": [{"type": "boolean"}, {"$ref": "#/$defs/switchedEffect"}]}
                                        for e in effectNames}},

@@ -70,5 +70,11 @@ struct ModuleInterface {
 ModuleInterface reflectModule(const SpirvWords& words);
 // Instruction count (words are grouped into instructions), for cost reports.
 std::size_t countInstructions(const SpirvWords& words);
+// What a material stats panel shows of a module: instructions, texture reads (samples,
+// fetches and gathers) and conditional branches (OpBranchConditional, OpSwitch).
+struct SpirvStatistics {
+  std::size_t instructions = 0, textureReads = 0, branches = 0;
+};
+SpirvStatistics spirvStatistics(const SpirvWords& words);
 
 }  // namespace wg

@@ -1,4 +1,5 @@
 // Validation, optimisation and disassembly with SPIRV-Tools (Vulkan 1.1 environment).
+#include <glslang/SPIRV/spirv.hpp>  // the opcode enum (Debian has no separate SPIRV-Headers)
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
@@ -49,16 +50,21 @@ std::string disassembleSpirv(const SpirvWords& words) {
   return text;
 }
 
-std::size_t countInstructions(const SpirvWords& words) {
+std::size_t countInstructions(const SpirvWords& words) { return spirvStatistics(words).instructions; }
+
+SpirvStatistics spirvStatistics(const SpirvWords& words) {
   constexpr std::size_t kHeaderWords = 5;
-  std::size_t count = 0;
+  SpirvStatistics stats;
   for (std::size_t i = kHeaderWords; i < words.size();) {
-    std::uint32_t wordCount = words[i] >> 16;  // high half of each instruction's first word
+    const std::uint32_t wordCount = words[i] >> 16;  // high half of each instruction's first word
     if (wordCount == 0) break;
+    const auto op = static_cast<spv::Op>(words[i] & 0xffff);
+    if (op >= spv::OpImageSampleImplicitLod && op <= spv::OpImageDrefGather) ++stats.textureReads;
+    if (op == spv::OpBranchConditional || op == spv::OpSwitch) ++stats.branches;
     i += wordCount;
-    ++count;
+    ++stats.instructions;
   }
-  return count;
+  return stats;
 }
 
 }  // namespace wg

@@ -43,6 +43,9 @@ struct Options {
   bool spirv = true;           // compile every stage to validated SPIR-V
   bool optimize = false;       // spirv-opt's performance passes
   std::string weatherPreset;   // "" keeps the graph's own preset
+  // Quality tier: "low" (seed 000's terms), "medium" (plus sky exposure) or "high" (plus
+  // the looks); "" keeps the graph's own, else high. An unknown tier is a diagnostic.
+  std::string quality;
   // Weather effects switched on or off over the graph's own, by name ("relief",
   // "specularAntiAliasing"...; docs/weather-model.md); an unknown name is a diagnostic.
   std::map<std::string, bool> effects;

@@ -1,0 +1,113 @@
+// Quality tiers through the CLI: compile --quality and the targets' default tier, and
+// weathergen stats, whose rows are the static budgets' source (docs/BENCHMARKS.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "process_support.hpp"
+
+namespace wg {
+namespace {
+
+using nlohmann::json;
+using testing::readFile;
+using testing::runCommand;
+using testing::shellQuote;
+using testing::TempDir;
+
+const std::string kCli = WG_CLI_PATH;
+std::string graph(const std::string& name) { return std::string(WG_SOURCE_DIR) + "/graphs/" + name + ".json"; }
+
+json reflectedEffects(const std::string& arguments, const std::filesystem::path& dir) {
+  auto r = runCommand(shellQuote(kCli) + " compile " + arguments + " -q -o " + shellQuote(dir.string()) + " 2>&1");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  return json::parse(readFile(dir / "road.reflect.json"))["weather"]["effects"];
+}
+
+TEST(QualityTiersCli, CompileQualityAndTheTargetsDefault) {
+  TempDir dir("quality");
+  EXPECT_EQ(reflectedEffects(shellQuote(graph("road")) + " --target glsl", dir.path() / "high")["ripple"], true);
+  const json low = reflectedEffects(shellQuote(graph("road")) + " --target glsl --quality low", dir.path() / "low");
+  EXPECT_EQ(low["ripple"], false);
+  EXPECT_EQ(low["skyExposure"], false);
+  // GLSL ES alone is for mobile GPUs: low unless asked otherwise.
+  EXPECT_EQ(reflectedEffects(shellQuote(graph("road")) + " --target glsles", dir.path() / "es")["skyExposure"], false);
+  EXPECT_EQ(reflectedEffects(shellQuote(graph("road")) + " --target glsles --quality medium",
+                             dir.path() / "es-medium")["skyExposure"], true);
+  // With a desktop target beside it, the one compile serves both at high.
+  EXPECT_EQ(reflectedEffects(shellQuote(graph("road")) + " --target glsles,glsl", dir.path() / "both")["ripple"], true);
+}
+
+TEST(QualityTiersCli, AnUnknownTierIsAUsageErrorListingTheTiers) {
+  auto r = runCommand(shellQuote(kCli) + " compile " + shellQuote(graph("road")) + " --quality ultra -o /tmp 2>&1");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("low, medium, high"), std::string::npos) << r.output;
+}
+
+json statsRows(const std::string& arguments) {
+  auto r = runCommand("(" + shellQuote(kCli) + " stats " + arguments + " --json 2>/dev/null)");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  return json::parse(r.output, nullptr, false);
+}
+
+// Every row of every bundled weathered graph: each tier costs at least the one below
+// it, HLSL stays within 5 % of GLSL, and the weather column is the difference from
+// preset none (which has no weather: 0 added).
+TEST(QualityTiersCli, StatsRowsAreOrderedByTierAndHlslFollowsGlsl) {
+  std::string graphs;
+  for (const char* name : {"rock", "terrain", "road", "river", "foliage"}) graphs += " " + shellQuote(graph(name));
+  const json rows = statsRows(graphs);
+  ASSERT_TRUE(rows.is_array());
+  ASSERT_EQ(rows.size(), 5u * 3u * 2u * 2u);
+  std::map<std::string, const json*> byKey;
+  for (const json& row : rows) {
+    for (const char* field : {"instructions", "weatherInstructions", "textureReads", "branches", "uniformBytes",
+                              "interpolants"})
+      ASSERT_TRUE(row.contains(field)) << field;
+    byKey[row["material"].get<std::string>() + "/" + row["tier"].get<std::string>() + "/" +
+          row["stage"].get<std::string>() + "/" + row["language"].get<std::string>()] = &row;
+  }
+  for (const auto& [key, row] : byKey) {
+    const std::string material = (*row)["material"], stage = (*row)["stage"], language = (*row)["language"];
+    const std::string tier = (*row)["tier"];
+    if (tier != "low") {
+      const std::string below = tier == "high" ? "medium" : "low";
+      const json& lower = *byKey.at(material + "/" + below + "/" + stage + "/" + language);
+      EXPECT_GE((*row)["weatherInstructions"].get<long>(), lower["weatherInstructions"].get<long>()) << key;
+      EXPECT_GE((*row)["textureReads"].get<long>(), lower["textureReads"].get<long>()) << key;
+    }
+    if (language == "hlsl") {
+      const json& glsl = *byKey.at(material + "/" + tier + "/" + stage + "/glsl");
+      const double hlslCost = (*row)["weatherInstructions"], glslCost = glsl["weatherInstructions"];
+      EXPECT_LE(std::abs(hlslCost - glslCost), 0.05 * std::max(glslCost, 1.0)) << key;
+    }
+  }
+  // Sky exposure is what medium adds to low: on rock it reads the exposure map.
+  EXPECT_GT((*byKey.at("rock/medium/frag/glsl"))["textureReads"].get<long>(),
+            (*byKey.at("rock/low/frag/glsl"))["textureReads"].get<long>());
+  // Road's looks (ripple, specular anti-aliasing) are what high adds to medium.
+  EXPECT_GT((*byKey.at("road/high/frag/glsl"))["weatherInstructions"].get<long>(),
+            (*byKey.at("road/medium/frag/glsl"))["weatherInstructions"].get<long>());
+}
+
+TEST(QualityTiersCli, StatsOfAGraphWithoutWeatherAddNothing) {
+  const json rows = statsRows(shellQuote(graph("snowfield")) + " --quality high");
+  ASSERT_EQ(rows.size(), 4u);
+  for (const json& row : rows) EXPECT_EQ(row["weatherInstructions"], 0) << row.dump();
+}
+
+TEST(QualityTiersCli, StatsOfABrokenGraphIsExitOneWithItsDiagnostic) {
+  TempDir dir("quality");
+  const std::string bad = (dir.path() / "bad.json").string();
+  testing::writeFile(bad, "{\"name\": \"bad\", \"nodes\": [");
+  auto r = runCommand(shellQuote(kCli) + " stats " + shellQuote(bad) + " 2>&1");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("WG1001"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace wg
