@@ -124,6 +124,11 @@ class Loader {
                     {"the root element is <" + quoteUserText(root.name()) + ">, not <materialx>", "give the file a MaterialX document"});
       return false;
     }
+    std::string version = root.attribute("version").value();
+    if (!version.starts_with("1.38") && !version.starts_with("1.39"))
+      diags_.report(DiagCode::MtlxFeatureAdjusted, doc_.locate(root),
+                    {"MaterialX version '" + quoteUserText(version) + "' is read as 1.39",
+                     "the import reads MaterialX 1.38 and 1.39; upgrade older documents with MaterialX's own tools"});
     return true;
   }
 

@@ -232,5 +232,13 @@ TEST_F(MaterialXHostile, PresetMapChoosesEachMaterialsWeather) {
   EXPECT_EQ(nlohmann::json::parse(readFile(dir_.path() / "out/two_Ground.json"))["weather"]["preset"], "terrain");
 }
 
+TEST_F(MaterialXHostile, OtherVersionsAreReadWithAWarning) {
+  std::string text = document(material("value=\"1, 0, 0\""));
+  text.replace(text.find("1.39"), 4, "1.37");
+  ImportResult run = importDocument(write("old.mtlx", text), dir_.path() / "out");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(codesOf(run.diagnostics), std::vector<std::string>{"WG5302"}) << run.output;
+}
+
 }  // namespace
 }  // namespace wg::testing
