@@ -32,9 +32,9 @@ Options:
 struct ImportOptions {
   std::string model, outputDir, preset = "rock", presetMap;
   bool json = false, quiet = false, help = false, presetGiven = false, displacement = false;
-};
   std::vector<std::string> searchPath;  // MaterialX only
   mtlx::MissingImages missingImages = mtlx::MissingImages::Error;
+};
 
 OptionTable importOptionTable(ImportOptions& o) {
   return {.options = {
@@ -57,7 +57,6 @@ OptionTable importOptionTable(ImportOptions& o) {
                "vertices along their normals, which tears meshes that are\n"
                "split at hard edges, as most glTF meshes are)",
                storeFlag(o.displacement)},
-              {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
               {"--search-path", "", "DIR",
                "MaterialX: a folder to find images and xi:includes in, after\n"
                "the document's own (repeatable); nothing outside them is read",
@@ -73,6 +72,7 @@ OptionTable importOptionTable(ImportOptions& o) {
                  o.missingImages = v == "error" ? mtlx::MissingImages::Error : mtlx::MissingImages::Placeholder;
                  return std::string();
                }},
+              {"--diagnostics", "", "text|json", "diagnostic format on stderr (default: text)",
                [&o](const std::string& v) { return setDiagnosticsFormat(v, o.json); }},
               {"--quiet", "-q", "", "no summary line (on stdout)", storeFlag(o.quiet)},
               {"--help", "-h", "", "", storeFlag(o.help)},
@@ -122,6 +122,9 @@ int writeImport(const gltf::Asset& asset, const gltf::ImportedModel& imported, c
     std::printf("import: %zu material graph(s) and %zu image(s) from %s into %s (index: %s)\n",
                  imported.materialGraphs.size() + (imported.defaultGraph.empty() ? 0 : 1), asset.model.images.size(),
                  quoteUserText(asset.file, 200).c_str(), quoteUserText(o.outputDir, 200).c_str(), imported.indexFile.c_str());
+  return kExitOk;
+}
+
 // Publishes imported files into the output directory, all or none; "" or the error.
 std::string publish(const std::vector<gltf::ImportedFile>& files, const std::string& dir) {
   StagedDirectory out(dir);
@@ -150,9 +153,6 @@ int importMaterialX(const ImportOptions& o) {
   return kExitOk;
 }
 
-  return kExitOk;
-}
-
 }  // namespace
 
 int runImportCommand(int argc, char** argv) {
@@ -161,10 +161,10 @@ int runImportCommand(int argc, char** argv) {
   if (o.help) {
     ImportOptions scratch;  // the listing reads only the rows' names and help
     std::fputs((kImportUsage + formatOptionList(importOptionTable(scratch))).c_str(), stdout);
-  if (std::filesystem::path(o.model).extension() == ".mtlx") return importMaterialX(o);
     return kExitOk;
   }
   std::string error;
+  if (std::filesystem::path(o.model).extension() == ".mtlx") return importMaterialX(o);
   auto presets = o.presetMap.empty() ? std::optional(gltf::PresetChoice::everywhere(o.preset))
                                      : gltf::PresetChoice::fromMap(o.presetMap, error);
   if (!presets) return usageError(error, o.json);

@@ -40,11 +40,11 @@ struct ImportSettings {
 std::optional<ImportedModel> importModel(const Asset& asset, const ModelGeometry& geometry, const ImportSettings& settings,
                                          DiagnosticList& diagnostics);
 
-// A file-name-safe form of any text: [A-Za-z0-9_-], at most 48 characters, never empty.
 // Graph file stems MODEL_MATERIAL, one per material name (docs/gltf-import.md): names
 // that collide, ignoring case, all take their material index as a suffix.
 std::vector<std::string> materialStems(const std::vector<std::string>& names, const std::string& modelStem);
 
+// A file-name-safe form of any text: [A-Za-z0-9_-], at most 48 characters, never empty.
 std::string fileSafeName(std::string_view text, std::string_view fallback);
 
 // The model's file stem made safe (fileSafeName), and marked (name_mark.hpp) when it is a
