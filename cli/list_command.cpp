@@ -1,4 +1,4 @@
-// list-ops, list-passes, list-diagnostics, list-generators: the compiler's tables.
+// list-ops, list-passes, list-diagnostics, list-generators, list-scenes: the tables.
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -8,6 +8,7 @@
 #include "compiler/diagnostic_codes.hpp"
 #include "compiler/diagnostics_doc.hpp"
 #include "compiler/pass_pipeline.hpp"
+#include "host/scene/scene.hpp"
 #include "nodes/op_registry.hpp"
 #include "nodes/texture_generators.hpp"
 
@@ -91,6 +92,14 @@ int listDiagnostics(bool markdown) {
   return kExitOk;
 }
 
+// The bundled scenes, one "NAME<TAB>summary" line each: the scripts that render every
+// scene read their names from here.
+int listScenes() {
+  for (auto name : scene::sceneNames())
+    std::printf("%s\t%s\n", std::string(name).c_str(), std::string(scene::sceneSummary(name)).c_str());
+  return kExitOk;
+}
+
 int listGenerators() {
   for (const auto& g : textureGenerators()) {
     std::printf("%s: %s\n", std::string(g.name).c_str(), std::string(g.summary).c_str());
@@ -110,6 +119,7 @@ int runListCommand(int argc, char** argv) {
   if (command == "list-passes") return listPasses();
   if (command == "list-diagnostics") return listDiagnostics(option == "--markdown");
   if (command == "list-generators") return listGenerators();
+  if (command == "list-scenes") return listScenes();
   std::fprintf(stderr, "weathergen: error WG9001: unknown command\n  hint: run 'weathergen --help' for usage\n");
   return kExitUsage;
 }

@@ -22,6 +22,7 @@ Usage:
   weathergen list-passes                         the IR pass pipeline, in order
   weathergen list-diagnostics                    every diagnostic code
   weathergen list-generators                     built-in procedural textures
+  weathergen list-scenes                         the bundled validation scenes
   weathergen --help | --version
 
 Run 'weathergen COMMAND --help' for a command's options.

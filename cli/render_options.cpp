@@ -11,10 +11,18 @@
 #include "cli/diagnostic_output.hpp"
 #include "cli/effect_overrides_option.hpp"
 #include "cli/option_table.hpp"
+#include "host/scene/scene.hpp"
 #include "cli/orbit_camera_option.hpp"
 #include "compiler/literal.hpp"
 
 namespace wg {
+
+std::string sceneNameList() {
+  std::string names;
+  for (auto n : scene::sceneNames()) names += std::string(n) + ", ";
+  names.resize(names.size() - 2);
+  return names + " or snowfield";
+}
 
 namespace {
 
@@ -70,14 +78,19 @@ std::string setBackend(const std::string& v, RenderRequest& request) {
   return "";
 }
 
+// --scene's help: the bundled scenes (list-scenes) and the snowfield.
+std::string_view sceneOptionHelp() {
+  static const std::string help = sceneNameList() +
+                                  " (interactive snow:\n"
+                                  "walkers, a vehicle and a camera that leaves and returns;\n"
+                                  "writes OUT.png as a contact sheet and OUT.strip.png)";
+  return help;
+}
+
 // Where the scene comes from, and how it is looked at.
 std::vector<Option> sceneOptions(RenderOptions& o) {
   return {
-      {"--scene", "", "NAME",
-       "valley, rocks, river, road or snowfield (interactive snow:\n"
-       "walkers, a vehicle and a camera that leaves and returns;\n"
-       "writes OUT.png as a contact sheet and OUT.strip.png)",
-       storeValue(o.sceneName)},
+      {"--scene", "", "NAME", sceneOptionHelp(), storeValue(o.sceneName)},
       {"--material", "", "GRAPH.json",
        "any material graph on the preview stand: a sphere, a rock,\n"
        "a 45 degree ramp and a cube on a post, on open ground next\n"

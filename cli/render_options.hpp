@@ -31,6 +31,10 @@ struct RenderOptions {
   std::optional<unsigned> watchRenders;  // --watch-renders: stop after this many
 };
 
+// What --scene takes: "valley, rocks, river, road or snowfield" (the scene table's
+// names, then the interactive snowfield).
+std::string sceneNameList();
+
 // Parses argv from `first`. Returns an exit code when the command is done (--help, or a
 // usage error already printed), nullopt to go on.
 std::optional<int> parseRenderOptions(int argc, char** argv, int first, RenderOptions& options);

@@ -15,11 +15,7 @@ namespace {
 
 int bundledScene(const std::string& name, SceneSource& source) {
   auto scene = scene::makeScene(name);
-  if (!scene) {
-    std::string names;
-    for (auto n : scene::sceneNames()) names += (names.empty() ? "" : ", ") + std::string(n);
-    return usageError("unknown scene '" + quoteUserText(name) + "' (scenes: " + names + ", snowfield)");
-  }
+  if (!scene) return usageError("unknown scene '" + quoteUserText(name) + "' (scenes: " + sceneNameList() + ")");
   source = {std::move(*scene), {}};
   return kExitOk;
 }
@@ -49,7 +45,8 @@ int modelOnStage(const RenderOptions& o, SceneSource& source) {
 std::string checkOneSceneSource(const RenderOptions& o) {
   int named = !o.sceneName.empty() + !o.materialPath.empty() + !o.modelPath.empty();
   if (named == 1) return "";
-  if (named == 0) return "nothing to render; pass --scene NAME (valley, rocks, river, road or snowfield), --material GRAPH.json or --model MODEL.gltf";
+  if (named == 0)
+    return "nothing to render; pass --scene NAME (" + sceneNameList() + "), --material GRAPH.json or --model MODEL.gltf";
   return "--scene, --material and --model exclude each other";
 }
 

@@ -11,7 +11,7 @@ out=${ALIASING_OUT:-$(mktemp -d)}
 mkdir -p "$out"
 echo "| scene | aliasing figure (MAD, 0-255) |"
 echo "|---|---|"
-for scene in valley rocks river road; do
+for scene in $(build/weathergen list-scenes | cut -f1); do
   for size in 320x180 1280x720; do
     build/weathergen render --scene "$scene" --size "$size" -o "$out/$scene-$size.png" -q
   done

@@ -13,7 +13,7 @@ echo "main: wrote $(ls out/materials | wc -l) files for $(ls graphs/*.json | wc 
 build/weathergen compile graphs/*.json -o out/variants --variants all
 echo "main: wrote $(ls out/variants | wc -l) files for every variant to out/variants (see out/variants/rock.variants.json)"
 mkdir -p out/gallery
-for scene in valley rocks river road; do
+for scene in $(build/weathergen list-scenes | cut -f1); do
   for backend in glsl hlsl; do
     build/weathergen render --scene "$scene" --backend "$backend" --timeline timelines/seasons.json \
       --size 640x360 --frames "out/gallery/frames-$backend" -o "out/gallery/$scene-$backend.png"

@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 scripts/build.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-for scene in valley rocks river road; do
+for scene in $(build/weathergen list-scenes | cut -f1); do
   build/weathergen render --scene "$scene" --timeline timelines/seasons.json --step 300 --no-precipitation \
     --size 160x90 --device cpu --frames tests/reference -o "$tmp/$scene.png" -q
 done

@@ -744,13 +744,37 @@ Bounds Scene::framedBounds() const {
   return b;
 }
 
-std::vector<std::string_view> sceneNames() { return {"valley", "rocks", "river", "road"}; }
+namespace {
+// The bundled scenes: --scene's names, the CLI's help, list-scenes and the scripts
+// that render every scene all read this table.
+struct SceneEntry {
+  std::string_view name;
+  Scene (*build)();
+  std::string_view summary;
+};
+constexpr std::array<SceneEntry, 4> kScenes = {{
+    {"valley", valley, "a river valley: a road, a shelter, rocks, bushes and grass tufts"},
+    {"rocks", rocks, "rocks on a slope"},
+    {"river", riverScene, "a meandering river between grassy banks"},
+    {"road", roadScene, "a road past a shelter"},
+}};
+}  // namespace
+
+std::vector<std::string_view> sceneNames() {
+  std::vector<std::string_view> names;
+  for (const SceneEntry& s : kScenes) names.push_back(s.name);
+  return names;
+}
+
+std::string_view sceneSummary(std::string_view name) {
+  for (const SceneEntry& s : kScenes)
+    if (s.name == name) return s.summary;
+  return {};
+}
 
 std::optional<Scene> makeScene(std::string_view name) {
-  if (name == "valley") return valley();
-  if (name == "rocks") return rocks();
-  if (name == "river") return riverScene();
-  if (name == "road") return roadScene();
+  for (const SceneEntry& s : kScenes)
+    if (s.name == name) return s.build();
   return std::nullopt;
 }
 

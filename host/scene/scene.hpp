@@ -77,8 +77,9 @@ struct Scene {
   Bounds framedBounds() const;  // `subject`, else the bounds
 };
 
-// "valley", "rocks", "river", "road".
+// The bundled scenes, in table order: "valley", "rocks", "river", "road".
 std::vector<std::string_view> sceneNames();
+std::string_view sceneSummary(std::string_view name);  // "" for no such scene
 std::optional<Scene> makeScene(std::string_view name);
 
 }  // namespace wg::scene

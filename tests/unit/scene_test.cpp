@@ -194,6 +194,18 @@ void expectWellFormed(const Mesh& m, const std::string& what) {
 
 // ------------------------------------------------------------------ mesh helpers
 
+// One table names the scenes: each name builds the scene of that name and has a summary
+// (list-scenes prints it), and no other name builds anything.
+TEST(SceneTable, EveryNameBuildsItsSceneAndHasASummary) {
+  ASSERT_EQ(sceneNames().size(), 4u);
+  for (auto name : sceneNames()) {
+    EXPECT_EQ(cached(std::string(name)).name, name);
+    EXPECT_FALSE(sceneSummary(name).empty()) << name;
+  }
+  EXPECT_FALSE(makeScene("snowfield").has_value());  // the interactive snowfield is the CLI's own
+  EXPECT_TRUE(sceneSummary("nope").empty());
+}
+
 TEST(SceneMesh, TangentsFollowUvWithHandedness) {
   Mesh quad;
   // A floor quad with u along +x and v along +z: bitangent +z = -cross(up, +x), so w = -1.
