@@ -42,13 +42,13 @@ bool hasTgaExtension(const std::string& path) {
   return ext == ".tga";
 }
 
-std::vector<unsigned char> readHead(const std::string& path) {
+std::vector<unsigned char> readHead(FILE* file) {
   std::vector<unsigned char> head(kPngHeaderBytes);  // the longest header read here
-  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!file) return {};
-  head.resize(std::fread(head.data(), 1, head.size(), file.get()));
+  head.resize(std::fread(head.data(), 1, head.size(), file));
   return head;
 }
+
+using OpenFile = std::unique_ptr<FILE, int (*)(FILE*)>;
 
 Format detectFormat(const std::string& path, const std::vector<unsigned char>& head) {
   if (startsWith(head, kPngSignature)) return Format::Png;
@@ -102,16 +102,10 @@ std::optional<ImageFileStatus> checkPngHeader(const std::vector<unsigned char>& 
   return std::nullopt;
 }
 
-}  // namespace
-
-ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
-                               std::string& error) {
-  width = height = 0;
-  if (FileRead kind = inspectRegularFile(path); kind.status != FileReadStatus::Ok) {
-    error = kind.status == FileReadStatus::NotFound ? "file not found" : kind.reason;
-    return kind.status == FileReadStatus::NotFound ? ImageFileStatus::NotFound : ImageFileStatus::Unsupported;
-  }
-  const std::vector<unsigned char> head = readHead(path);
+// The image's format and size from one open file, read through one open file: the header
+// checks and stb_image's own use it, so a compile opens each image once.
+ImageFileStatus probeOpenImage(FILE* file, const std::string& path, int& width, int& height, std::string& error) {
+  const std::vector<unsigned char> head = readHead(file);
   const Format format = detectFormat(path, head);
   if (format == Format::Other) {
     error = kUnsupportedFormat;
@@ -121,7 +115,8 @@ ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
     if (auto status = checkPngHeader(head, width, height, error)) return *status;
   }
   int w = 0, h = 0, channels = 0;
-  if (!stbi_info(path.c_str(), &w, &h, &channels)) {
+  std::rewind(file);
+  if (!stbi_info_from_file(file, &w, &h, &channels)) {  // stb_image seeks back to the start
     if (format == Format::Tga) {
       error = kUnsupportedFormat;  // a .tga name on something that is not a TGA
     } else {
@@ -136,12 +131,41 @@ ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
   return ImageFileStatus::Ok;
 }
 
+// A regular file, opened; null with the status and error set otherwise.
+OpenFile openImageFile(const std::string& path, ImageFileStatus& status, std::string& error) {
+  OpenFile none(nullptr, &std::fclose);
+  if (FileRead kind = inspectRegularFile(path); kind.status != FileReadStatus::Ok) {
+    error = kind.status == FileReadStatus::NotFound ? "file not found" : kind.reason;
+    status = kind.status == FileReadStatus::NotFound ? ImageFileStatus::NotFound : ImageFileStatus::Unsupported;
+    return none;
+  }
+  OpenFile file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) {
+    error = "cannot open the file";
+    status = ImageFileStatus::Unsupported;
+  }
+  return file;
+}
+
+}  // namespace
+
+ImageFileStatus probeImageFile(const std::string& path, int& width, int& height,
+                               std::string& error) {
+  width = height = 0;
+  ImageFileStatus status = ImageFileStatus::Ok;
+  OpenFile file = openImageFile(path, status, error);
+  if (!file) return status;
+  return probeOpenImage(file.get(), path, width, height, error);
+}
+
 std::optional<Image> loadImageFile(const std::string& path, std::string& error) {
   int width = 0, height = 0;
-  if (probeImageFile(path, width, height, error) != ImageFileStatus::Ok) return std::nullopt;
+  ImageFileStatus status = ImageFileStatus::Ok;
+  OpenFile file = openImageFile(path, status, error);
+  if (!file || probeOpenImage(file.get(), path, width, height, error) != ImageFileStatus::Ok) return std::nullopt;
   int w = 0, h = 0, fileChannels = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-      stbi_load(path.c_str(), &w, &h, &fileChannels, kImageChannels), &stbi_image_free);
+      stbi_load_from_file(file.get(), &w, &h, &fileChannels, kImageChannels), &stbi_image_free);
   if (!pixels) {
     error = "cannot decode image: " + stbReason();
     return std::nullopt;
