@@ -4,6 +4,8 @@
 // Counters report each emitted shader's size in bytes.
 #include <benchmark/benchmark.h>
 
+#include <weathergen/weathergen.hpp>
+
 #include "bench/bench_common.hpp"
 #include "driver/material_compiler.hpp"
 
@@ -34,6 +36,19 @@ void codegen(benchmark::State& state, const wg::bench::BundledGraph& graph, bool
   state.counters["ir_nodes"] = static_cast<double>(m.ir.nodes.size());
 }
 
+// The engine API asked for what BM_Codegen makes: shader text, no SPIR-V, no reflection.
+void publicCodegen(benchmark::State& state, const wg::bench::BundledGraph& graph) {
+  const std::string text = wg::bench::readText(graph.path);
+  weathergen::Options options;
+  options.spirv = false;
+  options.reflection = false;
+  for (auto _ : state) {
+    auto result = weathergen::compile(graph.path, text, options);
+    if (!result.ok) state.SkipWithError(("does not compile: " + graph.path).c_str());
+    benchmark::DoNotOptimize(result);
+  }
+}
+
 const bool registered = [] {
   for (const auto& graph : wg::bench::bundledGraphs())
   {
@@ -42,6 +57,8 @@ const bool registered = [] {
     benchmark::RegisterBenchmark(("BM_CodegenNoWeather/" + graph.stem).c_str(), codegen, graph, false, false)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("BM_CompileNoSpirv/" + graph.stem).c_str(), codegen, graph, true, true)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("BM_PublicCodegen/" + graph.stem).c_str(), publicCodegen, graph)
         ->Unit(benchmark::kMicrosecond);
   }
   return true;

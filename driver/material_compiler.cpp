@@ -182,6 +182,20 @@ bool compileStageToSpirv(CompiledStage& stage, const MaterialInterface& mi, cons
   return true;
 }
 
+// The surface files (--target surface, filament) and the reflection JSON.
+void writeSurfaceAndReflection(CompiledMaterial& material, const IrGraph& ir, const MaterialInterface& mi,
+                               const std::vector<std::string>& names, const CompileOptions& options) {
+  const SurfaceInterface surface = buildSurfaceInterface(mi, material.fileStem);
+  if (options.emitSurface)
+    for (const auto& language : surfaceLanguages())
+      material.surfaces.push_back(writeSurface(ir, surface, language.language, material.contentHash, names));
+  if (options.emitFilament)
+    material.filamentMaterial = writeFilamentMaterial(
+        ir, surface, writeSurface(ir, surface, SurfaceLanguage::GlslEs, material.contentHash, names), material.contentHash);
+  if (options.emitReflection)
+    material.reflectionJson = buildReflectionJson(ir, mi, surface, material.contentHash, material.fileStem);
+}
+
 }  // namespace
 
 CompileResult compileMaterialText(const std::string& file, std::string text, const CompileOptions& options) {
@@ -196,21 +210,16 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
   std::vector<std::string> names = nameNodes(*ir);
   for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
     for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
-      material.stages.push_back(
-          {language, stage, writeStage(*ir, mi, syntaxFor(language), stage, material.contentHash, names), {}, {}});
+      if (language == ShaderLanguage::Glsl || options.emitHlsl)
+        material.stages.push_back(
+            {language, stage, writeStage(*ir, mi, syntaxFor(language), stage, material.contentHash, names), {}, {}});
   // The SPIR-V translations need the module even when it is not wanted itself.
   if (options.emitSpirv || options.emitMsl || options.emitGlslEs)
     for (auto& stage : material.stages)
       if (!compileStageToSpirv(stage, mi, options, file, result.diagnostics)) return result;
-  const SurfaceInterface surface = buildSurfaceInterface(mi, material.fileStem);
-  if (options.emitSurface)
-    for (const auto& language : surfaceLanguages())
-      material.surfaces.push_back(writeSurface(*ir, surface, language.language, material.contentHash, names));
-  if (options.emitFilament)
-    material.filamentMaterial = writeFilamentMaterial(
-        *ir, surface, writeSurface(*ir, surface, SurfaceLanguage::GlslEs, material.contentHash, names), material.contentHash);
-  if (options.emitReflection)
-    material.reflectionJson = buildReflectionJson(*ir, mi, surface, material.contentHash, material.fileStem);
+  // Only the surface files and the reflection read the surface interface.
+  if (options.emitSurface || options.emitFilament || options.emitReflection)
+    writeSurfaceAndReflection(material, *ir, mi, names, options);
   if (options.emitCppHeader) material.cppHeader = emitCppHeader(*ir, mi, material.contentHash);
   material.ir = std::move(*ir);
   result.material = std::move(material);

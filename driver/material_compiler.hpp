@@ -25,6 +25,7 @@ struct CompileOptions {
   WeatherEffectOverrides weatherEffects;     // switched over the graph's own effects (--effects)
   QualityChoice quality;                     // the tier (--quality); compiler/quality_tiers.hpp
   bool emitReflection = true;  // off for callers that only want shader text
+  bool emitHlsl = true;        // off: the two GLSL stages alone
   bool emitCppHeader = false;  // C++ std140 structs of the uniform blocks (--emit-header)
   // SPIRV-Cross translations of each stage's validated, pre-optimisation SPIR-V
   // (--target msl / glsles); they need SPIR-V, which is then compiled even without emitSpirv.
@@ -56,7 +57,7 @@ struct CompiledMaterial {
   std::string fileStem;     // safe for file names: NAME, or NAME.HASH with hashKeyedFileStem
   std::string contentHash;
   IrGraph ir;               // after the pass pipeline
-  std::vector<CompiledStage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag
+  std::vector<CompiledStage> stages;  // glsl vert, glsl frag, then hlsl vert, hlsl frag with emitHlsl
   std::string reflectionJson;
   std::string cppHeader;    // empty unless emitCppHeader
   // Indexed like surfaceLanguages(); empty unless emitSurface.

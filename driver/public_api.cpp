@@ -57,6 +57,8 @@ Result compileOrThrow(std::string_view fileName, std::string_view json, const Op
   }
   wg::CompileOptions internal;
   internal.emitSpirv = options.spirv;
+  internal.emitHlsl = options.hlsl;
+  internal.emitReflection = options.reflection;
   internal.optimize = options.optimize;
   if (!options.weatherPreset.empty()) internal.weatherPreset = options.weatherPreset;
   internal.weatherEffects.assign(options.effects.begin(), options.effects.end());

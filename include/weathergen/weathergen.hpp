@@ -41,6 +41,10 @@ struct Surface {
 
 struct Options {
   bool spirv = true;           // compile every stage to validated SPIR-V
+  // What an engine that needs less can skip: without hlsl, Result::stages holds the two
+  // GLSL stages; without reflection, Result::reflectionJson stays empty.
+  bool hlsl = true;
+  bool reflection = true;
   bool optimize = false;       // spirv-opt's performance passes
   std::string weatherPreset;   // "" keeps the graph's own preset
   // Quality tier: "low" (seed 000's terms), "medium" (plus sky exposure) or "high" (plus
@@ -63,8 +67,8 @@ struct Result {
   std::vector<Diagnostic> diagnostics;
   std::string name;         // the material's declared name
   std::string contentHash;  // identifies what the material is, not how its file spells it
-  std::string reflectionJson;
-  std::vector<Stage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag
+  std::string reflectionJson;  // with Options::reflection
+  std::vector<Stage> stages;  // glsl vert, glsl frag, hlsl vert, hlsl frag (with Options::hlsl)
   std::string cppHeader;      // only with Options::cppHeader
   std::vector<Surface> surfaces;  // only with Options::surface: glsl, glsles, hlsl
 };

@@ -123,6 +123,36 @@ TEST(PublicApi, OptionsAreHonoured) {
   EXPECT_TRUE(hasCode(r, "WG4001")) << describe(r);
 }
 
+TEST(PublicApi, WhatIsNotAskedForIsLeftOut) {
+  Graph g = rock();
+  weathergen::Options full;
+  full.spirv = false;
+  const weathergen::Result all = weathergen::compile(g.file, g.text, full);
+  ASSERT_TRUE(all.ok) << describe(all);
+  ASSERT_EQ(all.stages.size(), 4u);
+  EXPECT_FALSE(all.reflectionJson.empty());
+
+  weathergen::Options glslOnly = full;
+  glslOnly.hlsl = false;
+  glslOnly.reflection = false;
+  const weathergen::Result glsl = weathergen::compile(g.file, g.text, glslOnly);
+  ASSERT_TRUE(glsl.ok) << describe(glsl);
+  EXPECT_TRUE(glsl.reflectionJson.empty());
+  EXPECT_EQ(glsl.contentHash, all.contentHash);
+  ASSERT_EQ(glsl.stages.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(glsl.stages[i].language, "glsl");
+    EXPECT_EQ(glsl.stages[i].stage, all.stages[i].stage);
+    EXPECT_EQ(glsl.stages[i].source, all.stages[i].source);
+  }
+
+  glslOnly.spirv = true;  // SPIR-V of the GLSL stages alone
+  const weathergen::Result spirv = weathergen::compile(g.file, g.text, glslOnly);
+  ASSERT_TRUE(spirv.ok) << describe(spirv);
+  ASSERT_EQ(spirv.stages.size(), 2u);
+  for (const auto& s : spirv.stages) EXPECT_EQ(s.spirv.front(), kSpirvMagic);
+}
+
 TEST(PublicApi, SwitchesChooseTheVariant) {
   Graph g = rock();
   weathergen::Options options;
