@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -17,11 +18,11 @@
 #include "cli/variant_plan.hpp"
 #include "compiler/variant_index.hpp"
 #include "driver/batch_compile.hpp"
+#include "driver/compile_cache.hpp"
 #include "cli/depfile.hpp"
 #include "cli/effect_overrides_option.hpp"
 #include "cli/run_inputs.hpp"
 #include "cli/staged_directory.hpp"
-#include "compiler/material_input_files.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/option_table.hpp"
 #include "cli/commands.hpp"
@@ -75,6 +76,8 @@ struct Options {
   WeatherEffectOverrides effects;
   int jobs = 0;  // 0: one per core
   std::string depfile;
+  std::optional<std::string> cacheDir;  // --cache; else $WEATHERGEN_CACHE_DIR
+  bool noCache = false;
   std::optional<VariantSelection> variants;
   std::optional<std::string> dumpIrAfter;  // a pass name or "all": print IR, write nothing
 };
@@ -97,6 +100,12 @@ std::string setVariants(const std::string& v, std::optional<VariantSelection>& v
   std::string error;
   variants = parseVariantSelection(v, error);
   return error;
+}
+
+std::string setCacheDirectory(const std::string& v, std::optional<std::string>& dir) {
+  if (v.empty()) return "--cache takes a directory (it is empty; is a build variable unset?)";
+  dir = v;
+  return "";
 }
 
 // What is written, and where.
@@ -127,6 +136,12 @@ std::vector<Option> outputOptions(Options& o) {
        "depend on its graph, its graph libraries and its\n"
        "image files",
        [&o](const std::string& v) { return setDepfile(v, o.depfile); }},
+      {"--cache", "", "DIR",
+       "reuse and keep compiled materials in DIR, keyed by the\n"
+       "content of every file read and the options (default:\n"
+       "$WEATHERGEN_CACHE_DIR when set, else no cache)",
+       [&o](const std::string& v) { return setCacheDirectory(v, o.cacheDir); }},
+      {"--no-cache", "", "", "compile every graph, even with WEATHERGEN_CACHE_DIR set", storeFlag(o.noCache)},
   };
 }
 
@@ -271,6 +286,16 @@ CompileOptions compileOptionsFor(const Options& o) {
   return options;
 }
 
+// --cache DIR, else $WEATHERGEN_CACHE_DIR; none with --no-cache, or when neither names one.
+std::string openCompileCache(const Options& o, std::optional<CompileCache>& cache) {
+  const char* fromEnvironment = std::getenv("WEATHERGEN_CACHE_DIR");
+  if (o.noCache || o.dumpIrAfter || (!o.cacheDir && (!fromEnvironment || !*fromEnvironment))) return "";
+  cache.emplace(o.cacheDir ? *o.cacheDir : std::string(fromEnvironment));
+  std::string problem = cache->prepare();
+  if (problem.empty()) return "";
+  return (o.cacheDir ? "--cache " : "WEATHERGEN_CACHE_DIR: ") + problem;
+}
+
 std::vector<CompileResult> compileJobs(const VariantPlan& plan, const CompileOptions& options, const Options& o) {
   int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // Progress only for people: on a terminal, and not with -q or JSON diagnostics.
@@ -363,8 +388,7 @@ std::vector<DepfileRule> depfileRules(const std::vector<GraphOutput>& outputs,
     for (const auto& [path, bytes] : filesOf[g]) rule.outputs.push_back(path);
     rule.inputs.push_back(outputs[g].graph);
     std::set<std::string> readFiles;
-    for (const CompiledMaterial* m : outputs[g].variants)
-      for (auto& file : materialInputFiles(m->ir)) readFiles.insert(std::move(file));
+    for (const CompiledMaterial* m : outputs[g].variants) readFiles.insert(m->inputFiles.begin(), m->inputFiles.end());
     rule.inputs.insert(rule.inputs.end(), readFiles.begin(), readFiles.end());
     rules.push_back(std::move(rule));
   }
@@ -414,9 +438,13 @@ int runCompileCommand(int argc, char** argv) {
   if (auto exit = parseCompileOptions(argc, argv, o)) return *exit;
   VariantPlan plan;
   if (std::string e = planVariants(o.graphs, o.variants, plan); !e.empty()) return usageError(e, o.json);
-  const CompileOptions options = compileOptionsFor(o);
+  std::optional<CompileCache> cache;
+  if (std::string e = openCompileCache(o, cache); !e.empty()) return usageError(e, o.json);
+  CompileOptions options = compileOptionsFor(o);
   if (o.dumpIrAfter) return dumpIrAfterPass(plan.jobs, *o.dumpIrAfter, options, o.json);
+  options.cache = cache ? &*cache : nullptr;
   std::vector<CompileResult> results = compileJobs(plan, options, o);
+  if (cache) cache->trim();
   BatchDiagnostics diagnostics;
   std::vector<GraphOutput> outputs = groupByGraph(plan, results, o.graphs.size(), diagnostics);
   reportNameCollisions(outputs, diagnostics.items);

@@ -4,6 +4,8 @@
 #include <mutex>
 #include <thread>
 
+#include "driver/compile_cache.hpp"
+
 namespace wg {
 
 std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, const CompileOptions& options, int jobs,
@@ -17,7 +19,8 @@ std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, co
     if (!variant.modules) variant.modules = &modules;
     variant.switches = batch[i].switches;
     if (batch[i].weatherPreset) variant.weatherPreset = batch[i].weatherPreset;
-    results[i] = compileMaterialFile(batch[i].graph, variant);
+    results[i] = variant.cache ? variant.cache->compileFile(batch[i].graph, variant)
+                               : compileMaterialFile(batch[i].graph, variant);
     std::lock_guard<std::mutex> lock(reportLock);
     ++completed;
     if (onDone) onDone(i, completed);

@@ -11,6 +11,7 @@
 #include "compiler/cpp_header.hpp"
 #include "compiler/graph_loader.hpp"
 #include "compiler/ir_builder.hpp"
+#include "compiler/material_input_files.hpp"
 #include "compiler/name_mark.hpp"
 #include "compiler/pass_pipeline.hpp"
 #include "compiler/reflection.hpp"
@@ -221,6 +222,7 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
   if (options.emitSurface || options.emitFilament || options.emitReflection)
     writeSurfaceAndReflection(material, *ir, mi, names, options);
   if (options.emitCppHeader) material.cppHeader = emitCppHeader(*ir, mi, material.contentHash);
+  material.inputFiles = materialInputFiles(*ir);
   material.ir = std::move(*ir);
   result.material = std::move(material);
   return result;

@@ -17,6 +17,8 @@
 
 namespace wg {
 
+class CompileCache;  // driver/compile_cache.hpp
+
 struct CompileOptions {
   bool emitSpirv = true;
   bool emitDisassembly = false;  // .spvasm text of each SPIR-V module (compile --target spirv)
@@ -41,6 +43,8 @@ struct CompileOptions {
   PassPipelineOptions passes;
   // Modules shared across a batch (compileBatch sets it); null: every stage is compiled.
   SpirvModuleCache* modules = nullptr;
+  // compileBatch takes each graph from this persistent cache, or compiles and stores it.
+  const CompileCache* cache = nullptr;
 };
 
 struct CompiledStage {
@@ -56,7 +60,8 @@ struct CompiledMaterial {
   std::string name;         // as declared
   std::string fileStem;     // safe for file names: NAME, or NAME.HASH with hashKeyedFileStem
   std::string contentHash;
-  IrGraph ir;               // after the pass pipeline
+  IrGraph ir;               // after the pass pipeline; empty in a material from the CompileCache
+  std::vector<std::string> inputFiles;  // read besides the graph: libraries, images (materialInputFiles)
   std::vector<CompiledStage> stages;  // glsl vert, glsl frag, then hlsl vert, hlsl frag with emitHlsl
   std::string reflectionJson;
   std::string cppHeader;    // empty unless emitCppHeader

@@ -1,0 +1,233 @@
+// The persistent compile cache (compile --cache DIR): a warm run writes the files a
+// cold one does, any change to a file the compile read misses, torn entries are
+// misses, concurrent processes share a directory, and the bound evicts the least
+// recently used entries.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <thread>
+
+#include "driver/compile_cache.hpp"
+#include "process_support.hpp"
+
+namespace wg {
+namespace {
+
+using testing::listFiles;
+using testing::readFile;
+using testing::runCommand;
+using testing::shellQuote;
+using testing::TempDir;
+using testing::writeFile;
+namespace fs = std::filesystem;
+
+constexpr const char* kLibrary = R"({
+  "textures": {"mud": {"file": "mud.png"}},
+  "nodes": [
+    {"id": "uv", "op": "texcoord"},
+    {"id": "mud", "op": "sample", "inputs": {"texture": "mud", "uv": "uv.out"}},
+    {"id": "tinted", "op": "multiply", "inputs": {"a": "mud.rgb", "b": [0.5, 0.5, 0.5]}}
+  ]
+})";
+
+constexpr const char* kGraph = R"({"name": "wall", "include": {"stone": "lib/stone.json"},
+  "nodes": [{"id": "rough", "op": "one_minus", "inputs": {"in": 0.3}}],
+  "output": {"baseColor": "stone.tinted.out", "roughness": "rough.out"}})";
+
+class CompileCacheCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    fs::create_directories(dir_.path() / "lib");
+    writeFile(dir_.path() / "lib" / "stone.json", kLibrary);
+    fs::copy_file(fs::path(WG_SOURCE_DIR) / "examples/cmake-consumer/materials/textures/mud_albedo.png",
+                  dir_.path() / "lib" / "mud.png");
+    writeFile(dir_.path() / "wall.json", kGraph);
+  }
+  // Compiles the graph into `out`; `flags` chooses the cache.
+  testing::CommandResult compile(const std::string& out, const std::string& flags,
+                                 const std::string& environment = "") const {
+    return runCommand(environment + shellQuote(WG_CLI_PATH) + " compile " + shellQuote(graph()) + " -o " +
+                      shellQuote((dir_.path() / out).string()) + " -q " + flags + " 2>&1");
+  }
+  std::string graph() const { return (dir_.path() / "wall.json").string(); }
+  std::string cacheFlag() const { return "--cache " + shellQuote(cache().string()); }
+  fs::path cache() const { return dir_.path() / "cache"; }
+  // Every output file's bytes, by name.
+  std::map<std::string, std::string> outputs(const std::string& out) const {
+    std::map<std::string, std::string> files;
+    for (const auto& name : listFiles(dir_.path() / out)) files[name] = readFile(dir_.path() / out / name);
+    return files;
+  }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& name : listFiles(cache()))
+      if (name.size() > 6 && name.substr(name.size() - 6) == ".entry") names.push_back(name);
+    return names;
+  }
+  TempDir dir_{"compile-cache"};
+};
+
+TEST_F(CompileCacheCli, AWarmRunWritesTheFilesAColdOneDoes) {
+  ASSERT_EQ(compile("plain", "--no-cache").exitCode, 0);
+  EXPECT_FALSE(fs::exists(cache()));
+  auto cold = compile("cold", cacheFlag());
+  ASSERT_EQ(cold.exitCode, 0) << cold.output;
+  ASSERT_EQ(entries().size(), 1u);
+  auto warm = compile("warm", cacheFlag());
+  ASSERT_EQ(warm.exitCode, 0) << warm.output;
+  EXPECT_EQ(entries().size(), 1u);
+  EXPECT_TRUE(outputs("cold") == outputs("plain"));
+  EXPECT_TRUE(outputs("warm") == outputs("plain"));
+}
+
+TEST_F(CompileCacheCli, AWarmRunWritesTheSameDepfile) {
+  ASSERT_EQ(compile("cold", cacheFlag() + " --depfile " + shellQuote((dir_.path() / "cold.d").string())).exitCode, 0);
+  ASSERT_EQ(compile("cold", cacheFlag() + " --depfile " + shellQuote((dir_.path() / "warm.d").string())).exitCode, 0);
+  const std::string warm = readFile(dir_.path() / "warm.d");
+  EXPECT_EQ(warm, readFile(dir_.path() / "cold.d"));
+  EXPECT_NE(warm.find("lib/stone.json"), std::string::npos) << warm;
+  EXPECT_NE(warm.find("lib/mud.png"), std::string::npos) << warm;
+}
+
+TEST_F(CompileCacheCli, ChangingALibraryOrAnImageMisses) {
+  ASSERT_EQ(compile("cold", cacheFlag()).exitCode, 0);
+  std::string library = kLibrary;
+  library.replace(library.find("0.5, 0.5, 0.5"), 13, "0.25, 0.5, 1.0");
+  writeFile(dir_.path() / "lib" / "stone.json", library);
+  ASSERT_EQ(compile("library", cacheFlag()).exitCode, 0);
+  ASSERT_EQ(compile("library-plain", "--no-cache").exitCode, 0);
+  EXPECT_TRUE(outputs("library") == outputs("library-plain"));
+  EXPECT_TRUE(outputs("library") != outputs("cold"));
+  // The graph's text is the key, so the entry of the old library was replaced. Other
+  // bytes in the image: the files written are alike, but the entry, which holds the
+  // image's digest, is replaced again.
+  ASSERT_EQ(entries().size(), 1u);
+  std::map<std::string, std::string> before;
+  for (const auto& name : entries()) before[name] = readFile(cache() / name);
+  fs::copy_file(fs::path(WG_SOURCE_DIR) / "examples/cmake-consumer/materials/textures/mud_albedo.png",
+                dir_.path() / "lib" / "mud.png", fs::copy_options::overwrite_existing);
+  std::string png = readFile(dir_.path() / "lib" / "mud.png");
+  png.back() ^= 1;  // the IEND chunk's CRC: stb_image ignores it, the digest does not
+  writeFile(dir_.path() / "lib" / "mud.png", png);
+  ASSERT_EQ(compile("image", cacheFlag()).exitCode, 0);
+  EXPECT_TRUE(outputs("image") == outputs("library-plain"));
+  ASSERT_EQ(entries().size(), 1u);
+  std::size_t replaced = 0;
+  for (const auto& name : entries()) replaced += before[name] != readFile(cache() / name);
+  EXPECT_EQ(replaced, 1u);
+}
+
+TEST_F(CompileCacheCli, OptionsAreInTheKey) {
+  ASSERT_EQ(compile("none", cacheFlag()).exitCode, 0);
+  ASSERT_EQ(compile("rock", cacheFlag() + " --weather-preset rock").exitCode, 0);
+  ASSERT_EQ(compile("rock-plain", "--no-cache --weather-preset rock").exitCode, 0);
+  EXPECT_EQ(entries().size(), 2u);
+  EXPECT_TRUE(outputs("rock") == outputs("rock-plain"));
+  EXPECT_TRUE(outputs("rock") != outputs("none"));
+}
+
+TEST_F(CompileCacheCli, ATornEntryIsAMiss) {
+  ASSERT_EQ(compile("plain", "--no-cache").exitCode, 0);
+  ASSERT_EQ(compile("cold", cacheFlag()).exitCode, 0);
+  ASSERT_EQ(entries().size(), 1u);
+  const fs::path entry = cache() / entries().front();
+  std::string bytes = readFile(entry);
+  writeFile(entry, bytes.substr(0, bytes.size() / 2));
+  ASSERT_EQ(compile("torn", cacheFlag()).exitCode, 0);
+  EXPECT_TRUE(outputs("torn") == outputs("plain"));
+  bytes[bytes.size() / 2] ^= 0x20;  // one flipped bit in the body
+  writeFile(entry, bytes);
+  ASSERT_EQ(compile("flipped", cacheFlag()).exitCode, 0);
+  EXPECT_TRUE(outputs("flipped") == outputs("plain"));
+}
+
+TEST_F(CompileCacheCli, TheEnvironmentNamesTheDirectoryAndNoCacheWins) {
+  const std::string environment = "WEATHERGEN_CACHE_DIR=" + shellQuote(cache().string()) + " ";
+  ASSERT_EQ(compile("off", "--no-cache", environment).exitCode, 0);
+  EXPECT_FALSE(fs::exists(cache()));
+  ASSERT_EQ(compile("on", "", environment).exitCode, 0);
+  EXPECT_EQ(entries().size(), 1u);
+}
+
+TEST_F(CompileCacheCli, ADirectoryThatCannotBeMadeIsAUsageError) {
+  writeFile(dir_.path() / "file", "not a directory");
+  auto r = compile("out", "--cache " + shellQuote((dir_.path() / "file").string()));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--cache"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_.path() / "out"));
+}
+
+TEST_F(CompileCacheCli, ConcurrentProcessesShareADirectory) {
+  ASSERT_EQ(compile("plain", "--no-cache").exitCode, 0);
+  std::vector<std::thread> runs;
+  std::vector<int> exits(4, -1);
+  for (int i = 0; i < 4; ++i)
+    runs.emplace_back([&, i] { exits[i] = compile("run" + std::to_string(i), cacheFlag()).exitCode; });
+  for (auto& run : runs) run.join();
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(exits[i], 0);
+    EXPECT_TRUE(outputs("run" + std::to_string(i)) == outputs("plain"));
+  }
+  EXPECT_EQ(listFiles(cache()), entries());  // no temporary file left behind
+}
+
+// The files in `dir` that are not in `before`.
+std::vector<std::string> newFiles(const fs::path& dir, const std::vector<std::string>& before) {
+  std::vector<std::string> names;
+  for (const auto& name : listFiles(dir))
+    if (std::find(before.begin(), before.end(), name) == before.end()) names.push_back(name);
+  return names;
+}
+
+TEST(CompileCache, TrimEvictsTheLeastRecentlyUsedBeyondItsBound) {
+  TempDir dir("compile-cache-trim");
+  const auto graphs = testing::bundledGraphs();
+  ASSERT_GE(graphs.size(), 3u);
+  const CompileOptions options{.emitSpirv = false};
+  const CompileOptions noWeather{.emitSpirv = false, .weatherPreset = "none"};
+  std::vector<std::string> names;  // the entries of graphs 0, 1 and 2, in turn
+  std::uintmax_t threeEntries = 0;
+  {
+    CompileCache unbounded(dir.path());
+    ASSERT_EQ(unbounded.prepare(), "");
+    for (int i = 0; i < 3; ++i) {
+      auto before = listFiles(dir.path());
+      ASSERT_TRUE(unbounded.compileFile(graphs[i].string(), options).material);
+      auto added = newFiles(dir.path(), before);
+      ASSERT_EQ(added.size(), 1u);
+      names.push_back(added.front());
+      threeEntries += fs::file_size(dir.path() / names.back());
+    }
+    const auto now = fs::file_time_type::clock::now();
+    for (const auto& name : names) fs::last_write_time(dir.path() / name, now - std::chrono::hours(3));
+    // A hit refreshes its entry's time.
+    ASSERT_TRUE(unbounded.compileFile(graphs[0].string(), options).material);
+    EXPECT_GT(fs::last_write_time(dir.path() / names[0]), now - std::chrono::hours(1));
+    // Graph 1's entry the least recently used, the new one below the most (the file
+    // system's clock is too coarse to order entries touched within a few milliseconds).
+    fs::last_write_time(dir.path() / names[0], now - std::chrono::hours(2));
+    fs::last_write_time(dir.path() / names[2], now - std::chrono::hours(2));
+  }
+  CompileCache bounded(dir.path(), threeEntries);
+  auto before = listFiles(dir.path());
+  ASSERT_TRUE(bounded.compileFile(graphs[0].string(), noWeather).material);
+  const auto added = newFiles(dir.path(), before);
+  ASSERT_EQ(added.size(), 1u);
+  const std::string newest = added.front();
+  bounded.trim();
+  std::uintmax_t total = 0;
+  for (const auto& name : listFiles(dir.path())) total += fs::file_size(dir.path() / name);
+  EXPECT_LE(total, threeEntries / 4 * 3);
+  EXPECT_FALSE(fs::exists(dir.path() / names[1]));
+  EXPECT_TRUE(fs::exists(dir.path() / newest));
+  // A hit returns the stored files without compiling: its material has no IR.
+  CompileResult again = bounded.compileFile(graphs[0].string(), noWeather);
+  ASSERT_TRUE(again.material);
+  EXPECT_TRUE(again.material->ir.nodes.empty());
+  EXPECT_FALSE(again.material->stages.front().source.empty());
+}
+
+}  // namespace
+}  // namespace wg
