@@ -14,6 +14,7 @@
 #include "cli/bench_options.hpp"
 #include "cli/number_text.hpp"
 #include "cli/model_scene.hpp"
+#include "cli/render_to_files.hpp"
 #include "cli/sample_count.hpp"
 #include "compiler/literal.hpp"
 #include "cli/commands.hpp"
@@ -169,11 +170,14 @@ std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string
   return renderer.gpuMemoryBytes();
 }
 
-int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& o, unsigned width, unsigned height,
+int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& asked, unsigned width, unsigned height,
                   const std::string& graphsDir, const std::vector<ImportedOrigin>& modelOrigins) {
   std::string error;
-  auto ctx = vk::Context::create({o.device, false}, error);
-  if (!ctx) return deviceUnavailable(error, o.device);
+  auto ctx = vk::Context::create({asked.device, false}, error);
+  if (!ctx) return deviceUnavailable(error, asked.device);
+  BenchRenderOptions o = asked;  // with the samples the frame fits at
+  o.samples = samplesThatFit(*ctx, width, height, asked.samples);
+  if (o.samples == 0) return kExitBadInput;
   std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
               "warm-up rounds), colour pass only.\n\n",
               ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpRounds);

@@ -105,19 +105,18 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
   return kExitOk;
 }
 
-// The MSAA samples the frame's targets fit at, or 0 after saying why none fits.
-unsigned samplesThatFit(const vk::Context& ctx, const RenderPlan& plan) {
-  const FrameTargetPlan targets = planFrameTargets(plan.request.width, plan.request.height, plan.samples, frameLimits(ctx));
+}  // namespace
+
+unsigned samplesThatFit(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, unsigned samples) {
+  const FrameTargetPlan targets = planFrameTargets(width, height, samples, frameLimits(ctx));
   if (targets.samples == 0) std::fprintf(stderr, "weathergen: error: %s\n", targets.note.c_str());
   else if (!targets.note.empty()) std::fprintf(stderr, "weathergen: note: %s\n", targets.note.c_str());
   return targets.samples;
 }
 
-}  // namespace
-
 RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPlan& plan, const std::string& graphsDir) {
   RenderedFiles result;
-  const unsigned samples = samplesThatFit(ctx, plan);
+  const unsigned samples = samplesThatFit(ctx, plan.request.width, plan.request.height, plan.samples);
   if (samples == 0) return {kExitBadInput, {}};
   try {
     SceneRenderer renderer(ctx, std::move(scene), graphsDir, static_cast<VkSampleCountFlagBits>(samples));
