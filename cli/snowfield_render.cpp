@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/render_to_files.hpp"
 #include "cli/run_inputs.hpp"
 #include "host/display_image.hpp"
 #include "host/image/contact_sheet.hpp"
@@ -41,9 +42,10 @@ int renderSnowfield(const SnowfieldRenderOptions& o) {
   std::string error;
   auto ctx = vk::Context::create({o.device, o.validation}, error);
   if (!ctx) return deviceUnavailable(error, o.device);
+  const unsigned samples = samplesThatFit(*ctx, o.request.width, o.request.height, o.samples);
+  if (samples == 0) return kExitBadInput;
   snow::SnowfieldSettings settings;
-  SceneRenderer renderer(*ctx, snow::makeSnowfieldScene(settings), o.graphsDir,
-                         static_cast<VkSampleCountFlagBits>(o.samples));
+  SceneRenderer renderer(*ctx, snow::makeSnowfieldScene(settings), o.graphsDir, static_cast<VkSampleCountFlagBits>(samples));
   snow::SnowfieldAnimation animation(*ctx, settings, o.request.weather);
   renderer.setSnowDeformation(&animation.deformationImage());
   std::vector<image::LabelledFrame> frames;
