@@ -194,6 +194,8 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& a
   } catch (const MaterialCompileError& e) {  // a user's graph (--material, --model) that does not compile
     printDiagnostics(inModelTerms(e.diagnostics(), modelOrigins), false);
     return kExitBadInput;
+  } catch (const vk::OutOfMemory& e) {
+    return reportOutOfMemory(e);
   }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);

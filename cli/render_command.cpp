@@ -42,6 +42,8 @@ int renderSnowfieldScene(const RenderOptions& o) {
                                  request,   o.validation, !o.quiet && ::isatty(STDERR_FILENO), o.samples};
   try {
     return renderSnowfield(options);
+  } catch (const vk::OutOfMemory& e) {
+    return reportOutOfMemory(e);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "weathergen: error: %s\n", quoteUserText(e.what(), 1000).c_str());
     return kExitInternal;

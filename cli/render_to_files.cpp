@@ -107,6 +107,12 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
 
 }  // namespace
 
+int reportOutOfMemory(const vk::OutOfMemory& e) {
+  std::fprintf(stderr, "weathergen: error: the device ran out of memory (%s); render with a smaller --size or --samples 1\n",
+               e.what());
+  return kExitBadInput;
+}
+
 unsigned samplesThatFit(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, unsigned samples) {
   const FrameTargetPlan targets = planFrameTargets(width, height, samples, frameLimits(ctx));
   if (targets.samples == 0) std::fprintf(stderr, "weathergen: error: %s\n", targets.note.c_str());
@@ -126,9 +132,7 @@ RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPl
     printDiagnostics(inModelTerms(e.diagnostics(), plan.modelOrigins), false);
     result.exitCode = kExitBadInput;
   } catch (const vk::OutOfMemory& e) {
-    std::fprintf(stderr, "weathergen: error: the device ran out of memory (%s); render with a smaller --size or --samples 1\n",
-                 e.what());
-    result.exitCode = kExitBadInput;
+    result.exitCode = reportOutOfMemory(e);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "weathergen: error: %s\n", quoteUserText(e.what(), 1000).c_str());
     result.exitCode = kExitInternal;

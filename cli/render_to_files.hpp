@@ -20,6 +20,9 @@ struct RenderedFiles {
 // when fewer; 0 after an error saying why it fits at none (host/frame_target_plan.hpp).
 unsigned samplesThatFit(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, unsigned samples);
 
+// A Vulkan allocation that still failed is a resource limit: says so, gives kExitBadInput.
+int reportOutOfMemory(const vk::OutOfMemory& e);
+
 // A graph that does not compile prints the compiler's diagnostics and gives
 // kExitBadInput; validation messages and other failures give kExitInternal.
 RenderedFiles renderToFiles(vk::Context& ctx, scene::Scene scene, const RenderPlan& plan, const std::string& graphsDir);
