@@ -23,6 +23,8 @@ using Json = nlohmann::ordered_json;
 constexpr std::size_t kMaxGraphNodes = 100000, kMaxChainDepth = 256;
 
 // A value in the graph: a literal, or a link to a node's output; with its MaterialX type.
+// A material parameter is a link that keeps its default as `literal`, for the few inputs
+// the graph needs as constants.
 struct Value {
   Json literal;
   std::string link;
@@ -31,6 +33,10 @@ struct Value {
 
   Json input() const { return link.empty() ? literal : Json(link); }
   bool isLiteral() const { return link.empty(); }
+  // The value at compile time: the literal, or a parameter's default; nullopt for a link.
+  std::optional<double> constant() const {
+    return literal.is_number() ? std::optional(literal.get<double>()) : std::nullopt;
+  }
 };
 
 int widthOf(std::string_view type) {
@@ -65,6 +71,16 @@ std::optional<Json> parseLiteral(const std::string& text, const std::string& typ
   }
   if (static_cast<int>(values.size()) != width) return std::nullopt;
   return width == 1 ? values[0] : values;
+}
+
+// The graph's parameter type of a MaterialX value type.
+const char* parameterType(std::string_view type) {
+  switch (widthOf(type)) {
+    case 1: return type == "boolean" ? "bool" : "float";
+    case 2: return "vec2";
+    case 3: return "vec3";
+    default: return "vec4";
+  }
 }
 
 Json splat(double v, int width) { return width == 1 ? Json(v) : Json(std::vector<double>(width, v)); }
@@ -102,9 +118,11 @@ class GraphWriter {
     model_ = model;
     Json output = shaderOutput();
     if (failed_) return std::nullopt;
+    dropUnreadParameters(output);
     Json graph;
     graph["name"] = naming_.name;
     graph["description"] = naming_.description;
+    if (!parameters_.empty()) graph["parameters"] = parameters_;
     if (!textures_.empty()) graph["textures"] = textures_;
     graph["nodes"] = nodes_;
     graph["output"] = output;
@@ -362,7 +380,8 @@ class GraphWriter {
     if (pugi::xml_attribute iface = input.attribute("interfacename")) {
       pugi::xml_node declared = scope ? childInput(scope, iface.value()) : pugi::xml_node();
       if (!declared) return missingReference(input, "interface input '" + quoteUserText(iface.value()) + "'", type);
-      return inputValue(declared, {}, type);
+      Value value = inputValue(declared, {}, type);
+      return value.isLiteral() && !failed_ ? parameter(scope, declared, value) : value;
     }
     if (pugi::xml_attribute value = input.attribute("value")) {
       if (auto literal = parseLiteral(value.value(), type)) return {*literal, "", type};
@@ -370,6 +389,41 @@ class GraphWriter {
                          "'" + quoteUserText(value.value()) + "'", type);
     }
     return {splat(0, widthOf(type)), "", type};
+  }
+
+  // A node graph's interface input as a material parameter, tunable as glTF import's
+  // factors are: named as the input, or NODEGRAPH_INPUT when two graphs share the name.
+  Value parameter(pugi::xml_node graph, pugi::xml_node declared, const Value& value) {
+    auto key = std::make_pair(declared.internal_object(), std::string("parameter"));
+    if (auto done = done_.find(key); done != done_.end()) return done->second;
+    std::string name = nameOf(declared);
+    if (parameters_.contains(name)) name = nameOf(graph) + "_" + name;
+    Json declaration{{"type", parameterType(value.type)}, {"default", value.literal}};
+    if (pugi::xml_attribute label = declared.attribute("uiname")) declaration["label"] = label.value();
+    parameters_[name] = declaration;
+    std::string id = uniqueId(name);
+    nodes_.push_back(Json{{"id", id}, {"op", "parameter"}, {"param", name}});
+    return done_[key] = Value{value.literal, id + ".out", value.type};
+  }
+
+  // Interface inputs read only as constants (octaves, an extract index) would be
+  // parameters that change nothing: they are left out.
+  void dropUnreadParameters(const Json& output) {
+    std::set<std::string> read;
+    auto collect = [&read](const Json& inputs) {
+      for (const auto& [port, value] : inputs.items())
+        if (value.is_string()) read.insert(value.get<std::string>());
+    };
+    collect(output);
+    for (const auto& n : nodes_)
+      if (n.contains("inputs")) collect(n["inputs"]);
+    Json kept = Json::array();
+    for (auto& n : nodes_) {
+      bool unread = n["op"] == "parameter" && !read.count(n["id"].get<std::string>() + ".out");
+      if (unread) parameters_.erase(n["param"].get<std::string>());
+      else kept.push_back(std::move(n));
+    }
+    nodes_ = std::move(kept);
   }
 
   Value missingReference(pugi::xml_node input, const std::string& what, const std::string& type) {
@@ -499,7 +553,7 @@ class GraphWriter {
   // A literal that must be given as a value: an op option the graph needs at compile time.
   std::optional<double> literalInput(const Context& c, const char* name, double fallback) {
     Value v = in(c, name, "float", fallback);
-    if (v.isLiteral()) return v.literal.get<double>();
+    if (auto constant = v.constant()) return constant;
     schemaError(childInput(c.node, name), "input '" + std::string(name) + "' of node '" + quoteUserText(nameOf(c.node)) + "'",
                 "a value", "a connection", "float");
     return std::nullopt;
@@ -583,10 +637,10 @@ class GraphWriter {
     Value x = declared(c, "in", "vector3");
     const std::string& from = x.type;
     Value index = in(c, "index", "integer", 0.0);
-    int i = index.isLiteral() ? static_cast<int>(index.literal.get<double>()) : -1;
+    int i = index.constant() ? static_cast<int>(*index.constant()) : -1;
     if (i < 0 || i >= widthOf(from))
       return schemaError(c.node, "the index of extract '" + quoteUserText(nameOf(c.node)) + "'",
-                         "a value from 0 to " + std::to_string(widthOf(from) - 1), index.isLiteral() ? index.literal.dump() : "a connection", "float");
+                         "a value from 0 to " + std::to_string(widthOf(from) - 1), index.constant() ? index.literal.dump() : "a connection", "float");
     return swizzle(c.id, x, std::string(1, "xyzw"[i]), "float");
   }
 
@@ -612,7 +666,7 @@ class GraphWriter {
 
   Value texcoord(const Context& c) {
     Value index = in(c, "index", "integer", 0.0);
-    int set = index.isLiteral() ? static_cast<int>(index.literal.get<double>()) : 0;
+    int set = index.constant() ? static_cast<int>(*index.constant()) : 0;
     if (set > 1) warnAdjusted(c.node, "texcoord '" + quoteUserText(nameOf(c.node)) + "' reads set " + std::to_string(set) + "; set 0 is read",
                               "the graph has texture coordinate sets 0 and 1");
     Value uv = flippedV(c.id, node(c.id + "_mesh", set == 1 ? "texcoord1" : "texcoord", Json::object(), "vector2"));
@@ -925,7 +979,7 @@ class GraphWriter {
   DiagnosticList& diags_;
   pugi::xml_node shader_;
   const ShadingModel* model_ = nullptr;
-  Json nodes_ = Json::array(), textures_ = Json::object();
+  Json nodes_ = Json::array(), textures_ = Json::object(), parameters_ = Json::object();
   std::set<std::string> ids_;
   std::map<std::pair<const void*, std::string>, Value> done_;
   std::vector<pugi::xml_node> path_;
