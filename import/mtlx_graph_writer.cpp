@@ -94,6 +94,12 @@ double rounded(double v) {
 
 std::string nameOf(pugi::xml_node node) { return node.attribute("name").value(); }
 
+std::string plainName(std::string name) {
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
+  return name.empty() ? "parameter" : name;
+}
+
 class GraphWriter {
  public:
   GraphWriter(const Document& doc, const GraphNaming& naming, const ImageFiles& images, DiagnosticList& diags)
@@ -392,12 +398,14 @@ class GraphWriter {
   }
 
   // A node graph's interface input as a material parameter, tunable as glTF import's
-  // factors are: named as the input, or NODEGRAPH_INPUT when two graphs share the name.
+  // factors are: named as the input, or NODEGRAPH_INPUT when two graphs share the name
+  // (letters, digits and '_' only: "weather." is the weather's prefix).
   Value parameter(pugi::xml_node graph, pugi::xml_node declared, const Value& value) {
     auto key = std::make_pair(declared.internal_object(), std::string("parameter"));
     if (auto done = done_.find(key); done != done_.end()) return done->second;
-    std::string name = nameOf(declared);
-    if (parameters_.contains(name)) name = nameOf(graph) + "_" + name;
+    std::string name = plainName(nameOf(declared));
+    if (parameters_.contains(name)) name = plainName(nameOf(graph)) + "_" + name;
+    for (int n = 2; parameters_.contains(name); ++n) name = plainName(nameOf(graph) + "_" + nameOf(declared)) + "_" + std::to_string(n);
     Json declaration{{"type", parameterType(value.type)}, {"default", value.literal}};
     if (pugi::xml_attribute label = declared.attribute("uiname")) declaration["label"] = label.value();
     parameters_[name] = declaration;
