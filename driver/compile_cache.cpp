@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <functional>
 #include <thread>
 #include <vector>
@@ -30,6 +29,7 @@ constexpr std::string_view kTemporaryPrefix = "tmp.";
 // Graph libraries and images are hashed whole; larger than any input the loader accepts.
 constexpr std::uintmax_t kMaxInputBytes = 1ull << 30;
 constexpr std::uint64_t kMaxInputFiles = 1u << 16;
+constexpr std::uintmax_t kMaxEntryBytes = 1ull << 30;
 
 // A 128-bit digest: two independent 64-bit lanes over 8-byte words, fast enough to hash
 // an image at memory speed. It is no defence against crafted collisions; the cache
@@ -260,14 +260,6 @@ bool inputsUnchanged(EntryReader& in, std::vector<std::string>& files) {
   return true;
 }
 
-std::optional<std::string> readWhole(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return std::nullopt;
-  return bytes;
-}
-
 // The entry's body, when it is whole: the magic, the body, then the body's digest.
 std::optional<std::string_view> entryBody(std::string_view bytes) {
   constexpr std::size_t kDigestChars = 32;
@@ -334,9 +326,9 @@ std::filesystem::path CompileCache::entryPath(const std::string& key) const {
 
 std::optional<CompiledMaterial> CompileCache::find(const std::string& key) const {
   const std::filesystem::path path = entryPath(key);
-  auto bytes = readWhole(path);
-  if (!bytes) return std::nullopt;
-  auto body = entryBody(*bytes);
+  std::string bytes;
+  if (readRegularFile(path.string(), kMaxEntryBytes, bytes).status != FileReadStatus::Ok) return std::nullopt;
+  auto body = entryBody(bytes);
   if (!body) return std::nullopt;
   EntryReader in(*body);
   CompiledMaterial material;
