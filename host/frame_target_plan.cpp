@@ -4,23 +4,30 @@
 #include <cmath>
 
 #include "host/render_passes.hpp"
+#include "vulkan/material_pipeline.hpp"
 
 namespace wg {
 
 namespace {
 
-// Bytes a sample: the widest colour target the renderer draws (RGBA32F), and D32.
-constexpr std::uint64_t kColourBytes = 16, kDepthBytes = 4;
+// Bytes a sample of each target. Lit frames, the only multisampled ones, are RGBA16F; a
+// debug view's single-sample target is RGBA32F, the widest.
+constexpr std::uint64_t kLitColourBytes = 8, kWidestColourBytes = 16, kDepthBytes = 4;
+static_assert(vk::kColourFormat == VK_FORMAT_R16G16B16A16_SFLOAT && vk::kAovFormat == VK_FORMAT_R32G32B32A32_SFLOAT &&
+                  vk::kDepthFormat == VK_FORMAT_D32_SFLOAT,
+              "the byte counts above follow the renderer's target formats");
 
-// The image a frame allocates alone that is largest: the colour image at `samples`
-// (the resolved image and its read-back buffer are one sample each).
-std::uint64_t largestTargetBytes(std::uint64_t pixels, unsigned samples) { return pixels * kColourBytes * samples; }
+// The largest image a frame allocates alone: the multisampled colour, or the resolved
+// (or debug view's) colour; its read-back buffer is no larger.
+std::uint64_t largestTargetBytes(std::uint64_t pixels, unsigned samples) {
+  return pixels * std::max(kLitColourBytes * samples, kWidestColourBytes);
+}
 
 // The device-local targets: the resolved colour and depth, and the multisampled pair.
 // (The read-back buffer is host memory.)
 std::uint64_t frameBytes(std::uint64_t pixels, unsigned samples) {
-  const std::uint64_t single = pixels * (kColourBytes + kDepthBytes);
-  return samples > 1 ? single + pixels * samples * (kColourBytes + kDepthBytes) : single;
+  const std::uint64_t single = pixels * (kWidestColourBytes + kDepthBytes);
+  return samples > 1 ? single + pixels * samples * (kLitColourBytes + kDepthBytes) : single;
 }
 
 bool fits(std::uint32_t width, std::uint32_t height, unsigned samples, const FrameLimits& limits) {

@@ -1,5 +1,5 @@
-// A lit frame's targets sized against the device before anything is allocated. The
-// multisampled colour image is the largest (up to 16 bytes a sample); a frame whose
+// A frame's targets sized against the device before anything is allocated. The
+// multisampled colour image is the largest (RGBA16F, 8 bytes a sample); a frame whose
 // targets would not fit falls back to fewer MSAA samples, and one that fits at no sample
 // count is refused with the largest size that does, instead of failing in
 // vkAllocateMemory.

@@ -28,8 +28,8 @@ TEST(FrameTargetPlan, ADeviceWithFewerSamplesIsNotANote) {
   EXPECT_EQ(plan.note, "");
 }
 
-// 5793x5793 at 4 samples is 16 bytes x 4 x 33.6 M = 2 GiB + 276 KiB: one allocation too
-// large. 8192x8192 at 2 samples fits one allocation, but not the heap (3.75 GiB).
+// Lit frames are RGBA16F: 5793x5793 at 4 samples needs 2.1 GiB of targets (over the
+// 2 GiB heap), at 2 samples 1.4 GiB; 8192x8192 needs 2.75 GiB even at 2 samples.
 TEST(FrameTargetPlan, LargeFramesFallBackToFewerSamples) {
   const FrameTargetPlan at5793 = planFrameTargets(5793, 5793, 4, lavapipeLike());
   EXPECT_EQ(at5793.samples, 2u);
@@ -39,9 +39,18 @@ TEST(FrameTargetPlan, LargeFramesFallBackToFewerSamples) {
   EXPECT_NE(at8192.note.find("8192x8192 at 4 MSAA samples"), std::string::npos) << at8192.note;
 }
 
+// 8192x8192 at 4 samples is one 2 GiB image, at 2 samples 1 GiB.
+TEST(FrameTargetPlan, AMultisampledImageOverTheAllocationLimitFallsBack) {
+  FrameLimits limits = lavapipeLike();
+  limits.largestAllocation = kGiB;
+  limits.budget = 100 * kGiB;
+  EXPECT_EQ(planFrameTargets(8192, 8192, 4, limits).samples, 2u);
+}
+
 TEST(FrameTargetPlan, AFrameOverTheBudgetFallsBackToo) {
   FrameLimits limits = lavapipeLike();
-  limits.largestAllocation = 4 * kGiB;  // only the heap limits: 4096x4096 takes 2.8 GiB at 8 samples, 1.6 at 4
+  limits.largestAllocation = 4 * kGiB;
+  limits.budget = 3 * kGiB / 2;  // 4096x4096 takes 1.8 GiB at 8 samples, 1.1 GiB at 4
   EXPECT_EQ(planFrameTargets(4096, 4096, 8, limits).samples, 4u);
 }
 
