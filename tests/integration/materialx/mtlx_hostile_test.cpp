@@ -50,6 +50,11 @@ class MaterialXHostile : public ::testing::Test {
     EXPECT_FALSE(fs::exists(out)) << "a failed import wrote its output directory";
     return run.diagnostics;
   }
+
+  // A document of `element` (named `node`) feeding a material's base colour is rejected with `code`.
+  void expectNodeRejected(const std::string& file, const std::string& element, const std::string& node, const std::string& code) {
+    expectRejected(write(file, document("  " + element + "\n" + material("nodename=\"" + node + "\""))), code);
+  }
 };
 
 TEST_F(MaterialXHostile, MalformedXmlNamesLineAndColumn) {
@@ -129,12 +134,10 @@ TEST_F(MaterialXHostile, NodeGraphCycleIsNamed) {
 }
 
 TEST_F(MaterialXHostile, WrongTypeConnectionIsASchemaError) {
-  expectRejected(write("wrong.mtlx", document("  <constant name=\"f\" type=\"float\"><input name=\"value\" type=\"float\" value=\"0.5\" /></constant>\n" +
-                                              material("nodename=\"f\""))),
-                 "WG5202");
-  expectRejected(write("vector.mtlx", document("  <constant name=\"v\" type=\"vector3\"><input name=\"value\" type=\"vector3\" value=\"1, 0, 0\" /></constant>\n" +
-                                               material("nodename=\"v\""))),
-                 "WG5202");
+  expectNodeRejected("wrong.mtlx", R"(<constant name="f" type="float"><input name="value" type="float" value="0.5" /></constant>)", "f",
+                     "WG5202");
+  expectNodeRejected("vector.mtlx", R"(<constant name="v" type="vector3"><input name="value" type="vector3" value="1, 0, 0" /></constant>)",
+                     "v", "WG5202");
 }
 
 TEST_F(MaterialXHostile, UnsupportedNodeIsNamed) {
@@ -165,12 +168,10 @@ TEST_F(MaterialXHostile, MissingImageIsAnErrorOrThePlaceholder) {
 TEST_F(MaterialXHostile, ImagePathLeavingTheSearchPathIsNotRead) {
   write("secret.png", "not read");
   fs::create_directories(dir_.path() / "docs");
-  expectRejected(write("docs/escape.mtlx", document("  <image name=\"img\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"../secret.png\" /></image>\n" +
-                                                    material("nodename=\"img\""))),
-                 "WG5205");
-  expectRejected(write("docs/absolute.mtlx", document("  <image name=\"img\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"/etc/passwd\" /></image>\n" +
-                                                      material("nodename=\"img\""))),
-                 "WG5205");
+  for (const char* path : {"../secret.png", "/etc/passwd"})
+    expectNodeRejected("docs/escape.mtlx",
+                       std::string(R"(<image name="img" type="color3"><input name="file" type="filename" value=")") + path + R"(" /></image>)",
+                       "img", "WG5205");
 }
 
 TEST_F(MaterialXHostile, FailedImportLeavesTheOutputDirectoryAsItWas) {
