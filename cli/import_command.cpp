@@ -144,7 +144,9 @@ int importMaterialX(const ImportOptions& o) {
   if (document) imported = mtlx::importDocument(*document, {*presets, o.missingImages, o.displacement}, diagnostics);
   printDiagnostics(diagnostics.items(), o.json);
   if (!imported) return kExitBadInput;
-  if (std::string e = replacedInput(document->inputFiles(), imported->files, o.outputDir); !e.empty()) return usageError(e, o.json);
+  std::vector<std::filesystem::path> read = document->inputFiles();
+  read.insert(read.end(), imported->imagesRead.begin(), imported->imagesRead.end());
+  if (std::string e = replacedInput(read, imported->files, o.outputDir); !e.empty()) return usageError(e, o.json);
   if (std::string e = publish(imported->files, o.outputDir); !e.empty()) return usageError(e, o.json);
   if (!o.quiet)
     std::printf("import: %zu material graph(s) and %zu image(s) from %s into %s (index: %s)\n", imported->materialGraphs.size(),

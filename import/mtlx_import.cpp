@@ -63,6 +63,11 @@ class ImageCollector {
   }
 
   std::vector<gltf::ImportedFile>& files() { return files_; }
+  std::vector<fs::path> read() const {
+    std::vector<fs::path> paths;
+    for (const auto& [path, name] : names_) paths.push_back(path);
+    return paths;
+  }
   const Json& index() const { return sources_; }
 
  private:
@@ -182,6 +187,7 @@ std::optional<ImportedDocument> importDocument(const Document& document, const I
   for (std::size_t i = before; i < diagnostics.items().size(); ++i)
     if (diagnostics.items()[i].info().severity == Severity::Error) return std::nullopt;
   out.imageCount = images.files().size();
+  out.imagesRead = images.read();
   for (auto& f : images.files()) out.files.push_back(std::move(f));
   out.indexFile = stem + ".import.json";
   out.files.push_back({out.indexFile, asText(index)});

@@ -4,6 +4,7 @@
 // and looks. Like glTF import, the result is bytes in memory that the CLI publishes all
 // at once or not at all, and names depend only on the document's contents.
 #pragma once
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@ struct ImportedDocument {
   std::string indexFile;                    // DOCUMENT.import.json
   std::vector<std::string> materialGraphs;  // in document order
   std::size_t imageCount = 0;               // image files written, the placeholder included
+  std::vector<std::filesystem::path> imagesRead;  // resolved, for the check that no output replaces one
 };
 
 std::optional<ImportedDocument> importDocument(const Document& document, const ImportSettings& settings,

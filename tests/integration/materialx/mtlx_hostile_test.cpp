@@ -184,6 +184,18 @@ TEST_F(MaterialXHostile, FailedImportLeavesTheOutputDirectoryAsItWas) {
   EXPECT_EQ(readFile(out / "mine.txt"), "keep me");
 }
 
+// An image named as the import would name its copy, in the output directory itself.
+TEST_F(MaterialXHostile, OutputThatWouldReplaceAnImageItReadsIsRefused) {
+  writeStandIn(dir_.path() / "x_image0.png", {{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}, {10, 11, 12}}});
+  std::string before = readFile(dir_.path() / "x_image0.png");
+  fs::path doc = write("x.mtlx", document(R"(  <image name="img" type="color3"><input name="file" type="filename" value="x_image0.png" /></image>)"
+                                          "\n" + material("nodename=\"img\"")));
+  ImportResult run = importDocument(doc, dir_.path());
+  EXPECT_EQ(run.exitCode, 2) << run.output;  // a usage error: choose another output directory
+  EXPECT_EQ(readFile(dir_.path() / "x_image0.png"), before);
+  EXPECT_EQ(listFiles(dir_.path()), (std::vector<std::string>{"x.mtlx", "x_image0.png"}));
+}
+
 TEST_F(MaterialXHostile, DiagnosticsNameTheElementPath) {
   auto d = expectRejected(write("path.mtlx", document("  <nodegraph name=\"NG\">\n"
                                                       "    <multiply name=\"m\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"nobody\" /></multiply>\n"
