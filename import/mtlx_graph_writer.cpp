@@ -221,8 +221,8 @@ class GraphWriter {
 
   // a x b, folded when both are literals so constant materials stay literal.
   Value product(const std::string& id, const Value& a, const Value& b) {
+    if (b.isLiteral() && b.literal == Json(1.0)) return a;
     if (a.isLiteral() && b.isLiteral() && b.literal.is_number()) {
-      if (b.literal == Json(1.0)) return a;
       Json out = a.literal;
       for (auto& v : out) v = rounded(v.get<double>() * b.literal.get<double>());
       if (out.is_number()) out = rounded(a.literal.get<double>() * b.literal.get<double>());
