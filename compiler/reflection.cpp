@@ -1,168 +1,270 @@
 #include "compiler/reflection.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include "compiler/debug_views.hpp"
+#include "compiler/indented_json_writer.hpp"
 #include "nodes/shader_stage.hpp"
 #include "nodes/texture_sampling.hpp"
 
 namespace wg {
 
 namespace {
-using Json = nlohmann::ordered_json;
 
-Json valueJson(const Value& v) {
-  if (v.type == ValueType::Bool) return v.asBool();
-  if (v.width() == 1) return v.v[0];
-  Json a = Json::array();
-  for (int i = 0; i < v.width(); ++i) a.push_back(v.v[i]);
-  return a;
+void writeValue(IndentedJsonWriter& w, const Value& v) {
+  if (v.type == ValueType::Bool) return w.boolean(v.asBool());
+  if (v.width() == 1) return w.number(v.v[0]);
+  w.beginArray();
+  for (int i = 0; i < v.width(); ++i) w.number(v.v[i]);
+  w.endArray();
 }
 
-Json blockJson(const UniformBlock& block, const IrGraph* graph) {
-  Json members = Json::array();
+void writeParameter(IndentedJsonWriter& w, const ParameterDecl& p) {
+  w.key("valueType").text(typeName(p.type));
+  writeValue(w.key("default"), p.defaultValue);
+  if (p.min) w.key("min").number(*p.min);
+  if (p.max) w.key("max").number(*p.max);
+  if (!p.label.empty()) w.key("label").text(p.label);
+}
+
+void writeBlock(IndentedJsonWriter& w, const UniformBlock& block, const IrGraph* graph) {
+  w.beginObject();
+  w.key("name").text(block.name);
+  w.key("identifier").text(block.identifier);
+  w.key("set").integer(block.set);
+  w.key("binding").integer(block.binding);
+  w.key("size").integer(block.size);
+  w.key("members").beginArray();
   for (const auto& m : block.members) {
-    Json j = {{"name", m.name}, {"identifier", m.identifier}, {"type", interfaceTypeName(m.type)},
-              {"offset", m.offset}, {"size", m.size}};
-    if (graph && m.parameter >= 0) {
-      const auto& p = graph->parameters[static_cast<std::size_t>(m.parameter)];
-      j["valueType"] = typeName(p.type);
-      j["default"] = valueJson(p.defaultValue);
-      if (p.min) j["min"] = *p.min;
-      if (p.max) j["max"] = *p.max;
-      if (!p.label.empty()) j["label"] = p.label;
-    }
-    members.push_back(std::move(j));
+    w.beginObject();
+    w.key("name").text(m.name);
+    w.key("identifier").text(m.identifier);
+    w.key("type").text(interfaceTypeName(m.type));
+    w.key("offset").integer(m.offset);
+    w.key("size").integer(m.size);
+    if (graph && m.parameter >= 0) writeParameter(w, graph->parameters[static_cast<std::size_t>(m.parameter)]);
+    w.endObject();
   }
-  return {{"name", block.name}, {"identifier", block.identifier}, {"set", block.set},
-          {"binding", block.binding}, {"size", block.size}, {"members", std::move(members)}};
+  w.endArray();
+  w.endObject();
 }
 
 // "wrap" and "filter" appear when both axes (directions) agree, as before per-axis
 // settings existed; "wrapU"/"wrapV", "minFilter"/"magFilter" and "colorSpace" always.
-void addSamplerJson(Json& texture, const SamplerState& s) {
-  if (s.wrapU == s.wrapV) texture["wrap"] = textureWrapName(s.wrapU);
-  if (s.minFilter == s.magFilter) texture["filter"] = textureFilterName(s.magFilter);
-  texture["wrapU"] = textureWrapName(s.wrapU);
-  texture["wrapV"] = textureWrapName(s.wrapV);
-  texture["minFilter"] = textureFilterName(s.minFilter);
-  texture["magFilter"] = textureFilterName(s.magFilter);
-  texture["colorSpace"] = colorSpaceName(s.colorSpace);
+void writeSampler(IndentedJsonWriter& w, const SamplerState& s) {
+  if (s.wrapU == s.wrapV) w.key("wrap").text(textureWrapName(s.wrapU));
+  if (s.minFilter == s.magFilter) w.key("filter").text(textureFilterName(s.magFilter));
+  w.key("wrapU").text(textureWrapName(s.wrapU));
+  w.key("wrapV").text(textureWrapName(s.wrapV));
+  w.key("minFilter").text(textureFilterName(s.minFilter));
+  w.key("magFilter").text(textureFilterName(s.magFilter));
+  w.key("colorSpace").text(colorSpaceName(s.colorSpace));
 }
 
-Json stageVariablesJson(const std::vector<StageVariable>& vars) {
-  Json out = Json::array();
-  for (const auto& v : vars)
-    out.push_back({{"name", v.name}, {"identifier", v.identifier}, {"location", v.location},
-                   {"type", interfaceTypeName(v.type)}});
-  return out;
-}
-Json weatherJson(const IrGraph& graph) {
-  const WeatherConfig& w = graph.weather;
-  Json effects = Json::object();
-  if (w.active())
-    for (const auto& f : weatherEffectFlags()) effects[std::string(f.name)] = w.effects.*(f.flag);
-  return {{"preset", w.preset}, {"effects", std::move(effects)}};
+void writeStageVariables(IndentedJsonWriter& w, const std::vector<StageVariable>& vars) {
+  w.beginArray();
+  for (const auto& v : vars) {
+    w.beginObject();
+    w.key("name").text(v.name);
+    w.key("identifier").text(v.identifier);
+    w.key("location").integer(v.location);
+    w.key("type").text(interfaceTypeName(v.type));
+    w.endObject();
+  }
+  w.endArray();
 }
 
-Json surfaceStructJson(const SurfaceStruct& st) {
-  Json fields = Json::array();
-  for (const auto& f : st.fields) fields.push_back({{"name", f.name}, {"type", f.type}});
-  return fields;
+void writeWeather(IndentedJsonWriter& w, const IrGraph& graph) {
+  const WeatherConfig& weather = graph.weather;
+  w.beginObject();
+  w.key("preset").text(weather.preset);
+  w.key("effects").beginObject();
+  if (weather.active())
+    for (const auto& f : weatherEffectFlags()) w.key(f.name).boolean(weather.effects.*(f.flag));
+  w.endObject();
+  w.endObject();
+}
+
+void writeTextureSource(IndentedJsonWriter& w, const TextureDecl& t) {
+  w.beginObject();
+  if (!t.file.empty()) {
+    w.key("kind").text("file");
+    w.key("file").text(t.file);
+  } else {
+    w.key("kind").text("procedural");
+    w.key("generator").text(t.generator);
+    w.key("seed").integer(t.seed);
+    w.key("size").integer(t.size);
+    w.key("options").json(t.options);
+  }
+  w.endObject();
+}
+
+// Where a texture and its sampler are bound, for material textures and weather maps alike.
+void writeBinding(IndentedJsonWriter& w, const TextureBinding& b) {
+  w.key("name").text(b.name);
+  w.key("set").integer(b.set);
+  w.key("binding").integer(b.textureBinding);
+  w.key("samplerBinding").integer(b.samplerBinding);
+  w.key("textureIdentifier").text(b.textureIdentifier);
+  w.key("samplerIdentifier").text(b.samplerIdentifier);
+}
+
+void writeTextures(IndentedJsonWriter& w, const IrGraph& graph, const MaterialInterface& mi) {
+  w.beginArray();
+  for (const auto& b : mi.textures) {
+    const TextureDecl& t = graph.textures[static_cast<std::size_t>(b.texture)];
+    w.beginObject();
+    writeBinding(w, b);
+    writeSampler(w, t.sampler);
+    writeTextureSource(w.key("source"), t);
+    w.endObject();
+  }
+  w.endArray();
+}
+
+void writeWeatherMaps(IndentedJsonWriter& w, const MaterialInterface& mi) {
+  w.beginArray();
+  for (const auto& m : mi.weatherMaps) {
+    w.beginObject();
+    writeBinding(w, m);
+    w.endObject();
+  }
+  w.endArray();
+}
+
+void writeDebugViews(IndentedJsonWriter& w) {
+  w.beginArray();
+  for (const auto& view : kDebugViews) {
+    w.beginObject();
+    w.key("id").integer(view.id);
+    w.key("name").text(view.name);
+    w.endObject();
+  }
+  w.endArray();
+}
+
+void writeFiles(IndentedJsonWriter& w, const std::string& fileStem) {
+  w.beginObject();
+  for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+      std::string lang(languageName(language));
+      std::string st = stage == ShaderStage::Vertex ? "vert" : "frag";
+      w.key(lang + "." + st).beginObject();
+      w.key("source").text(fileStem + "." + st + "." + lang);
+      w.key("spirv").text(fileStem + "." + lang + "." + st + ".spv");
+      w.endObject();
+    }
+  w.endObject();
+}
+
+void writeSurfaceStruct(IndentedJsonWriter& w, const SurfaceStruct& st) {
+  w.beginArray();
+  for (const auto& f : st.fields) {
+    w.beginObject();
+    w.key("name").text(f.name);
+    w.key("type").text(f.type);
+    w.endObject();
+  }
+  w.endArray();
+}
+
+void writeSurfaceResource(IndentedJsonWriter& w, const SurfaceInterface& s, const SurfaceResource& r) {
+  w.beginObject();
+  w.key("name").text(r.name);
+  w.key("identifier").text(r.identifier);
+  w.key("kind").text(surfaceResourceKindName(r.kind));
+  w.key("shared").boolean(r.shared);
+  w.key("set").integer(r.set);
+  w.key("binding").integer(r.binding);
+  w.key("setMacro").text(r.setMacro);
+  w.key("bindingMacro").text(r.bindingMacro);
+  if (!r.absentMacro.empty()) w.key("absentMacro").text(r.absentMacro);
+  if (r.kind == SurfaceResourceKind::UniformBlock) {
+    const UniformBlock& block = r.shared ? surfaceWeatherBlock() : s.prefixed.material;
+    w.key("size").integer(block.size);
+    w.key("members").beginArray();
+    for (const auto& m : block.members) {
+      w.beginObject();
+      w.key("name").text(m.name);
+      w.key("identifier").text(m.identifier);
+      w.key("type").text(interfaceTypeName(m.type));
+      w.key("offset").integer(m.offset);
+      w.endObject();
+    }
+    w.endArray();
+  }
+  w.endObject();
+}
+
+// One entry point of the surface: its function and structs' names.
+void writeSurfaceFunction(IndentedJsonWriter& w, const std::string& function, const SurfaceStruct& input,
+                          const SurfaceStruct& output) {
+  w.beginObject();
+  w.key("function").text(function);
+  w.key("input").text(input.name);
+  w.key("output").text(output.name);
+  w.endObject();
 }
 
 // The host contract (docs/engine-api.md, "The surface contract"): enough to write the
 // glue that calls a surface without reading its text.
-Json surfaceJson(const SurfaceInterface& s, const std::string& fileStem) {
-  Json files = Json::object();
-  for (const auto& language : surfaceLanguages()) files[std::string(language.name)] = fileStem + "." + std::string(language.suffix);
-  Json structs = Json::object();
+void writeSurface(IndentedJsonWriter& w, const SurfaceInterface& s, const std::string& fileStem) {
+  w.beginObject();
+  w.key("files").beginObject();
+  for (const auto& language : surfaceLanguages())
+    w.key(language.name).text(fileStem + "." + std::string(language.suffix));
+  w.endObject();
+  w.key("prefix").text(s.prefix);
+  writeSurfaceFunction(w.key("vertex"), s.vertexFunction, s.vertexInput, s.vertexOutput);
+  writeSurfaceFunction(w.key("fragment"), s.fragmentFunction, s.fragmentInput, s.fragmentOutput);
+  w.key("stageMacros").beginObject();
+  w.key("vertex").text(kSurfaceVertexOnlyMacro);
+  w.key("fragment").text(kSurfaceFragmentOnlyMacro);
+  w.endObject();
+  w.key("hostResourcesMacro").text(kSurfaceHostResourcesMacro);
+  w.key("structs").beginObject();
   for (const SurfaceStruct* st : {&s.vertexInput, &s.vertexOutput, &s.fragmentInput, &s.fragmentOutput})
-    structs[st->name] = surfaceStructJson(*st);
-  Json resources = Json::array();
-  for (const auto& r : s.resources) {
-    Json resource = {{"name", r.name}, {"identifier", r.identifier}, {"kind", surfaceResourceKindName(r.kind)},
-                     {"shared", r.shared}, {"set", r.set}, {"binding", r.binding}, {"setMacro", r.setMacro},
-                     {"bindingMacro", r.bindingMacro}};
-    if (!r.absentMacro.empty()) resource["absentMacro"] = r.absentMacro;
-    if (r.kind == SurfaceResourceKind::UniformBlock) {
-      const UniformBlock& block = r.shared ? surfaceWeatherBlock() : s.prefixed.material;
-      Json members = Json::array();
-      for (const auto& m : block.members)
-        members.push_back({{"name", m.name}, {"identifier", m.identifier}, {"type", interfaceTypeName(m.type)},
-                           {"offset", m.offset}});
-      resource["size"] = block.size;
-      resource["members"] = std::move(members);
-    }
-    resources.push_back(std::move(resource));
-  }
-  return {{"files", std::move(files)},
-          {"prefix", s.prefix},
-          {"vertex", {{"function", s.vertexFunction}, {"input", s.vertexInput.name}, {"output", s.vertexOutput.name}}},
-          {"fragment",
-           {{"function", s.fragmentFunction}, {"input", s.fragmentInput.name}, {"output", s.fragmentOutput.name}}},
-          {"stageMacros", {{"vertex", kSurfaceVertexOnlyMacro}, {"fragment", kSurfaceFragmentOnlyMacro}}},
-          {"hostResourcesMacro", kSurfaceHostResourcesMacro},
-          {"structs", std::move(structs)},
-          {"resources", std::move(resources)}};
+    writeSurfaceStruct(w.key(st->name), *st);
+  w.endObject();
+  w.key("resources").beginArray();
+  for (const auto& r : s.resources) writeSurfaceResource(w, s, r);
+  w.endArray();
+  w.endObject();
 }
 
 }  // namespace
 
 std::string buildReflectionJson(const IrGraph& graph, const MaterialInterface& mi, const SurfaceInterface& surface,
                                 const std::string& hash, const std::string& fileStem) {
-  Json textures = Json::array();
-  for (const auto& b : mi.textures) {
-    const TextureDecl& t = graph.textures[static_cast<std::size_t>(b.texture)];
-    Json source;
-    if (!t.file.empty()) {
-      source = {{"kind", "file"}, {"file", t.file}};
-    } else {
-      source = {{"kind", "procedural"}, {"generator", t.generator}, {"seed", t.seed}, {"size", t.size},
-                {"options", Json::parse(t.options.dump())}};
-    }
-    Json texture = {{"name", b.name}, {"set", b.set}, {"binding", b.textureBinding},
-                    {"samplerBinding", b.samplerBinding}, {"textureIdentifier", b.textureIdentifier},
-                    {"samplerIdentifier", b.samplerIdentifier}};
-    addSamplerJson(texture, t.sampler);
-    texture["source"] = std::move(source);
-    textures.push_back(std::move(texture));
-  }
-  Json weatherMaps = Json::array();
-  for (const auto& m : mi.weatherMaps)
-    weatherMaps.push_back({{"name", m.name}, {"set", m.set}, {"binding", m.textureBinding},
-                           {"samplerBinding", m.samplerBinding}, {"textureIdentifier", m.textureIdentifier},
-                           {"samplerIdentifier", m.samplerIdentifier}});
-  Json debugViews = Json::array();
-  for (const auto& view : kDebugViews) debugViews.push_back({{"id", view.id}, {"name", view.name}});
-  Json files = Json::object();
-  for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
-    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
-      std::string lang(languageName(language));
-      std::string st = stage == ShaderStage::Vertex ? "vert" : "frag";
-      files[lang + "." + st] = {{"source", fileStem + "." + st + "." + lang},
-                                {"spirv", fileStem + "." + lang + "." + st + ".spv"}};
-    }
-  Json root = {
-      {"weathergenVersion", WEATHERGEN_VERSION},
-      {"material", graph.name},
-      {"contentHash", hash},
-      {"weather", weatherJson(graph)},
-      {"alphaMode", alphaModeName(graph.alphaMode)},
-      {"alphaTested", graph.alphaTested()},
-      {"alphaCutoff", graph.alphaCutoff},
-      {"doubleSided", graph.doubleSided},
-      {"blocks", Json::array({blockJson(*mi.frame, nullptr), blockJson(mi.material, &graph)})},
-      {"textures", std::move(textures)},
-      {"vertexInputs", stageVariablesJson(mi.vertexInputs)},
-      {"varyings", stageVariablesJson(mi.varyings)},
-      {"fragmentOutputs", Json::array({{{"name", "color"}, {"location", 0}, {"type", "vec4"}}})},
-      {"weatherMaps", std::move(weatherMaps)},
-      {"debugViews", std::move(debugViews)},
-      {"files", std::move(files)},
-      {"surface", surfaceJson(surface, fileStem)},
-  };
-  return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  IndentedJsonWriter w;
+  w.beginObject();
+  w.key("weathergenVersion").text(WEATHERGEN_VERSION);
+  w.key("material").text(graph.name);
+  w.key("contentHash").text(hash);
+  writeWeather(w.key("weather"), graph);
+  w.key("alphaMode").text(alphaModeName(graph.alphaMode));
+  w.key("alphaTested").boolean(graph.alphaTested());
+  w.key("alphaCutoff").number(graph.alphaCutoff);
+  w.key("doubleSided").boolean(graph.doubleSided);
+  w.key("blocks").beginArray();
+  writeBlock(w, *mi.frame, nullptr);
+  writeBlock(w, mi.material, &graph);
+  w.endArray();
+  writeTextures(w.key("textures"), graph, mi);
+  writeStageVariables(w.key("vertexInputs"), mi.vertexInputs);
+  writeStageVariables(w.key("varyings"), mi.varyings);
+  w.key("fragmentOutputs").beginArray();
+  w.beginObject();
+  w.key("name").text("color");
+  w.key("location").integer(0);
+  w.key("type").text("vec4");
+  w.endObject();
+  w.endArray();
+  writeWeatherMaps(w.key("weatherMaps"), mi);
+  writeDebugViews(w.key("debugViews"));
+  writeFiles(w.key("files"), fileStem);
+  writeSurface(w.key("surface"), surface, fileStem);
+  w.endObject();
+  return w.finish();
 }
 
 }  // namespace wg
