@@ -61,6 +61,8 @@ OptionTable importOptionTable(ImportOptions& o) {
                "MaterialX: a folder to find images and xi:includes in, after\n"
                "the document's own (repeatable); nothing outside them is read",
                [&o](const std::string& v) {
+                 std::error_code ec;
+                 if (!std::filesystem::is_directory(v, ec)) return "--search-path '" + quoteUserText(v) + "' is not a folder";
                  o.searchPath.push_back(v);
                  return std::string();
                }},

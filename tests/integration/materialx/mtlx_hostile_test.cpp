@@ -196,6 +196,13 @@ TEST_F(MaterialXHostile, OutputThatWouldReplaceAnImageItReadsIsRefused) {
   EXPECT_EQ(listFiles(dir_.path()), (std::vector<std::string>{"x.mtlx", "x_image0.png"}));
 }
 
+TEST_F(MaterialXHostile, SearchPathMustBeAFolder) {
+  ImportResult run = importDocument(write("plain.mtlx", document(material("value=\"1, 0, 0\""))), dir_.path() / "out",
+                                    "--search-path " + shellQuote((dir_.path() / "missing").string()));
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_FALSE(fs::exists(dir_.path() / "out"));
+}
+
 TEST_F(MaterialXHostile, DiagnosticsNameTheElementPath) {
   auto d = expectRejected(write("path.mtlx", document("  <nodegraph name=\"NG\">\n"
                                                       "    <multiply name=\"m\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"nobody\" /></multiply>\n"
