@@ -817,6 +817,10 @@ class GraphWriter {
   Value textureCoordinate(const Context& c, const std::string& category) {
     Value uv = childInput(c.node, "texcoord") ? in(c, "texcoord", "vector2", Json()) : defaultTexcoord(c.id + "_texcoord");
     if (category == "image") return uv;
+    for (const char* size : {"realworldimagesize", "realworldtilesize"})
+      if (childInput(c.node, size))
+        warnAdjusted(childInput(c.node, size), std::string(size) + " of '" + quoteUserText(nameOf(c.node)) + "' is not read",
+                     "the graph tiles by uvtiling alone; fold the real-world sizes into uvtiling");
     const char* tiling = category == "tiledimage" ? "uvtiling" : "tiling";
     Value scale = in(c, tiling, "vector2", Json::array({1.0, 1.0}));
     Value scaled = node(c.id + "_tiled", "multiply", {{"a", uv.input()}, {"b", scale.input()}}, "vector2");
