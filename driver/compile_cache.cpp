@@ -364,13 +364,18 @@ CompileResult CompileCache::compileFile(const std::string& path, const CompileOp
   CompileResult result;
   auto text = readGraphFile(path, result.diagnostics);
   if (!text) return result;
-  const std::string key = compileCacheKey(path, *text, options);
+  return compileText(path, std::move(*text), options);
+}
+
+CompileResult CompileCache::compileText(const std::string& file, std::string text, const CompileOptions& options) const {
+  const std::string key = compileCacheKey(file, text, options);
+  CompileResult result;
   if (auto material = find(key)) {
     result.material = std::move(*material);
     return result;
   }
   const std::int64_t start = nowNs();
-  result = compileMaterialText(path, std::move(*text), options);
+  result = compileMaterialText(file, std::move(text), options);
   if (result.material && result.diagnostics.items().empty()) store(key, *result.material, start);
   return result;
 }

@@ -32,10 +32,13 @@ class CompileCache {
   // The graph file compiled with `options`: from an entry whose inputs are unchanged, or
   // compiled and then stored. A material from an entry has an empty IR.
   CompileResult compileFile(const std::string& path, const CompileOptions& options) const;
+  // The same for a graph's text already in memory; `file` names it as compileMaterialText's does.
+  CompileResult compileText(const std::string& file, std::string text, const CompileOptions& options) const;
 
   // After a run that stored entries: once the directory holds more than its bound,
   // evicts the least recently used entries down to three quarters of it, and removes
-  // temporary files that writers left over an hour ago. Thread-safe with compileFile.
+  // temporary files that writers left over an hour ago. Thread-safe with compileFile
+  // and compileText.
   void trim() const;
 
   const std::filesystem::path& directory() const { return directory_; }

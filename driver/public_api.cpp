@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "backends/spirv/spirv_toolchain.hpp"
+#include "driver/compile_cache.hpp"
 #include "driver/material_compiler.hpp"
 #include "compiler/material_interface.hpp"
 #include "compiler/surface_interface.hpp"
@@ -49,6 +50,17 @@ Stage publicStage(wg::CompiledStage&& s) {
           std::move(s.source), std::move(s.spirv)};
 }
 
+// Through the compile cache when the options name a usable directory.
+wg::CompileResult compileWithOptionalCache(const std::string& file, std::string json, const wg::CompileOptions& options,
+                                           const std::string& cacheDirectory) {
+  if (cacheDirectory.empty()) return wg::compileMaterialText(file, std::move(json), options);
+  const wg::CompileCache cache(cacheDirectory);
+  if (!cache.prepare().empty()) return wg::compileMaterialText(file, std::move(json), options);
+  wg::CompileResult compiled = cache.compileText(file, std::move(json), options);
+  cache.trim();
+  return compiled;
+}
+
 Result compileOrThrow(std::string_view fileName, std::string_view json, const Options& options) {
   Result result;
   if (!initialize()) {
@@ -66,7 +78,8 @@ Result compileOrThrow(std::string_view fileName, std::string_view json, const Op
   internal.emitCppHeader = options.cppHeader;
   internal.emitSurface = options.surface;
   internal.switches = wg::SwitchValues(options.switches.begin(), options.switches.end());
-  wg::CompileResult compiled = wg::compileMaterialText(std::string(fileName), std::string(json), internal);
+  wg::CompileResult compiled = compileWithOptionalCache(std::string(fileName), std::string(json), internal,
+                                                       options.cacheDirectory);
   for (const auto& d : compiled.diagnostics.items()) result.diagnostics.push_back(publicDiagnostic(d));
   if (!compiled.material || compiled.diagnostics.hasErrors()) return result;
   wg::CompiledMaterial& material = *compiled.material;

@@ -57,6 +57,11 @@ struct Options {
   // Fill Result::surfaces: the weathered surface without our lighting, for engines that
   // light it themselves (docs/engine-api.md, "The surface contract").
   bool surface = false;
+  // A persistent compile cache shared by processes (docs/scaling.md, "The compile
+  // cache"): "" compiles every time; else a directory, created if missing, that keeps
+  // each compile without diagnostics, keyed by the graph's text, the files it reads and
+  // the options. A directory that cannot be written only leaves the cache out.
+  std::string cacheDirectory;
   // The variant: static switch name -> value (docs/graph-format.md, "Static switches");
   // switches not named keep their default. Unknown names or values are diagnostics.
   std::map<std::string, std::string> switches;

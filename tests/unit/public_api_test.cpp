@@ -15,6 +15,8 @@
 #include <sstream>
 #include <thread>
 
+#include <unistd.h>
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -151,6 +153,27 @@ TEST(PublicApi, WhatIsNotAskedForIsLeftOut) {
   ASSERT_TRUE(spirv.ok) << describe(spirv);
   ASSERT_EQ(spirv.stages.size(), 2u);
   for (const auto& s : spirv.stages) EXPECT_EQ(s.spirv.front(), kSpirvMagic);
+}
+
+TEST(PublicApi, ACacheDirectoryGivesTheSameResultsFromItsEntries) {
+  const fs::path dir = fs::temp_directory_path() / ("weathergen-api-cache-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  Graph g = rock();
+  const weathergen::Result plain = weathergen::compile(g.file, g.text);
+  weathergen::Options cached;
+  cached.cacheDirectory = dir.string();
+  const weathergen::Result cold = weathergen::compile(g.file, g.text, cached);
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) entries += e.path().extension() == ".entry";
+  EXPECT_EQ(entries, 1u);
+  const weathergen::Result warm = weathergen::compile(g.file, g.text, cached);
+  EXPECT_EQ(fingerprint(cold), fingerprint(plain));
+  EXPECT_EQ(fingerprint(warm), fingerprint(plain));
+  // A directory that cannot be made leaves the cache out, not the compile.
+  cached.cacheDirectory = (dir / "entry-is-not-a-directory").string();
+  std::ofstream(cached.cacheDirectory) << "a file";
+  EXPECT_EQ(fingerprint(weathergen::compile(g.file, g.text, cached)), fingerprint(plain));
+  fs::remove_all(dir);
 }
 
 TEST(PublicApi, SwitchesChooseTheVariant) {
