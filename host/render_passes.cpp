@@ -120,8 +120,13 @@ vk::UniqueRenderPass createMultisampledColourPass(const vk::Context& ctx, VkSamp
 vk::UniqueRenderPass createDepthOnlyPass(VkDevice device) {
   VkAttachmentDescription depth = clearedAttachment(vk::kDepthFormat, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   VkAttachmentReference depthRef{0, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  // An unused colour slot: alpha-tested materials run their fragment stage here for its
+  // discard, and its colour output goes nowhere.
+  VkAttachmentReference unusedColour{VK_ATTACHMENT_UNUSED, VK_IMAGE_LAYOUT_UNDEFINED};
   VkSubpassDescription subpass{};
   subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &unusedColour;
   subpass.pDepthStencilAttachment = &depthRef;
   // The colour pass samples the map afterwards.
   VkSubpassDependency after{};

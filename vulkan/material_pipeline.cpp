@@ -94,9 +94,10 @@ UniquePipeline MaterialPipeline::build(VkRenderPass pass, Kind kind, VkSampleCou
   VkVertexInputBindingDescription binding{0, vertex_.stride, VK_VERTEX_INPUT_RATE_VERTEX};
   GraphicsPipelineSettings settings;
   settings.vertex = vertexModule_.get();
-  // Depth maps run the material's own vertex stage (snow displacement casts shadows)
-  // and no fragment stage.
-  if (!depthOnly) settings.fragment = fragmentModule_.get();
+  // Depth maps run the material's own vertex stage (snow displacement casts shadows).
+  // Alpha-tested materials run their fragment stage there too, for its discard: a
+  // foliage card that snow has thinned away casts no shadow. Others need none.
+  if (!depthOnly || reflection_.alphaTested) settings.fragment = fragmentModule_.get();
   settings.vertexInput.vertexBindingDescriptionCount = 1;
   settings.vertexInput.pVertexBindingDescriptions = &binding;
   settings.vertexInput.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(vertex_.attributes.size());
@@ -106,7 +107,7 @@ UniquePipeline MaterialPipeline::build(VkRenderPass pass, Kind kind, VkSampleCou
   const bool twoSided = depthOnly || reflection_.alphaTested || reflection_.doubleSided;
   settings.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
   settings.depthWrite = !blended;  // blended surfaces hide nothing
-  if (!depthOnly) settings.colour = blended ? straightAlphaBlend() : opaqueColour();
+  settings.colour = depthOnly ? VkPipelineColorBlendAttachmentState{} : blended ? straightAlphaBlend() : opaqueColour();
   settings.layout = layout_.get();
   settings.pass = pass;
   settings.samples = samples;
