@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "compiler/graph_loader.hpp"
+#include "compiler/literal.hpp"
 #include "nodes/regular_file.hpp"
 
 namespace wg {
@@ -315,8 +316,9 @@ std::string CompileCache::prepare() const {
   std::error_code ec;
   std::filesystem::create_directories(directory_, ec);
   if (!std::filesystem::is_directory(directory_, ec))
-    return "'" + directory_.string() + "' is not a directory and cannot be created; name another";
-  if (::access(directory_.c_str(), W_OK | X_OK) != 0) return "'" + directory_.string() + "' is not writable; name another";
+    return "'" + quoteUserText(directory_.string()) + "' is not a directory and cannot be created; name another";
+  if (::access(directory_.c_str(), W_OK | X_OK) != 0)
+    return "'" + quoteUserText(directory_.string()) + "' is not writable; name another";
   return "";
 }
 

@@ -19,6 +19,8 @@ namespace wg {
 
 class CompileCache;  // driver/compile_cache.hpp
 
+// A field that changes what a compile returns joins the compile cache's key too
+// (addOptions in driver/compile_cache.cpp), or the cache would return stale results.
 struct CompileOptions {
   bool emitSpirv = true;
   bool emitDisassembly = false;  // .spvasm text of each SPIR-V module (compile --target spirv)
