@@ -276,21 +276,23 @@ class Builder {
     report(DiagCode::Cycle, graph_.nodes[stack.back().first].pointer, {path});
   }
 
-  // A literal as an operand; reports shape, finiteness and range problems.
-  std::optional<Operand> literalOperand(const InputSource& source, std::string_view what, float min, float max) {
+  // A literal as an operand; reports shape, finiteness and range problems. `what()`
+  // names the input in a report, and is called only for one: most literals are fine.
+  template <typename What>
+  std::optional<Operand> literalOperand(const InputSource& source, const What& what, float min, float max) {
     LiteralResult r = parseLiteral(source.literal);
     if (!r.value) {
-      report(DiagCode::TypeMismatch, source.pointer, {what, "a literal", r.shapeError, "use a number, a bool or an array of 2-4 numbers"});
+      report(DiagCode::TypeMismatch, source.pointer, {what(), "a literal", r.shapeError, "use a number, a bool or an array of 2-4 numbers"});
       return std::nullopt;
     }
     if (r.notFinite) {
-      report(DiagCode::LiteralNotFinite, source.pointer, {what});
+      report(DiagCode::LiteralNotFinite, source.pointer, {what()});
       return std::nullopt;
     }
     for (int i = 0; i < r.value->width() && r.value->type != ValueType::Bool; ++i) {
       float x = r.value->v[i];
       if (x < min || x > max) {
-        report(DiagCode::LiteralOutOfRange, source.pointer, {what, formatFloat(x), formatFloat(min), formatFloat(max)});
+        report(DiagCode::LiteralOutOfRange, source.pointer, {what(), formatFloat(x), formatFloat(min), formatFloat(max)});
         return std::nullopt;
       }
     }
@@ -309,7 +311,6 @@ class Builder {
     for (std::size_t i = 0; i < op.inputs.size(); ++i) {
       const PortSpec& spec = op.inputs[i];
       const PendingInput& in = p.ports[i];
-      std::string what = "input '" + std::string(spec.name) + "' of node '" + quoteUserText(p.decl->id) + "'";
       if (!in.source) {
         if (!spec.defaultValue) {
           report(DiagCode::MissingInput, p.decl->pointer, {op.name, spec.name, describePort(spec.type)});
@@ -328,6 +329,7 @@ class Builder {
         continue;
       }
       if (in.source->kind == InputSource::Kind::Literal) {
+        auto what = [&] { return "input '" + std::string(spec.name) + "' of node '" + quoteUserText(p.decl->id) + "'"; };
         auto operand = literalOperand(*in.source, what, spec.min, spec.max);
         if (!operand) ok = false;
         node.inputs.push_back(operand.value_or(Operand{}));
@@ -426,7 +428,7 @@ class Builder {
       const InputSource& source = it->second;
       std::string what = "output '" + std::string(info.name) + "'";
       if (source.kind == InputSource::Kind::Literal) {
-        if (auto operand = literalOperand(source, what, info.min, info.max)) {
+        if (auto operand = literalOperand(source, [&] { return what; }, info.min, info.max)) {
           if (!isImplicitlyConvertible(operand->type, info.type))
             report(DiagCode::TypeMismatch, source.pointer, {what, std::string(typeName(info.type)),
                                                             std::string(typeName(operand->type)), "give a value of the output's type"});
