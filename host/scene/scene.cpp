@@ -574,7 +574,10 @@ Scene valley() {
 
   // Cameras.
   auto [riverPoint, riverRight] = river.frameNear(10.f);
-  b.camera("overview", {-40.f, 75.f, 115.f}, {-8.f, 3.f, 5.f}, 55.f);
+  // Over the shoulder of a walker on the hillside, not from an aircraft: low enough for
+  // the horizon and the sky, high enough to see the road and the shelter.
+  b.camera("overview", {-35.f, 38.f, 80.f}, {-8.f, 2.f, 5.f}, 55.f);
+  b.camera("aerial", {-40.f, 75.f, 115.f}, {-8.f, 3.f, 5.f}, 55.f);  // the whole valley from above
   glm::vec3 shelterTarget(shelterX, shelterBase.y + 1.5f, kShelterZ);
   b.camera("shelter", shelterTarget + glm::vec3(15.f, roofTop - shelterBase.y + 1.f, -14.f), shelterTarget, 50.f);
   b.camera("river", {riverPoint.x - 45.f, 5.f, riverZ(riverPoint.x - 45.f) + 12.f},

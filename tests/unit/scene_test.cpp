@@ -502,7 +502,7 @@ TEST_P(EachScene, SunBoundsAndCameras) {
         << o.name;
   }
   static const std::map<std::string, std::vector<std::string>> kCameras = {
-      {"valley", {"overview", "shelter", "river", "rocks"}},
+      {"valley", {"overview", "aerial", "shelter", "river", "rocks"}},
       {"rocks", {"front", "sun-side", "shade-side"}},
       {"river", {"overhead", "bank"}},
       {"road", {"overview", "under-shelter"}}};
