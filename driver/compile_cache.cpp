@@ -46,7 +46,7 @@ class ContentDigest {
       addWord(word);
     }
     std::uint64_t tail = 0;
-    std::memcpy(&tail, bytes.data() + i, bytes.size() - i);
+    if (i < bytes.size()) std::memcpy(&tail, bytes.data() + i, bytes.size() - i);  // an empty view's data() may be null
     addWord(tail);
   }
   void addWord(std::uint64_t word) {
@@ -219,7 +219,7 @@ bool readStage(EntryReader& in, CompiledStage& s) {
   s.language = static_cast<ShaderLanguage>(language);
   s.stage = static_cast<ShaderStage>(stage);
   s.spirv.resize(spirv.size() / sizeof(std::uint32_t));
-  std::memcpy(s.spirv.data(), spirv.data(), spirv.size());
+  if (!spirv.empty()) std::memcpy(s.spirv.data(), spirv.data(), spirv.size());  // an empty vector's data() may be null
   return true;
 }
 
