@@ -43,10 +43,15 @@ Image textureImage(const vk::ReflectedTexture& t, const std::string& graphPath) 
                          source.value("options", nlohmann::json::object()));
 }
 
-// The parameter block with every member at its reflected default.
-std::vector<unsigned char> parameterBytes(const vk::ReflectedBlock& block) {
+// The parameter block with every member at its reflected default, or at the value
+// `parameters` gives a float member.
+std::vector<unsigned char> parameterBytes(const vk::ReflectedBlock& block, const std::map<std::string, float>& parameters) {
   std::vector<unsigned char> bytes(block.size, 0);
   for (const auto& m : block.members) {
+    if (auto given = parameters.find(m.name); given != parameters.end() && m.defaultValue.is_number()) {
+      std::memcpy(bytes.data() + m.offset, &given->second, sizeof given->second);
+      continue;
+    }
     const auto& d = m.defaultValue;
     if (d.is_boolean()) {
       std::uint32_t v = d.get<bool>() ? 1u : 0u;
@@ -66,14 +71,15 @@ std::vector<unsigned char> parameterBytes(const vk::ReflectedBlock& block) {
 
 }  // namespace
 
-MaterialResources::MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options)
+MaterialResources::MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options,
+                                     const std::map<std::string, float>& parameters)
     : ctx_(ctx), graphPath_(graphPath) {
   CompileResult result = compileMaterialFile(graphPath, options);
   if (!result.material) throw MaterialCompileError(graphPath, std::move(result.diagnostics.items()));
   compiled_ = std::move(*result.material);
   reflection_ = vk::parseReflection(compiled_.reflectionJson);
   if (!reflection_.material.members.empty()) {
-    auto bytes = parameterBytes(reflection_.material);
+    auto bytes = parameterBytes(reflection_.material, parameters);
     parameters_ = std::make_unique<vk::Buffer>(ctx, bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     parameters_->write(bytes.data(), bytes.size());
   }

@@ -16,7 +16,10 @@ namespace wg {
 class MaterialResources {
  public:
   // Compiles graphPath (throws MaterialCompileError with the diagnostics on failure).
-  MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options);
+  // `parameters` replace the reflected defaults of the members they name; names the
+  // material lacks are skipped.
+  MaterialResources(vk::Context& ctx, const std::string& graphPath, const CompileOptions& options,
+                    const std::map<std::string, float>& parameters = {});
   MaterialResources(const MaterialResources&) = delete;
   MaterialResources& operator=(const MaterialResources&) = delete;
 

@@ -121,13 +121,16 @@ void SceneRenderer::uploadTerrain() {
   terrainHeight_.upload(ctx_, scene_.terrainHeights.data(), scene_.terrainHeights.size() * sizeof(float));
 }
 
-// One compiled material per graph, preset, quality tier and effect overrides; the
-// unweathered variant ignores the tier and the overrides, so every request shares it.
+// One compiled material per graph, preset, quality tier, effect overrides and parameter
+// values; the unweathered variant ignores the tier and the overrides, so every request
+// shares it.
 MaterialResources& SceneRenderer::material(const std::string& graph, const std::optional<std::string>& preset,
                                            const std::optional<std::string>& quality,
-                                           const WeatherEffectOverrides& effects) {
+                                           const WeatherEffectOverrides& effects,
+                                           const std::map<std::string, float>& parameters) {
   const bool unweathered = preset == "none";
   std::string key = graph + "|" + preset.value_or("");
+  for (const auto& [name, value] : parameters) key += "|" + name + "=" + std::to_string(value);
   if (!unweathered) {
     key += "|" + quality.value_or("");
     for (const auto& [name, on] : effects) key += "|" + name + (on ? "=on" : "=off");
@@ -140,7 +143,7 @@ MaterialResources& SceneRenderer::material(const std::string& graph, const std::
       options.weatherEffects = effects;
       options.quality.requested = quality;
     }
-    slot = std::make_unique<MaterialResources>(ctx_, scene::graphFilePath(graph, graphsDirectory_), options);
+    slot = std::make_unique<MaterialResources>(ctx_, scene::graphFilePath(graph, graphsDirectory_), options, parameters);
   }
   return *slot;
 }
@@ -199,7 +202,7 @@ std::vector<MaterialResources*> SceneRenderer::materialsFor(const RenderRequest&
   if (!preset && neutral && request.unweatheredVariantWhenNeutral) preset = "none";
   std::vector<MaterialResources*> mats;
   for (const auto& o : scene_.objects)
-    mats.push_back(&material(o.graph, preset, request.quality, request.weatherEffects));
+    mats.push_back(&material(o.graph, preset, request.quality, request.weatherEffects, o.parameters));
   return mats;
 }
 

@@ -107,7 +107,8 @@ class SceneRenderer {
   struct Pass;
   struct Frame;
   MaterialResources& material(const std::string& graph, const std::optional<std::string>& preset,
-                              const std::optional<std::string>& quality, const WeatherEffectOverrides& effects);
+                              const std::optional<std::string>& quality, const WeatherEffectOverrides& effects,
+                              const std::map<std::string, float>& parameters);
   vk::MaterialPipeline& pipelineOf(MaterialResources& material, const RenderRequest& request);
   void uploadTerrain();
   // The sky-exposure map, built once (sky_exposure_map.cpp).

@@ -2,6 +2,7 @@
 // built to make one or more weather behaviours visible (snow by height and sun side,
 // river ice from the banks, puddles only on flat road, nothing under a shelter).
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,9 @@ struct SceneObject {
   // Ground out to the horizon (horizon_apron.hpp): outside boundsMin/Max, which the
   // shadow and sky-exposure maps cover, so it neither casts shadows nor shelters.
   bool horizon = false;
+  // Material parameters over the graph's defaults, by the reflection's names; a name
+  // the compiled material lacks (an unweathered variant has no weather.*) is skipped.
+  std::map<std::string, float> parameters;
 };
 
 struct CameraPreset {

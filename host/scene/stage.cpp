@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "compiler/weather_config.hpp"
 #include "host/scene/horizon_apron.hpp"
 #include "host/scene/orbit_camera.hpp"
 #include "host/scene/shapes.hpp"
@@ -38,7 +39,9 @@ SceneObject groundUnder(const Bounds& subject, float height, const std::string& 
   float size = kStageGroundScale * std::max({extent.x, extent.z, 1.f});
   glm::vec3 centre(0.5f * (subject.min.x + subject.max.x), height, 0.5f * (subject.min.z + subject.max.z));
   Mesh mesh = heightFieldTerrain(size, kGroundCells, [](float, float) { return 0.f; }, kGroundUvTiling);
-  return {"ground", graph, std::move(mesh), glm::translate(glm::mat4(1.f), centre), false, true};
+  SceneObject ground{"ground", graph, std::move(mesh), glm::translate(glm::mat4(1.f), centre), false, true};
+  ground.parameters["weather.maxSnowHeight"] = stageSnowDepth(extent.y);
+  return ground;
 }
 
 // The flat ground runs on, level, to the horizon: past the far plane of any framed or
@@ -50,6 +53,7 @@ SceneObject horizonAround(const SceneObject& ground) {
   Mesh apron = horizonApron(ground.mesh, kGroundCells + 1, [](float, float) { return 0.f; }, settings);
   SceneObject o{"horizon", ground.graph, std::move(apron), ground.model, false, false};
   o.horizon = true;
+  o.parameters = ground.parameters;
   return o;
 }
 
@@ -74,6 +78,10 @@ std::vector<CameraPreset> stageCameras(const std::vector<glm::vec3>& points, con
           framed("close-up", kCloseUpAzimuth, kCloseUpElevation, kCloseUpDistance)};
 }
 }  // namespace
+
+float stageSnowDepth(float subjectHeight) {
+  return std::min(WeatherConfig{}.maxSnowHeight, kStageSnowDepthShare * std::max(subjectHeight, 0.f));
+}
 
 Scene stageAround(std::string name, std::vector<SceneObject> objects, const StageOptions& options) {
   Bounds subject = objectBounds(objects);

@@ -25,7 +25,8 @@ struct StageOptions {
 //   by their model matrices, flags kept), then "ground": a flat square of
 //   options.groundGraph at the ground height, centred under the objects and wide enough
 //   (kStageGroundScale times the objects' width) for shadows and wide shots; it casts
-//   no shadow and does occlude the sky; then "horizon": its apron out to the horizon
+//   no shadow and does occlude the sky, and its snow is stageSnowDepth(the subject's
+//   height) deep at most; then "horizon": its apron out to the horizon
 //   (horizon_apron.hpp), flat, outside the bounds, with distance haze (hazeDistance).
 // - subject: the objects' world bounds above the ground. Cameras frame it and
 //   `--camera orbit:` turns round its centre.
@@ -41,6 +42,11 @@ struct StageOptions {
 // Object names must be distinct and neither "ground" nor "horizon". Throws std::invalid_argument when
 // `objects` holds no vertex.
 inline constexpr float kStageGroundScale = 4.f;
+// The stand shows the model, so its ground's snow (weather.maxSnowHeight, eq. 3.10) is
+// at most this share of the subject's height: a 10 cm model stands in 2.5 cm of snow,
+// not under the presets' 25 cm. Subjects 1 m and taller get the full 25 cm.
+inline constexpr float kStageSnowDepthShare = 0.25f;
+float stageSnowDepth(float subjectHeight);
 Scene stageAround(std::string name, std::vector<SceneObject> objects, const StageOptions& options = {});
 
 }  // namespace wg::scene

@@ -83,6 +83,20 @@ TEST(Stage, HonoursTheGroundHeightSunAndGraph) {
   EXPECT_LT(glm::distance(s.towardsSun, glm::vec3(0.f, 1.f, 0.f)), 1e-6f);
 }
 
+// The stand shows the model: its ground's snow is at most a quarter of the subject's
+// height deep (weather.maxSnowHeight on the ground and the horizon), the presets' 25 cm
+// from 1 m up.
+TEST(Stage, TheGroundsSnowNeverBuriesASmallModel) {
+  Scene small = stageAround("pebble", {{"pebble", "rock", box({0.f, 0.f, 0.f}, {0.1f, 0.1f, 0.1f})}});
+  EXPECT_FLOAT_EQ(small.find("ground")->parameters.at("weather.maxSnowHeight"), 0.025f);
+  EXPECT_FLOAT_EQ(small.find("horizon")->parameters.at("weather.maxSnowHeight"), 0.025f);
+  EXPECT_TRUE(small.find("pebble")->parameters.empty());  // the model keeps its own
+  Scene tall = stageAround("pair", twoBoxes());
+  EXPECT_FLOAT_EQ(tall.find("ground")->parameters.at("weather.maxSnowHeight"), 0.25f);
+  EXPECT_FLOAT_EQ(stageSnowDepth(1.f), 0.25f);
+  EXPECT_FLOAT_EQ(stageSnowDepth(0.f), 0.f);
+}
+
 TEST(Stage, RejectsNoObjects) {
   EXPECT_THROW(stageAround("empty", {}), std::invalid_argument);
   EXPECT_THROW(stageAround("empty", {{"nothing", "rock", Mesh{}}}), std::invalid_argument);
