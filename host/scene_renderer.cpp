@@ -241,8 +241,8 @@ glm::mat4 SceneRenderer::modelOf(std::size_t object, const RenderRequest& reques
 }
 
 namespace {
-// The background: the sky the surfaces reflect (wg_sky_tint), overcast in snow and rain
-// and darker in a blizzard.
+// The sky's tint (wg_sky_tint), overcast in snow and rain and darker in a blizzard: the
+// clear colour under the sky the haze pass draws, and the precipitation's ambient.
 glm::vec3 weatherSkyColour(const WeatherState& weather) {
   auto tint = skyTint({kSkyColor.r, kSkyColor.g, kSkyColor.b}, weather.conditions.precipitation,
                       weather.conditions.windIntensity);
