@@ -60,16 +60,13 @@ void applyOutputTargets(const OutputTargets& targets, CompileOptions& options) {
   options.emitCppHeader = targets.header;
   // Every target chosen defaults to low (GLSL ES, MSL: mobile GPUs): the tier is low;
   // any other among them makes it high, for one compile serves every target.
-  bool allLow = false;
+  bool anyTarget = false, allLow = true;
   for (const auto& target : kOutputTargets)
     if (targets.*(target.flag)) {
-      if (target.defaultQuality != "low") {
-        allLow = false;
-        break;
-      }
-      allLow = true;
+      anyTarget = true;
+      allLow = allLow && target.defaultQuality == "low";
     }
-  options.quality.fallback = allLow ? "low" : "high";
+  options.quality.fallback = anyTarget && allLow ? "low" : "high";
 }
 
 std::map<std::string, std::string> materialOutputs(const CompiledMaterial& m, const OutputTargets& targets,

@@ -3,6 +3,7 @@
 // them (against the same graph with preset none), texture reads, branches, uniform
 // bytes and interpolants. The budgets in docs/BENCHMARKS.md are read from it.
 #include <cstdio>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -66,11 +67,15 @@ struct StatsRow {
 };
 
 // Uniform bytes and interpolants, from the reflection both stages share.
-void addInterfaceSizes(const CompiledMaterial& m, StatsRow& row) {
+std::pair<std::size_t, std::size_t> interfaceSizes(const CompiledMaterial& m) {
   const auto reflection = nlohmann::json::parse(m.reflectionJson);
-  for (const auto& block : reflection.at("blocks")) row.uniformBytes += block.at("size").get<std::size_t>();
-  row.interpolants = reflection.at("varyings").size();
+  std::size_t uniformBytes = 0;
+  for (const auto& block : reflection.at("blocks")) uniformBytes += block.at("size").get<std::size_t>();
+  return {uniformBytes, reflection.at("varyings").size()};
 }
+
+constexpr ShaderStage kStages[] = {ShaderStage::Vertex, ShaderStage::Fragment};
+constexpr ShaderLanguage kLanguages[] = {ShaderLanguage::Glsl, ShaderLanguage::Hlsl};
 
 std::optional<CompiledMaterial> compileForStats(const std::string& graph, const Options& o,
                                                 const std::optional<std::string>& preset,
@@ -87,19 +92,24 @@ std::optional<CompiledMaterial> compileForStats(const std::string& graph, const 
 bool graphRows(const std::string& graph, const Options& o, std::vector<StatsRow>& rows) {
   const std::optional<CompiledMaterial> none = compileForStats(graph, o, "none", std::nullopt);
   if (!none) return false;
+  std::map<std::pair<ShaderStage, ShaderLanguage>, std::size_t> bare;  // preset none, per stage and language
+  for (ShaderStage stage : kStages)
+    for (ShaderLanguage language : kLanguages)
+      bare[{stage, language}] = countInstructions(optimizeSpirv(none->stage(language, stage).spirv));
   std::vector<std::string> tiers;
   for (const QualityTier& t : qualityTiers())
     if (!o.quality || *o.quality == t.name) tiers.emplace_back(t.name);
   for (const std::string& tier : tiers) {
     const std::optional<CompiledMaterial> m = compileForStats(graph, o, o.weatherPreset, tier);
     if (!m) return false;
-    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
-      for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl}) {
+    const auto [uniformBytes, interpolants] = interfaceSizes(*m);
+    for (ShaderStage stage : kStages)
+      for (ShaderLanguage language : kLanguages) {
         StatsRow row{m->name, tier, stage == ShaderStage::Vertex ? "vert" : "frag", std::string(languageName(language))};
         row.spirv = spirvStatistics(optimizeSpirv(m->stage(language, stage).spirv));
-        const std::size_t bare = countInstructions(optimizeSpirv(none->stage(language, stage).spirv));
-        row.weather = static_cast<long>(row.spirv.instructions) - static_cast<long>(bare);
-        addInterfaceSizes(*m, row);
+        row.weather = static_cast<long>(row.spirv.instructions) - static_cast<long>(bare.at({stage, language}));
+        row.uniformBytes = uniformBytes;
+        row.interpolants = interpolants;
         rows.push_back(std::move(row));
       }
   }

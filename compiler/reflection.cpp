@@ -9,6 +9,18 @@ namespace wg {
 
 namespace {
 
+// An array with one object per item, whose members `writeMembers` writes.
+template <typename Items, typename WriteMembers>
+void writeObjectArray(IndentedJsonWriter& w, const Items& items, WriteMembers writeMembers) {
+  w.beginArray();
+  for (const auto& item : items) {
+    w.beginObject();
+    writeMembers(item);
+    w.endObject();
+  }
+  w.endArray();
+}
+
 void writeValue(IndentedJsonWriter& w, const Value& v) {
   if (v.type == ValueType::Bool) return w.boolean(v.asBool());
   if (v.width() == 1) return w.number(v.v[0]);
@@ -60,16 +72,12 @@ void writeSampler(IndentedJsonWriter& w, const SamplerState& s) {
 }
 
 void writeStageVariables(IndentedJsonWriter& w, const std::vector<StageVariable>& vars) {
-  w.beginArray();
-  for (const auto& v : vars) {
-    w.beginObject();
+  writeObjectArray(w, vars, [&](const StageVariable& v) {
     w.key("name").text(v.name);
     w.key("identifier").text(v.identifier);
     w.key("location").integer(v.location);
     w.key("type").text(interfaceTypeName(v.type));
-    w.endObject();
-  }
-  w.endArray();
+  });
 }
 
 void writeWeather(IndentedJsonWriter& w, const IrGraph& graph) {
@@ -109,37 +117,23 @@ void writeBinding(IndentedJsonWriter& w, const TextureBinding& b) {
 }
 
 void writeTextures(IndentedJsonWriter& w, const IrGraph& graph, const MaterialInterface& mi) {
-  w.beginArray();
-  for (const auto& b : mi.textures) {
+  writeObjectArray(w, mi.textures, [&](const auto& b) {
     const TextureDecl& t = graph.textures[static_cast<std::size_t>(b.texture)];
-    w.beginObject();
     writeBinding(w, b);
     writeSampler(w, t.sampler);
     writeTextureSource(w.key("source"), t);
-    w.endObject();
-  }
-  w.endArray();
+  });
 }
 
 void writeWeatherMaps(IndentedJsonWriter& w, const MaterialInterface& mi) {
-  w.beginArray();
-  for (const auto& m : mi.weatherMaps) {
-    w.beginObject();
-    writeBinding(w, m);
-    w.endObject();
-  }
-  w.endArray();
+  writeObjectArray(w, mi.weatherMaps, [&](const auto& m) { writeBinding(w, m); });
 }
 
 void writeDebugViews(IndentedJsonWriter& w) {
-  w.beginArray();
-  for (const auto& view : kDebugViews) {
-    w.beginObject();
+  writeObjectArray(w, kDebugViews, [&](const auto& view) {
     w.key("id").integer(view.id);
     w.key("name").text(view.name);
-    w.endObject();
-  }
-  w.endArray();
+  });
 }
 
 void writeFiles(IndentedJsonWriter& w, const std::string& fileStem) {
@@ -157,14 +151,10 @@ void writeFiles(IndentedJsonWriter& w, const std::string& fileStem) {
 }
 
 void writeSurfaceStruct(IndentedJsonWriter& w, const SurfaceStruct& st) {
-  w.beginArray();
-  for (const auto& f : st.fields) {
-    w.beginObject();
+  writeObjectArray(w, st.fields, [&](const auto& f) {
     w.key("name").text(f.name);
     w.key("type").text(f.type);
-    w.endObject();
-  }
-  w.endArray();
+  });
 }
 
 void writeSurfaceResource(IndentedJsonWriter& w, const SurfaceInterface& s, const SurfaceResource& r) {

@@ -110,7 +110,7 @@ DistanceHazePass::DistanceHazePass(vk::Context& ctx, const glm::vec3& sunColor) 
 
 DistanceHazePass::~DistanceHazePass() { vkDeviceWaitIdle(ctx_.device()); }
 
-void DistanceHazePass::record(const ColourPassTargets& t, const HazeSettings& settings) {
+void DistanceHazePass::record(const ColourPassTargets& t, const FrameState& frame, const HazeSettings& settings) {
   const vk::Image2D& colour = *t.colour;
   std::uint32_t w = colour.width(), h = colour.height();
   set_->bindImage("Colour", colour.view(), VK_IMAGE_LAYOUT_GENERAL);
@@ -120,9 +120,9 @@ void DistanceHazePass::record(const ColourPassTargets& t, const HazeSettings& se
   vk::Image2D::transition(t.cmd, t.depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   const HazeConstants c{glm::inverse(t.viewProjection),
-                        glm::vec4(settings.towardsSun, settings.sunIntensity),
-                        glm::vec4(settings.skyColour, settings.ambientIntensity),
-                        {settings.precipitation, settings.windIntensity, settings.exposure, 0.f},
+                        {frame.sunDirection[0], frame.sunDirection[1], frame.sunDirection[2], frame.sunIntensity},
+                        {frame.skyColor[0], frame.skyColor[1], frame.skyColor[2], frame.ambientIntensity},
+                        {frame.precipitation, frame.windIntensity, frame.exposure, 0.f},
                         {t.nearPlane, t.farPlane, settings.distance, settings.horizonFrom * t.farPlane}};
   VkDescriptorSet set = set_->set();
   vkCmdBindPipeline(t.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());

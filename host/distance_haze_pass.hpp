@@ -10,18 +10,12 @@
 #include <memory>
 
 #include "host/scene_renderer.hpp"
+#include "nodes/frame_state.hpp"
 #include "vulkan/reflected_descriptor_set.hpp"
 
 namespace wg {
 
 struct HazeSettings {
-  // The sky: what the frame block gives the surfaces' wg_sky (frame_skyColor and so on).
-  glm::vec3 skyColour{0.45f, 0.55f, 0.72f};
-  float ambientIntensity = 1.f;
-  float precipitation = 0.f, windIntensity = 0.f;
-  glm::vec3 towardsSun{0.f, 1.f, 0.f};
-  float sunIntensity = 1.f;
-  float exposure = 1.f;
   // Metres over which the haze reaches 1 - 1/e (Beer-Lambert extinction): about 3 km
   // visibility (Koschmieder: 3.9 x this), a hazy winter day.
   float distance = 800.f;
@@ -41,7 +35,9 @@ class DistanceHazePass {
   // The colour target must be in COLOR_ATTACHMENT_OPTIMAL and the depth in
   // DEPTH_STENCIL_ATTACHMENT_OPTIMAL, as RenderRequest::afterColourPass hands them
   // over; both are left there.
-  void record(const ColourPassTargets& targets, const HazeSettings& settings = {});
+  // The sky comes from `frame`, the block the surfaces read: their wg_sky and this one
+  // see the same sky colour, weather, sun and exposure.
+  void record(const ColourPassTargets& targets, const FrameState& frame, const HazeSettings& settings = {});
 
  private:
   vk::Context& ctx_;

@@ -399,26 +399,19 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   const ColourPassTargets targets{cmd, &frame.colour, &frame.depth, pass.viewProjection, pass.eye, frame.clip.nearPlane,
                                   frame.clip.farPlane};
   // Haze first: falling flakes near the viewer are not as far away as the ground behind them.
-  if (drawsHaze(scene_, r)) recordHaze(targets, frame.towardsSun, r.weather);
+  if (drawsHaze(scene_, r)) recordHaze(targets, sharedFrameState(frame), r.weather);
   if (drawsPrecipitation(r)) recordPrecipitation(targets, r.weather);
   if (r.afterColourPass) r.afterColourPass(targets);
 }
 
 // The sky the surfaces reflect, and haze towards it, so the ground meets the sky without a seam.
-void SceneRenderer::recordHaze(const ColourPassTargets& targets, const glm::vec3& towardsSun, const WeatherState& weather) {
+void SceneRenderer::recordHaze(const ColourPassTargets& targets, const FrameState& frame, const WeatherState& weather) {
   if (!haze_) haze_ = std::make_unique<DistanceHazePass>(ctx_, kSunColor);
   HazeSettings settings;
-  settings.skyColour = kSkyColor;
-  settings.ambientIntensity = kAmbientIntensity;
-  settings.precipitation = weather.conditions.precipitation;
-  settings.windIntensity = weather.conditions.windIntensity;
-  settings.towardsSun = towardsSun;
-  settings.sunIntensity = weather.conditions.sunIntensity;
-  settings.exposure = kToneExposure;
   // The scene's own haze and the falling snow or rain dim the view together.
   settings.distance = 1.f / (1.f / scene_.hazeDistance + precipitationExtinction(weather.conditions));
   settings.horizonFrom = kHazeHorizonFrom;
-  haze_->record(targets, settings);
+  haze_->record(targets, frame, settings);
 }
 
 // Falling snow and rain over the lit colour, lit by the frame's sun and sky.

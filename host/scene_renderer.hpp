@@ -129,7 +129,7 @@ class SceneRenderer {
   std::vector<std::size_t> drawOrder(const Frame& frame) const;
   std::vector<ObjectDraw> drawsOf(Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
   void recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
-  void recordHaze(const ColourPassTargets& targets, const glm::vec3& towardsSun, const WeatherState& weather);
+  void recordHaze(const ColourPassTargets& targets, const FrameState& frame, const WeatherState& weather);
   void recordPrecipitation(const ColourPassTargets& targets, const WeatherState& weather);
   RenderedFrame readBack(Frame& frame);
 

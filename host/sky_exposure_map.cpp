@@ -14,18 +14,18 @@ constexpr float kExposureMargin = 1.f;
 }  // namespace
 
 void SceneRenderer::buildExposureMap() {
-  // World-space copies: the builder takes triangles as engines hand them over.
+  // World-space copies: the builder takes triangles as engines hand them over. Reserved
+  // up front, so the spans into them stay valid.
   std::vector<std::vector<glm::vec3>> worldPositions;
+  worldPositions.reserve(scene_.objects.size());
+  std::vector<OccluderTriangles> occluders;
   for (const scene::SceneObject& object : scene_.objects) {
     if (!object.occludesSky) continue;
     std::vector<glm::vec3>& world = worldPositions.emplace_back();
     world.reserve(object.mesh.positions.size());
     for (const glm::vec3& p : object.mesh.positions) world.push_back(glm::vec3(object.model * glm::vec4(p, 1.f)));
+    occluders.push_back({world, object.mesh.indices});
   }
-  std::vector<OccluderTriangles> occluders;
-  std::size_t next = 0;
-  for (const scene::SceneObject& object : scene_.objects)
-    if (object.occludesSky) occluders.push_back({worldPositions[next++], object.mesh.indices});
   const glm::vec3 margin(kExposureMargin);
   SkyExposureHeights map = buildSkyExposure(occluders, scene_.boundsMin - margin, scene_.boundsMax + margin,
                                             kExposureResolution);

@@ -23,8 +23,8 @@ wg::WeatherState internalState(const State& state) {
   wg::WeatherState s;
   const Conditions& c = state.conditions;
   s.conditions = {c.temperature, c.precipitation, c.windDirection, c.windIntensity, c.sunDirection, c.sunIntensity,
-                  c.sunMelt < 0.f ? 0.f : c.sunMelt};
-  if (c.sunMelt < 0.f) s.conditions.sunMelt = wg::sunMeltStrength(s.conditions);
+                  c.sunMelt};
+  if (c.sunMelt < 0.f) s.conditions.sunMelt = wg::sunMeltStrength(s.conditions);  // derived, as timelines do
   s.time = state.time;
   const Levels& l = state.levels;
   s.levels = {l.snow, l.wetness, l.moss, l.frost, l.puddles, l.rainMemory};
