@@ -2,22 +2,15 @@
 // HLSL cbuffers), explicit offsets, separate texture2D and sampler objects.
 #include <array>
 
-#include "backends/library_functions.hpp"
 #include "backends/shader_syntax.hpp"
 #include "backends/source_text.hpp"
-#include "backends/stage_frame.hpp"
 
 namespace wg {
 
 namespace {
 
-// Bytes of declarations and stage frame around the body and libraries (sizes the output once).
+// Bytes of declarations around the surface and the entry point (sizes the output once).
 constexpr std::size_t kFrameSizeHint = 6144;
-std::size_t librarySize(const StageSource& s) {
-  std::size_t n = 0;
-  for (const ShaderLibrary* lib : s.libraries) n += lib->glsl.size() + 1;
-  return n;
-}
 
 std::string_view glslInterfaceType(InterfaceType type) { return interfaceTypeName(type); }
 
@@ -52,10 +45,10 @@ class GlslSyntax final : public ShaderSyntax {
   std::string_view opCode(const OpDef& op) const override { return op.glsl; }
   std::string frameCode(std::string_view glsl, ShaderStage) const override { return std::string(glsl); }
 
-  std::string assemble(const StageSource& s) const override {
+  std::string assemble(const HostedStage& s) const override {
     const MaterialInterface& mi = *s.interface;
     std::string out;
-    out.reserve(kFrameSizeHint + s.body.size() + librarySize(s));
+    out.reserve(kFrameSizeHint + s.surface.size() + s.main.size());
     out += "#version 450\n";
     out += s.banner;
     // The frame block is the same for every material: format it once.
@@ -82,14 +75,10 @@ class GlslSyntax final : public ShaderSyntax {
       appendText(out, "layout(location = ", Decimal{v.location}, ") ", vertex ? "out " : "in ", glslInterfaceType(v.type),
                  ' ', v.identifier, ";\n");
     if (!vertex) out += "layout(location = 0) out vec4 out_color;\n";
-    appendReachedLibraries(out, *this, s);
+    out += s.surface;
     out += "\nvoid main() {\n";
-    if (vertex) {
-      appendVertexMain(out, s, *this);
-    } else {
-      appendFragmentMain(out, s, *this);
-      out += "  out_color = vec4(wg_color, wg_alpha);\n";
-    }
+    out += s.main;
+    if (!vertex) out += "  out_color = vec4(wg_color, wg_alpha);\n";
     out += "}\n";
     return out;
   }

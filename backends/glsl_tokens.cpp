@@ -53,31 +53,33 @@ std::size_t commentLength(std::string_view s, std::size_t at) {
 
 }  // namespace
 
+GlslToken nextGlslToken(std::string_view source, std::size_t at) {
+  char c = source[at];
+  GlslTokenKind kind = GlslTokenKind::Punctuation;
+  std::size_t length = 1;
+  if (isIdentifierStart(c)) {
+    kind = GlslTokenKind::Identifier;
+    length = runLength(source, at, isIdentifierChar);
+  } else if (isDigit(c) || (c == '.' && at + 1 < source.size() && isDigit(source[at + 1]))) {
+    kind = GlslTokenKind::Number;
+    length = numberLength(source, at);
+  } else if (isSpace(c)) {
+    kind = GlslTokenKind::Space;
+    length = runLength(source, at, isSpace);
+  } else if (std::size_t comment = commentLength(source, at)) {
+    kind = GlslTokenKind::Comment;
+    length = comment;
+  } else if (std::size_t placeholder = c == '{' ? placeholderLength(source, at) : 0) {
+    kind = GlslTokenKind::Placeholder;
+    length = placeholder;
+  }
+  return {kind, source.substr(at, length)};
+}
+
 std::vector<GlslToken> tokenizeGlsl(std::string_view source) {
   std::vector<GlslToken> tokens;
-  for (std::size_t at = 0; at < source.size();) {
-    char c = source[at];
-    GlslTokenKind kind = GlslTokenKind::Punctuation;
-    std::size_t length = 1;
-    if (isIdentifierStart(c)) {
-      kind = GlslTokenKind::Identifier;
-      length = runLength(source, at, isIdentifierChar);
-    } else if (isDigit(c) || (c == '.' && at + 1 < source.size() && isDigit(source[at + 1]))) {
-      kind = GlslTokenKind::Number;
-      length = numberLength(source, at);
-    } else if (isSpace(c)) {
-      kind = GlslTokenKind::Space;
-      length = runLength(source, at, isSpace);
-    } else if (std::size_t comment = commentLength(source, at)) {
-      kind = GlslTokenKind::Comment;
-      length = comment;
-    } else if (std::size_t placeholder = c == '{' ? placeholderLength(source, at) : 0) {
-      kind = GlslTokenKind::Placeholder;
-      length = placeholder;
-    }
-    tokens.push_back({kind, source.substr(at, length)});
-    at += length;
-  }
+  for (std::size_t at = 0; at < source.size(); at += tokens.back().text.size())
+    tokens.push_back(nextGlslToken(source, at));
   return tokens;
 }
 

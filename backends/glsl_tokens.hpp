@@ -22,5 +22,7 @@ struct GlslToken {
 };
 
 std::vector<GlslToken> tokenizeGlsl(std::string_view source);
+// The token that starts at `at` (< source.size()), for a caller that walks the text.
+GlslToken nextGlslToken(std::string_view source, std::size_t at);
 
 }  // namespace wg

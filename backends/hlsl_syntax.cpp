@@ -6,22 +6,15 @@
 #include <mutex>
 
 #include "backends/derived_hlsl.hpp"
-#include "backends/library_functions.hpp"
 #include "backends/shader_syntax.hpp"
 #include "backends/source_text.hpp"
-#include "backends/stage_frame.hpp"
 
 namespace wg {
 
 namespace {
 
-// Bytes of declarations and stage frame around the body and libraries (sizes the output once).
+// Bytes of declarations around the surface and the entry point (sizes the output once).
 constexpr std::size_t kFrameSizeHint = 6144;
-std::size_t librarySize(const StageSource& s) {
-  std::size_t n = 0;
-  for (const ShaderLibrary* lib : s.libraries) n += lib->glsl.size() + 1;  // HLSL is about as long
-  return n;
-}
 
 std::string_view hlslInterfaceType(InterfaceType type) {
   constexpr std::array<std::string_view, 6> kNames = {"float", "float2", "float3", "float4", "uint", "float4x4"};
@@ -107,19 +100,19 @@ class HlslSyntax final : public ShaderSyntax {
     static const HlslTranslation kVertex = stageIoTranslation(ShaderStage::Vertex);
     static const HlslTranslation kFragment = stageIoTranslation(ShaderStage::Fragment);
     static std::mutex mutex;
-    static std::map<std::pair<ShaderStage, std::string>, std::string, std::less<>> translated;
+    static std::array<std::map<std::string, std::string, std::less<>>, 2> translated;  // by stage
+    bool vertex = stage == ShaderStage::Vertex;
+    auto& byText = translated[vertex ? 0 : 1];
     std::lock_guard lock(mutex);
-    auto key = std::make_pair(stage, std::string(glsl));
-    auto it = translated.find(key);
-    if (it == translated.end())
-      it = translated.emplace(std::move(key), glslToHlsl(glsl, stage == ShaderStage::Vertex ? kVertex : kFragment)).first;
+    auto it = byText.find(glsl);
+    if (it == byText.end()) it = byText.emplace(std::string(glsl), glslToHlsl(glsl, vertex ? kVertex : kFragment)).first;
     return it->second;
   }
 
-  std::string assemble(const StageSource& s) const override {
+  std::string assemble(const HostedStage& s) const override {
     const MaterialInterface& mi = *s.interface;
     std::string out;
-    out.reserve(kFrameSizeHint + s.body.size() + librarySize(s));
+    out.reserve(kFrameSizeHint + s.surface.size() + s.main.size());
     out += s.banner;
     // The frame block is the same for every material: format it once.
     static const std::string kFrameBlockText = [&] {
@@ -145,20 +138,17 @@ class HlslSyntax final : public ShaderSyntax {
     out += vertex ? "struct VSOutput {\n  float4 wg_clipPosition : SV_Position;\n" : "struct PSInput {\n";
     for (const auto& v : mi.varyings) appendStageVariable(out, v);
     out += "};\n";
-    bool prelude = callsHlslPrelude(s.body);
-    for (const ShaderLibrary* lib : s.libraries) prelude = prelude || derivedHlslCallsPrelude(*lib);
-    if (prelude) out += hlslPrelude();
-    appendReachedLibraries(out, *this, s);
+    out += s.surface;
     if (vertex) {
       out += "\nVSOutput main(VSInput wg_in) {\n";
       for (const auto& a : mi.vertexInputs)
         appendText(out, "  ", hlslInterfaceType(a.type), ' ', a.identifier, " = wg_in.", a.identifier, ";\n");
       out += "  VSOutput wg_out;\n";
-      appendVertexMain(out, s, *this);
+      out += s.main;
       out += "  return wg_out;\n";
     } else {
       out += "\nfloat4 main(PSInput wg_in, bool wg_frontFacing : SV_IsFrontFace) : SV_Target0 {\n";
-      appendFragmentMain(out, s, *this);
+      out += s.main;
       out += "  return float4(wg_color, wg_alpha);\n";
     }
     out += "}\n";

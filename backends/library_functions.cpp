@@ -4,7 +4,6 @@
 #include <unordered_map>
 
 #include "backends/derived_hlsl.hpp"
-#include "backends/stage_frame.hpp"
 #include "nodes/op_registry.hpp"
 
 namespace wg {
@@ -135,7 +134,7 @@ std::vector<ReachedPiece> reachedLibraryPieces(const ShaderSyntax& syntax,
     std::string_view text = syntax.libraryCode(*library);
     auto pieces = index.emittedByText.find(text.data());
     if (pieces == index.emittedByText.end()) {
-      out.push_back({text, {}, library, 0, true});
+      out.push_back({text, {}, library, 0, true, false});
       continue;
     }
     bool libraryReached = false;
@@ -148,18 +147,6 @@ std::vector<ReachedPiece> reachedLibraryPieces(const ShaderSyntax& syntax,
     }
   }
   return out;
-}
-
-void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax, const StageSource& stage) {
-  std::vector<std::string_view> roots = stage.bodyCalls;
-  const auto& frameCalls = frameLibraryCalls(stage.stage);
-  roots.insert(roots.end(), frameCalls.begin(), frameCalls.end());
-  const std::vector<ReachedPiece> pieces = reachedLibraryPieces(syntax, stage.libraries, roots);
-  auto piece = pieces.begin();
-  for (const ShaderLibrary* library : stage.libraries) {
-    out += '\n';
-    for (; piece != pieces.end() && piece->library == library; ++piece) out += piece->text;
-  }
 }
 
 }  // namespace wg

@@ -31,19 +31,17 @@ void forEachLibraryCall(std::string_view text, OnCall&& onCall) {
   }
 }
 
-// Appends each of the stage's libraries' functions that its body (through its ops'
-// templates) or its frame calls, directly or through others. A library outside the op
-// registry (tests make some) is appended whole.
-void appendReachedLibraries(std::string& out, const ShaderSyntax& syntax, const StageSource& stage);
-
-// The same pieces, in order, for callers that print each one their own way (a
-// surface guards each, so that several surfaces can share one shader).
+// The library pieces a stage's roots reach, directly or through others, in library
+// order, for callers to print each their own way (a surface guards each, so that
+// several surfaces can share one shader). A library outside the op registry (tests
+// make some) is one piece, whole.
 struct ReachedPiece {
   std::string_view text;      // in the syntax's language
   std::string_view function;  // empty: loose text of its library (comments, globals)
   const ShaderLibrary* library;
   std::size_t index;          // the piece's place in its library
   bool libraryReached;        // some function of its library is reached
+  bool registered = true;     // of a library in the op registry: its text lives as long as the program
 };
 std::vector<ReachedPiece> reachedLibraryPieces(const ShaderSyntax& syntax,
                                                const std::vector<const ShaderLibrary*>& libraries,

@@ -26,10 +26,6 @@ void ShaderSyntax::appendConstant(std::string& out, const Value& value) const {
   out += ')';
 }
 
-std::string_view ShaderSyntax::alphaStatement(const StageSource& source) {
-  return source.alphaBlended ? "  float wg_alpha = frame_debugView == 0u ? wg_opacity : 1.0;\n" : "  float wg_alpha = 1.0;\n";
-}
-
 void ShaderSyntax::appendParameterRead(std::string& out, const BlockMember& member, ValueType type) const {
   if (type != ValueType::Bool) {
     out += member.identifier;

@@ -1,5 +1,5 @@
 // What a target language looks like: type names, literals, splats, sampling calls and
-// the fixed frame of each stage. Backends know syntax, not materials or weather.
+// the declarations and entry point around a stage. Backends know syntax, not materials or weather.
 #pragma once
 #include <string>
 #include <string_view>
@@ -12,19 +12,11 @@
 
 namespace wg {
 
-// A colour the fragment stage can show instead of the lit result (frame_debugView).
-struct DebugView {
-  std::uint32_t id;
-  std::string_view name;
-  std::string expression;  // vec3, in the target language
-  std::string alpha;       // float; empty: 1
-};
-
-// Everything a stage needs besides its language-specific frame.
+// One stage's code before a language's frame wraps it: the material's node statements
+// and the libraries they call.
 struct StageSource {
   ShaderStage stage = ShaderStage::Fragment;
   const MaterialInterface* interface = nullptr;
-  std::string banner;  // first comment line: generator and content hash
   std::vector<const ShaderLibrary*> libraries;  // dependency order
   // Node statements, then the locals the frame reads: wg_baseColor, wg_metallic,
   // wg_roughness, wg_specular, wg_normal, wg_occlusion, wg_emissive, wg_opacity and the
@@ -32,10 +24,18 @@ struct StageSource {
   // wg_texcoord1 when the interface has the "texcoord1" input.
   std::string body;
   std::vector<std::string_view> bodyCalls;  // the library functions the body calls
-  bool alphaTested = false;
-  float alphaCutoff = 0.5f;
-  bool alphaBlended = false;  // the lit colour's alpha is the opacity (AOVs keep 1)
-  std::vector<DebugView> debugViews;
+};
+
+// A full stage as the reference host (backends/reference_host.hpp) hands it to a
+// language: the language declares the resources and stage IO and wraps the entry point.
+struct HostedStage {
+  ShaderStage stage = ShaderStage::Fragment;
+  const MaterialInterface* interface = nullptr;
+  std::string banner;   // first comment line: generator and content hash
+  std::string surface;  // the embedded surface: library code, structs, function
+  // The entry point's statements in this language; the fragment's leave wg_color and
+  // wg_alpha for the language to write out.
+  std::string main;
 };
 
 class ShaderSyntax {
@@ -46,7 +46,7 @@ class ShaderSyntax {
   virtual std::string splat(ValueType to, std::string_view scalar) const = 0;
   virtual std::string_view sampleFunction(ShaderStage stage) const = 0;
   virtual std::string_view lodArgument(ShaderStage stage) const = 0;
-  virtual std::string assemble(const StageSource& source) const = 0;
+  virtual std::string assemble(const HostedStage& stage) const = 0;
   // Shader code is written once, in GLSL: a library, an op's template (its "{...}"
   // placeholders untouched) and the stage frame's statements, in this language.
   virtual std::string_view libraryCode(const ShaderLibrary& library) const = 0;
@@ -57,9 +57,6 @@ class ShaderSyntax {
   virtual std::string stageVariable(std::string_view identifier, ShaderStage stage) const = 0;
 
   void appendConstant(std::string& out, const Value& value) const;
-  // The fragment stage's output alpha: 1, or the opacity in the lit view of a blended
-  // material (AOVs keep 1, so read-backs still tell surface from background).
-  static std::string_view alphaStatement(const StageSource& source);
   // A parameter's value from its block member (bools are stored as uint).
   void appendParameterRead(std::string& out, const BlockMember& member, ValueType type) const;
 };

@@ -6,12 +6,6 @@
 namespace wg {
 
 namespace {
-constexpr std::string_view kVertexPrologue =
-    "  vec3 wg_worldPosition = (frame_model * vec4(in_position, 1.0)).xyz;\n"
-    "  vec3 wg_worldNormal = wg_safe_normalize((frame_normalMatrix * vec4(in_normal, 0.0)).xyz);\n"
-    "  vec4 wg_worldTangent = vec4(wg_safe_normalize((frame_model * vec4(in_tangent.xyz, 0.0)).xyz), in_tangent.w);\n"
-    "  vec2 wg_texcoord = in_texcoord;\n"
-    "  vec4 wg_vertexColor = in_color;\n";
 constexpr std::string_view kVertexEpilogue =
     "  wg_worldPosition += wg_offset;\n"
     "  v_worldPosition = wg_worldPosition;\n"
@@ -19,7 +13,6 @@ constexpr std::string_view kVertexEpilogue =
     "  v_worldTangent = wg_worldTangent;\n"
     "  v_texcoord = wg_texcoord;\n"
     "  v_color = wg_vertexColor;\n";
-constexpr std::string_view kVertexPosition = "  gl_Position = frame_viewProjection * vec4(wg_worldPosition, 1.0);\n";
 constexpr std::string_view kFragmentPrologue =
     "  vec3 wg_worldPosition = v_worldPosition;\n"
     "  vec3 wg_worldNormal = wg_safe_normalize(v_worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);\n"
@@ -32,14 +25,6 @@ constexpr std::string_view kFragmentPrologue =
 // The shading normal: the material's tangent-space normal in world space.
 constexpr std::string_view kShadingNormal =
     "  vec3 wg_N = wg_safe_normalize(wg_tangentAxis * wg_normal.x + wg_bitangent * wg_normal.y + wg_worldNormal * wg_normal.z);\n";
-constexpr std::string_view kFragmentLighting =
-    "  vec3 wg_V = wg_safe_normalize(frame_cameraPosition - wg_worldPosition);\n"
-    "  vec3 wg_color = wg_tonemap(wg_shade(wg_baseColor, wg_metallic, wg_roughness, wg_specular, wg_occlusion, wg_emissive, wg_N, wg_V, wg_sun_shadow(wg_worldPosition, wg_worldNormal)));\n";
-const std::string& fragmentShading() {
-  static const std::string kText = std::string(kShadingNormal) + std::string(kFragmentLighting);
-  return kText;
-}
-
 // A surface's vertex function takes world-space geometry from the host (which owns the
 // object transform, skinning and instancing) in its input struct, wg_in.
 constexpr std::string_view kSurfaceVertexPrologue =
@@ -57,12 +42,6 @@ std::vector<std::string_view> callsIn(std::initializer_list<std::string_view> te
   return calls;
 }
 }  // namespace
-
-const std::vector<std::string_view>& frameLibraryCalls(ShaderStage stage) {
-  static const std::vector<std::string_view> kVertex = callsIn({kVertexPrologue, kVertexEpilogue, kVertexPosition});
-  static const std::vector<std::string_view> kFragment = callsIn({kFragmentPrologue, fragmentShading()});
-  return stage == ShaderStage::Vertex ? kVertex : kFragment;
-}
 
 const std::vector<std::string_view>& surfaceFrameLibraryCalls(ShaderStage stage) {
   static const std::vector<std::string_view> kVertex = callsIn({kSurfaceVertexPrologue, kVertexEpilogue});
@@ -89,47 +68,6 @@ void appendSurfaceFragmentBody(std::string& out, const StageSource& s, const Sha
   out += syntax.frameCode(prologue, ShaderStage::Fragment);
   out += s.body;
   out += syntax.frameCode(kShadingNormal, ShaderStage::Fragment);
-}
-
-void appendVertexMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
-  bool texcoord1 = s.interface->hasTexcoord1();
-  std::string prologue(kVertexPrologue);
-  if (texcoord1) prologue += "  vec2 wg_texcoord1 = in_texcoord1;\n";
-  out += syntax.frameCode(prologue, ShaderStage::Vertex);
-  out += s.body;
-  std::string epilogue(kVertexEpilogue);
-  if (texcoord1) epilogue += "  v_texcoord1 = wg_texcoord1;\n";
-  epilogue += kVertexPosition;
-  out += syntax.frameCode(epilogue, ShaderStage::Vertex);
-}
-
-namespace {
-
-// One switch, not a compare and branch per view: about 90 fewer instructions in a
-// fragment module for glslang and the validator, and about 50 fewer after spirv-opt.
-// The views' expressions are already in the target language; view 0 ("lit") has no case.
-void appendDebugViews(std::string& out, const std::vector<DebugView>& views) {
-  if (views.empty()) return;
-  out += "  switch (frame_debugView) {\n";
-  for (const auto& view : views) {
-    appendText(out, "    case ", Decimal{view.id}, "u: wg_color = ", view.expression, "; ");
-    if (!view.alpha.empty()) appendText(out, "wg_alpha = ", view.alpha, "; ");
-    out += "break;\n";
-  }
-  out += "  }\n";
-}
-
-}  // namespace
-
-void appendFragmentMain(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
-  std::string prologue(kFragmentPrologue);
-  if (s.interface->hasTexcoord1()) prologue += "  vec2 wg_texcoord1 = v_texcoord1;\n";
-  out += syntax.frameCode(prologue, ShaderStage::Fragment);
-  out += s.body;
-  if (s.alphaTested) appendText(out, "  if (wg_opacity < ", formatFloat(s.alphaCutoff), ") discard;\n");
-  out += syntax.frameCode(fragmentShading(), ShaderStage::Fragment);
-  out += ShaderSyntax::alphaStatement(s);
-  appendDebugViews(out, s.debugViews);
 }
 
 }  // namespace wg

@@ -24,12 +24,10 @@ class StageWriter {
               const std::vector<std::string>& names)
       : graph_(g), mi_(mi), syntax_(syntax), stage_(stage), names_(names) {}
 
-  StageSource run(std::string_view contentHash) {
+  StageSource run() {
     StageSource source;
     source.stage = stage_;
     source.interface = &mi_;
-    source.banner = std::string(kStageBannerPrefix) + WEATHERGEN_VERSION " from material " + std::string(contentHash) +
-                    ". Do not edit.\n";
     markNeeded();
     collectLibraries(source.libraries);
     source.body.reserve(graph_.nodes.size() * kBytesPerStatement);
@@ -37,31 +35,10 @@ class StageWriter {
     std::sort(calls_.begin(), calls_.end(), [](auto a, auto b) { return a.data() < b.data(); });
     calls_.erase(std::unique(calls_.begin(), calls_.end(), [](auto a, auto b) { return a.data() == b.data(); }), calls_.end());
     source.bodyCalls = std::move(calls_);
-    source.alphaTested = graph_.alphaTested();
-    source.alphaCutoff = graph_.alphaCutoff;
-    source.alphaBlended = graph_.alphaMode == AlphaMode::Blend;
-    if (stage_ == ShaderStage::Fragment)
-      for (const auto& view : graph_.debugViews) source.debugViews.push_back(debugView(view));
     return source;
   }
 
  private:
-  // A view's colour and, for the tangent, its alpha, in the target language.
-  DebugView debugView(const IrDebugView& view) const {
-    switch (view.source) {
-      case DebugSource::Slot:
-        if (slotType(view.slot) == ValueType::Vec3) return {view.id, view.name, std::string(slotLocal(view.slot)), ""};
-        return {view.id, view.name, syntax_.splat(ValueType::Vec3, slotLocal(view.slot)), ""};
-      case DebugSource::ShadingNormal: return {view.id, view.name, "(wg_N * 0.5 + 0.5)", ""};
-      case DebugSource::WorldPosition: return {view.id, view.name, "wg_worldPosition", ""};
-      case DebugSource::GeometricNormal: return {view.id, view.name, "wg_worldNormal", ""};
-      case DebugSource::Texcoord:
-        return {view.id, view.name, std::string(syntax_.typeName(ValueType::Vec3)) + "(wg_texcoord, 0.0)", ""};
-      case DebugSource::Tangent: return {view.id, view.name, "wg_worldTangent.xyz", "wg_worldTangent.w"};
-    }
-    throw std::logic_error("unhandled debug source");
-  }
-
   // The local each output slot lands in; the stage frames read these names.
   static std::string_view slotLocal(std::size_t slot) {
     static const std::vector<std::string> kSlotLocals = [] {
@@ -275,13 +252,8 @@ std::vector<std::string> nameNodes(const IrGraph& graph) {
 }
 
 StageSource writeStageSource(const IrGraph& graph, const MaterialInterface& interface, const ShaderSyntax& syntax,
-                             ShaderStage stage, std::string_view contentHash, const std::vector<std::string>& nodeNames) {
-  return StageWriter(graph, interface, syntax, stage, nodeNames).run(contentHash);
-}
-
-std::string writeStage(const IrGraph& graph, const MaterialInterface& interface, const ShaderSyntax& syntax,
-                       ShaderStage stage, std::string_view contentHash, const std::vector<std::string>& nodeNames) {
-  return syntax.assemble(writeStageSource(graph, interface, syntax, stage, contentHash, nodeNames));
+                             ShaderStage stage, const std::vector<std::string>& nodeNames) {
+  return StageWriter(graph, interface, syntax, stage, nodeNames).run();
 }
 
 }  // namespace wg

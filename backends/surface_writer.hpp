@@ -10,10 +10,19 @@
 
 #include "compiler/ir.hpp"
 #include "compiler/surface_interface.hpp"
+#include "nodes/shader_stage.hpp"
 
 namespace wg {
 
 std::string writeSurface(const IrGraph& graph, const SurfaceInterface& surface, SurfaceLanguage language,
                          std::string_view contentHash, const std::vector<std::string>& nodeNames);
+
+// One stage of the surface as a host embeds it in a shader of its own, after declaring
+// every resource itself (what WG_HOST_DECLARES_RESOURCES asks of a host): the library
+// code the stage and hostCalls reach, the stage's two structs and its function. The
+// full shaders are this plus the reference host (backends/reference_host.hpp).
+std::string writeEmbeddedSurfaceStage(const IrGraph& graph, const SurfaceInterface& surface, ShaderLanguage language,
+                                      ShaderStage stage, const std::vector<std::string>& nodeNames,
+                                      const std::vector<std::string_view>& hostCalls);
 
 }  // namespace wg

@@ -1,5 +1,6 @@
 #include "backends/token_renames.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "backends/glsl_tokens.hpp"
@@ -37,7 +38,10 @@ std::pair<std::size_t, std::size_t> combinedSampler(const Tokens& tokens, std::s
 
 }  // namespace
 
-std::string renameTokens(std::string_view code, const TokenRenames& renames) {
+namespace {
+
+// With samplers to combine: token by token, looking ahead at each sampler2D.
+std::string renameCombiningSamplers(std::string_view code, const TokenRenames& renames) {
   const Tokens tokens = tokenizeGlsl(code);
   std::string out;
   out.reserve(code.size() + code.size() / 8);
@@ -45,7 +49,7 @@ std::string renameTokens(std::string_view code, const TokenRenames& renames) {
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const GlslToken& token = tokens[i];
     if (token.kind == GlslTokenKind::Identifier) {
-      if (renames.combineSamplers && !afterDot && token.text == "sampler2D") {
+      if (!afterDot && token.text == "sampler2D") {
         if (auto [texture, end] = combinedSampler(tokens, i); end) {
           auto renamed = renames.bare.find(tokens[texture].text);
           out += renamed == renames.bare.end() ? std::string(tokens[texture].text) : renamed->second;
@@ -62,6 +66,45 @@ std::string renameTokens(std::string_view code, const TokenRenames& renames) {
     }
     if (token.kind != GlslTokenKind::Space && token.kind != GlslTokenKind::Comment) afterDot = token.text == ".";
   }
+  return out;
+}
+
+}  // namespace
+
+// Walks the text once and copies the runs between renamed identifiers whole: the
+// surfaces' bodies are renamed at every compile.
+std::string renameTokens(std::string_view code, const TokenRenames& renames) {
+  if (renames.combineSamplers) return renameCombiningSamplers(code, renames);
+  // The keys' first two characters: most identifiers start otherwise and are never hashed.
+  std::vector<std::string_view> starts;
+  for (const TokenTable* table : {&renames.bare, &renames.member})
+    for (const auto& [key, value] : *table) {
+      std::string_view start = std::string_view(key).substr(0, 2);
+      if (std::find(starts.begin(), starts.end(), start) == starts.end()) starts.push_back(start);
+    }
+  auto mayBeKey = [&](std::string_view identifier) {
+    for (std::string_view start : starts)
+      if (identifier.starts_with(start)) return true;
+    return false;
+  };
+  std::string out;
+  out.reserve(code.size() + code.size() / 8);
+  std::size_t copied = 0;
+  bool afterDot = false;
+  for (std::size_t at = 0; at < code.size();) {
+    const GlslToken token = nextGlslToken(code, at);
+    if (token.kind == GlslTokenKind::Identifier && mayBeKey(token.text)) {
+      const auto& table = afterDot ? renames.member : renames.bare;
+      if (auto renamed = table.find(token.text); renamed != table.end()) {
+        out.append(code.substr(copied, at - copied));
+        out += renamed->second;
+        copied = at + token.text.size();
+      }
+    }
+    if (token.kind != GlslTokenKind::Space && token.kind != GlslTokenKind::Comment) afterDot = token.text == ".";
+    at += token.text.size();
+  }
+  out.append(code.substr(copied));
   return out;
 }
 

@@ -71,7 +71,7 @@ std::string emitBlockStruct(const UniformBlock& block, std::string_view purpose)
   IdentifierScope scope = cppScope();
   // Members are named first so padding can never take a member's name. They keep the
   // reflection's identifiers, so engines match them by name; one would only change if
-  // it were a C++ word, and none is: they all start with "frame_" or "mat_".
+  // it were a C++ word, and none is: they all start with "frame_", "weather_" or "mat_".
   std::vector<std::string> names;
   for (const BlockMember& m : block.members) names.push_back(scope.make(m.identifier));
   std::string body, asserts;

@@ -1,6 +1,8 @@
 // The frame and weather uniform block shared by every material, laid out from the one
 // table of its members (nodes/frame_fields.hpp). Its members are fixed internal names;
-// the runtime fills it from reflection.
+// the runtime fills it from reflection. The weather's members are spelled as a
+// surface reads them (weather_<name>), the host's as frame_<name>: the reference host
+// declares this block for the surface it embeds.
 #include "compiler/material_interface.hpp"
 #include "nodes/frame_fields.hpp"
 
@@ -18,6 +20,10 @@ InterfaceType interfaceTypeOf(FrameFieldType type) {
   return InterfaceType::Float;
 }
 
+std::string frameMemberIdentifier(const FrameField& field) {
+  return (field.owner == FrameFieldOwner::Host ? "frame_" : "weather_") + std::string(field.name);
+}
+
 namespace {
 UniformBlock makeFrameBlock() {
   UniformBlock block;
@@ -26,7 +32,7 @@ UniformBlock makeFrameBlock() {
   block.set = 0;
   block.binding = 0;
   for (const auto& field : frameFields())
-    block.members.push_back({std::string(field.name), "frame_" + std::string(field.name), interfaceTypeOf(field.type)});
+    block.members.push_back({std::string(field.name), frameMemberIdentifier(field), interfaceTypeOf(field.type)});
   layoutStd140(block);
   return block;
 }

@@ -10,6 +10,8 @@
 
 namespace wg {
 
+struct FrameField;
+
 enum class InterfaceType : std::uint8_t { Float, Vec2, Vec3, Vec4, Uint, Mat4 };
 
 std::string_view interfaceTypeName(InterfaceType type);  // GLSL spelling, used in reflection
@@ -69,5 +71,8 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph);
 
 // The frame and weather block every material shares (set 0, binding 0).
 const UniformBlock& frameBlock();
+// A frame member as shaders name it: weather_<name> for what the weather owns or
+// places (a surface's names), frame_<name> for the host's.
+std::string frameMemberIdentifier(const FrameField& field);
 
 }  // namespace wg

@@ -24,7 +24,7 @@ UniformBlock makeWeatherBlock() {
   block.identifier = "WeatherBlock";
   for (const auto& field : frameFields())
     if (field.owner != FrameFieldOwner::Host)
-      block.members.push_back({std::string(field.name), "weather_" + std::string(field.name), interfaceTypeOf(field.type)});
+      block.members.push_back({std::string(field.name), frameMemberIdentifier(field), interfaceTypeOf(field.type)});
   layoutStd140(block);
   return block;
 }
@@ -70,6 +70,8 @@ std::vector<SurfaceField> geometryFields(const MaterialInterface& mi) {
   return fields;
 }
 
+constexpr std::size_t fieldSlotOf(PbrField field) { return static_cast<std::size_t>(field); }
+
 std::string bindingMacro(std::string_view identifier) { return "WG_BINDING_" + std::string(identifier); }
 
 }  // namespace
@@ -85,14 +87,23 @@ std::string_view surfaceResourceKindName(SurfaceResourceKind kind) {
 
 std::span<const SurfaceLanguageInfo> surfaceLanguages() { return kSurfaceLanguages; }
 
+// The normal leaves in world space (the function applies the tangent frame).
+std::string_view surfaceOutputField(std::size_t slot) {
+  if (slot >= kPbrFieldCount) return coverageTerms()[slot - kPbrFieldCount].name;
+  const PbrFieldInfo& f = pbrFields()[slot];
+  return f.field == PbrField::AmbientOcclusion ? "occlusion" : f.name;
+}
+
 const UniformBlock& surfaceWeatherBlock() {
   static const UniformBlock kBlock = makeWeatherBlock();
   return kBlock;
 }
 
-SurfaceInterface buildSurfaceInterface(const MaterialInterface& mi, std::string_view fileStem) {
+namespace {
+
+SurfaceInterface buildWithPrefix(const MaterialInterface& mi, std::string prefix) {
   SurfaceInterface s;
-  s.prefix = identifierPrefix(fileStem);
+  s.prefix = std::move(prefix);
   s.vertexFunction = s.prefix + "surfaceVertex";
   s.fragmentFunction = s.prefix + "surfaceFragment";
 
@@ -106,13 +117,11 @@ SurfaceInterface buildSurfaceInterface(const MaterialInterface& mi, std::string_
   s.fragmentInput.fields.push_back({"frontFacing", "bool"});
   s.fragmentInput.fields.push_back({"cameraPosition", "vec3"});
   s.fragmentOutput = {s.prefix + "FragmentOutput", {}};
-  for (const auto& f : pbrFields()) {
-    if (f.stage != ShaderStage::Fragment) continue;
-    // The normal leaves in world space (the function applies the tangent frame).
-    std::string_view name = f.field == PbrField::AmbientOcclusion ? "occlusion" : f.name;
-    s.fragmentOutput.fields.push_back({std::string(name), glslType(f.type)});
-  }
-  for (const auto& term : coverageTerms()) s.fragmentOutput.fields.push_back({std::string(term.name), "float"});
+  for (const auto& f : pbrFields())
+    if (f.stage == ShaderStage::Fragment)
+      s.fragmentOutput.fields.push_back({std::string(surfaceOutputField(fieldSlotOf(f.field))), glslType(f.type)});
+  for (std::size_t k = 0; k < kCoverageCount; ++k)
+    s.fragmentOutput.fields.push_back({std::string(surfaceOutputField(kPbrFieldCount + k)), "float"});
 
   // Per-material identifiers carry the prefix; the weather's are shared.
   s.prefixed = mi;
@@ -134,7 +143,7 @@ SurfaceInterface buildSurfaceInterface(const MaterialInterface& mi, std::string_
     s.resources.push_back({used.name, used.samplerIdentifier, SurfaceResourceKind::Sampler, true, 0, used.samplerBinding,
                            "WG_WEATHER_SET", bindingMacro(used.samplerIdentifier), map->fallbackMacro});
   }
-  const std::string materialSet = "WG_SET_" + s.prefix.substr(0, s.prefix.size() - 1);
+  const std::string materialSet = "WG_SET_" + (s.prefix.empty() ? "material" : s.prefix.substr(0, s.prefix.size() - 1));
   const auto& block = s.prefixed.material;
   if (!block.members.empty())
     s.resources.push_back({block.name, block.identifier, SurfaceResourceKind::UniformBlock, false, block.set,
@@ -147,5 +156,13 @@ SurfaceInterface buildSurfaceInterface(const MaterialInterface& mi, std::string_
   }
   return s;
 }
+
+}  // namespace
+
+SurfaceInterface buildSurfaceInterface(const MaterialInterface& mi, std::string_view fileStem) {
+  return buildWithPrefix(mi, identifierPrefix(fileStem));
+}
+
+SurfaceInterface buildEmbeddedSurfaceInterface(const MaterialInterface& mi) { return buildWithPrefix(mi, ""); }
 
 }  // namespace wg

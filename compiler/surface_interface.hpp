@@ -72,7 +72,14 @@ inline constexpr std::string_view kSurfaceHostResourcesMacro = "WG_HOST_DECLARES
 // weather_<field>, std140. The same for every material.
 const UniformBlock& surfaceWeatherBlock();
 
+// The fragment output field an output slot (IrGraph::outputs) leaves in.
+std::string_view surfaceOutputField(std::size_t slot);
+
 // fileStem: the material's file stem (fileStemFor), from which its prefix is made.
 SurfaceInterface buildSurfaceInterface(const MaterialInterface& mi, std::string_view fileStem);
+// The same contract without a prefix, for a host whose shader holds one material (the
+// reference host's full shaders): functions surfaceVertex and surfaceFragment, structs
+// VertexInput..FragmentOutput, and the material's own identifiers.
+SurfaceInterface buildEmbeddedSurfaceInterface(const MaterialInterface& mi);
 
 }  // namespace wg

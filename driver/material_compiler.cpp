@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "backends/filament_material.hpp"
+#include "backends/reference_host.hpp"
 #include "backends/spirv/cross_compile.hpp"
 #include "backends/stage_writer.hpp"
 #include "backends/surface_writer.hpp"
@@ -209,11 +210,13 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
   material.fileStem = fileStemFor(ir->name) + (options.hashKeyedFileStem ? "." + material.contentHash : "");
   MaterialInterface mi = buildMaterialInterface(*ir);
   std::vector<std::string> names = nameNodes(*ir);
+  // Every full stage is the material's surface in the reference host.
+  const SurfaceInterface embedded = buildEmbeddedSurfaceInterface(mi);
   for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
     for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
       if (language == ShaderLanguage::Glsl || options.emitHlsl)
         material.stages.push_back(
-            {language, stage, writeStage(*ir, mi, syntaxFor(language), stage, material.contentHash, names), {}, {}});
+            {language, stage, writeReferenceHostStage(*ir, embedded, language, stage, material.contentHash, names), {}, {}});
   // The SPIR-V translations need the module even when it is not wanted itself.
   if (options.emitSpirv || options.emitMsl || options.emitGlslEs)
     for (auto& stage : material.stages)

@@ -1,6 +1,6 @@
 #include "driver/spirv_module_cache.hpp"
 
-#include "backends/stage_writer.hpp"
+#include "backends/reference_host.hpp"
 
 namespace wg {
 

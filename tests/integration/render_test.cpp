@@ -89,8 +89,10 @@ TEST_P(EachScene, GlslAndHlslSpirvRenderTheSameImage) {
 }
 
 // AOVs sampled at many pixels match 'weathergen eval' (the CPU evaluator) fed with the
-// surface inputs read back from the position, normal, texcoord and tangent AOVs.
-TEST_P(EachScene, AovsMatchTheCpuEvaluator) {
+// surface inputs read back from the position, normal, texcoord and tangent AOVs. The
+// AOVs are the surface function's outputs (every full shader embeds its surface), so
+// this checks the GLSL and the HLSL surfaces against the evaluator, and so each other.
+TEST_P(EachScene, AovsOfBothLanguagesMatchTheCpuEvaluator) {
   REQUIRE_VULKAN();
   SceneRenderer& renderer = sceneRenderer(GetParam());
   const auto& scene = renderer.scene();
@@ -98,46 +100,51 @@ TEST_P(EachScene, AovsMatchTheCpuEvaluator) {
   constexpr float kTolerance = 0.02f;         // per value: float rounding, amplified by thresholds
   constexpr double kInToleranceShare = 0.97;  // noise-edge pixels may straddle a threshold
   constexpr double kMaxMeanError = 0.005;
-  std::size_t samples = 0, within = 0;
-  double errorSum = 0.0;
-  std::set<std::string> graphs;
-  for (const auto& object : scene.objects) {
-    if (!graphs.insert(object.graph).second) continue;  // one object per material
-    RenderRequest request = requestFor(GetParam(), weather);
-    request.onlyObject = object.name;
-    auto pixels = surfacePixels(renderer, request, 6);
-    std::map<std::string, RenderedFrame> aovs;
-    for (const char* name : {"albedo", "roughness", "snow", "wet", "moss", "frost", "ice", "puddle"}) {
-      request.debugView = view(name);
-      aovs[name] = renderer.render(request);
-      expectNoValidationMessages();
+  for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl}) {
+    std::size_t samples = 0, within = 0;
+    double errorSum = 0.0;
+    std::set<std::string> graphs;
+    for (const auto& object : scene.objects) {
+      if (!graphs.insert(object.graph).second) continue;  // one object per material
+      RenderRequest request = requestFor(GetParam(), weather);
+      request.backend = language;
+      request.onlyObject = object.name;
+      auto pixels = surfacePixels(renderer, request, 6);
+      std::map<std::string, RenderedFrame> aovs;
+      for (const char* name : {"albedo", "roughness", "snow", "wet", "moss", "frost", "ice", "puddle"}) {
+        request.debugView = view(name);
+        aovs[name] = renderer.render(request);
+        expectNoValidationMessages();
+      }
+      const CpuEvaluator& cpu = evaluatorFor(object.graph);
+      for (const auto& p : pixels) {
+        EvalInputs in;
+        in.surface = p.surface;
+        in.frame = frameStateFor(renderer, weather);
+        in.terrainHeight = &terrainField(renderer);
+        in.positionIsDisplaced = true;
+        EvalResult r = cpu.evaluate(in);
+        auto compare = [&](float gpu, float expected) {
+          float e = std::fabs(gpu - expected);
+          ++samples;
+          within += e <= kTolerance;
+          errorSum += e;
+        };
+        glm::vec4 albedo = pixel(aovs["albedo"], p.at.x, p.at.y);
+        const Value& base = r.output(PbrField::BaseColor);
+        for (int c = 0; c < 3; ++c) compare(albedo[c], base.v[c]);
+        compare(pixel(aovs["roughness"], p.at.x, p.at.y).x, r.output(PbrField::Roughness).x());
+        for (auto [aov, term] : {std::pair{"snow", CoverageTerm::Snow}, {"wet", CoverageTerm::Wet}, {"moss", CoverageTerm::Moss},
+                                 {"frost", CoverageTerm::Frost}, {"ice", CoverageTerm::Ice}, {"puddle", CoverageTerm::Puddle}})
+          compare(pixel(aovs[aov], p.at.x, p.at.y).x, r.coverageOf(term));
+      }
     }
-    const CpuEvaluator& cpu = evaluatorFor(object.graph);
-    for (const auto& p : pixels) {
-      EvalInputs in;
-      in.surface = p.surface;
-      in.frame = frameStateFor(renderer, weather);
-      in.terrainHeight = &terrainField(renderer);
-      in.positionIsDisplaced = true;
-      EvalResult r = cpu.evaluate(in);
-      auto compare = [&](float gpu, float expected) {
-        float e = std::fabs(gpu - expected);
-        ++samples;
-        within += e <= kTolerance;
-        errorSum += e;
-      };
-      glm::vec4 albedo = pixel(aovs["albedo"], p.at.x, p.at.y);
-      const Value& base = r.output(PbrField::BaseColor);
-      for (int c = 0; c < 3; ++c) compare(albedo[c], base.v[c]);
-      compare(pixel(aovs["roughness"], p.at.x, p.at.y).x, r.output(PbrField::Roughness).x());
-      for (auto [aov, term] : {std::pair{"snow", CoverageTerm::Snow}, {"wet", CoverageTerm::Wet}, {"moss", CoverageTerm::Moss},
-                               {"frost", CoverageTerm::Frost}, {"ice", CoverageTerm::Ice}, {"puddle", CoverageTerm::Puddle}})
-        compare(pixel(aovs[aov], p.at.x, p.at.y).x, r.coverageOf(term));
-    }
+    const std::string_view label = languageName(language);
+    ASSERT_GE(samples, 64u * 10u) << label << ": too few pixels compared";
+    EXPECT_GE(double(within) / samples, kInToleranceShare)
+        << label << ": " << within << " of " << samples << " within " << kTolerance;
+    EXPECT_LE(errorSum / samples, kMaxMeanError) << label;
   }
-  ASSERT_GE(samples, 64u * 10u) << "too few pixels compared";
-  EXPECT_GE(double(within) / samples, kInToleranceShare) << within << " of " << samples << " within " << kTolerance;
-  EXPECT_LE(errorSum / samples, kMaxMeanError);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, EachScene, ::testing::Values("valley", "rocks", "river", "road"));

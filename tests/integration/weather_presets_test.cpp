@@ -54,8 +54,9 @@ std::set<std::string> weatherFunctions() {
 }
 
 // The entry point and everything after it: the body the weather pass writes into.
-std::string mainBody(const std::string& source) {
-  static const std::regex kMain(R"(\bmain\s*\()");
+// The stage's own statements: its surface function, which the reference host's main() calls.
+std::string surfaceBody(const std::string& source) {
+  static const std::regex kMain(R"(\bsurface(Vertex|Fragment)\s*\(\w+ wg_in\))");
   std::smatch m;
   if (!std::regex_search(source, m, kMain)) return "";
   return source.substr(static_cast<std::size_t>(m.position(0)));
@@ -176,13 +177,13 @@ TEST(WeatherFolding, RockWithoutMossEmitsNoMossCoverage) {
   auto r = compile(rockWith(dir, "rock"), dir.path() / "full", "--target glsl,hlsl");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* file : {"rock.frag.glsl", "rock.frag.hlsl"})
-    EXPECT_TRUE(calls(mainBody(readFile(dir.path() / "full" / file)), "wg_moss_coverage")) << file;
+    EXPECT_TRUE(calls(surfaceBody(readFile(dir.path() / "full" / file)), "wg_moss_coverage")) << file;
 
   r = compile(rockWith(dir, {{"preset", "rock"}, {"effects", {{"moss", false}}}}), dir.path() / "nomoss",
               "--target glsl,hlsl");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* file : {"rock.frag.glsl", "rock.frag.hlsl"}) {
-    std::string body = mainBody(readFile(dir.path() / "nomoss" / file));
+    std::string body = surfaceBody(readFile(dir.path() / "nomoss" / file));
     ASSERT_FALSE(body.empty()) << file;
     EXPECT_FALSE(calls(body, "wg_moss_coverage")) << file;
     EXPECT_FALSE(calls(body, "wg_moss_albedo")) << file;
@@ -195,18 +196,18 @@ TEST(WeatherFolding, RockWithoutDisplacementEmitsNoSnowOffset) {
   auto r = compile(rockWith(dir, "rock"), dir.path() / "full", "--target glsl,hlsl");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* file : {"rock.vert.glsl", "rock.vert.hlsl"})
-    EXPECT_TRUE(calls(mainBody(readFile(dir.path() / "full" / file)), "wg_snow_offset")) << file;
+    EXPECT_TRUE(calls(surfaceBody(readFile(dir.path() / "full" / file)), "wg_snow_offset")) << file;
 
   r = compile(rockWith(dir, {{"preset", "rock"}, {"effects", {{"displacement", false}}}}), dir.path() / "flat",
               "--target glsl,hlsl");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* file : {"rock.vert.glsl", "rock.vert.hlsl"}) {
     std::string text = readFile(dir.path() / "flat" / file);
-    ASSERT_FALSE(mainBody(text).empty()) << file;
+    ASSERT_FALSE(surfaceBody(text).empty()) << file;
     EXPECT_FALSE(calls(text, "wg_snow_offset")) << file;  // neither called nor defined
   }
   // Snow cover itself is still in the fragment stage.
-  EXPECT_TRUE(calls(mainBody(readFile(dir.path() / "flat" / "rock.frag.glsl")), "wg_snow_coverage"));
+  EXPECT_TRUE(calls(surfaceBody(readFile(dir.path() / "flat" / "rock.frag.glsl")), "wg_snow_coverage"));
 }
 
 // ---------------------------------------------------------------------------------------

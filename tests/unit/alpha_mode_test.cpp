@@ -38,7 +38,7 @@ bool discards(const CompiledMaterial& m, ShaderLanguage language) {
   return fragment(m, language).find("discard") != std::string::npos;
 }
 bool writesOpacityAsAlpha(const CompiledMaterial& m, ShaderLanguage language) {
-  return fragment(m, language).find("wg_alpha = frame_debugView == 0u ? wg_opacity : 1.0;") != std::string::npos;
+  return fragment(m, language).find("wg_alpha = frame_debugView == 0u ? wg_surface.opacity : 1.0;") != std::string::npos;
 }
 
 TEST(AlphaMode, AbsentFollowsTheOpacityRule) {
@@ -57,7 +57,7 @@ TEST(AlphaMode, MaskDiscardsBelowTheCutoff) {
     EXPECT_EQ(reflection(m)["alphaMode"], "mask");
     EXPECT_EQ(reflection(m)["alphaTested"], true);
     for (auto language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl}) {
-      EXPECT_NE(fragment(m, language).find("if (wg_opacity < 0.3) discard;"), std::string::npos);
+      EXPECT_NE(fragment(m, language).find("if (wg_surface.opacity < 0.3) discard;"), std::string::npos);
       EXPECT_FALSE(writesOpacityAsAlpha(m, language));
     }
   }

@@ -5,7 +5,7 @@
 #include <atomic>
 #include <thread>
 
-#include "backends/stage_writer.hpp"
+#include "backends/reference_host.hpp"
 #include "driver/batch_compile.hpp"
 #include "driver/spirv_module_cache.hpp"
 

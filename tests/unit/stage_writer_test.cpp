@@ -5,6 +5,7 @@
 #include <set>
 
 #include "backends/op_template.hpp"
+#include "backends/reference_host.hpp"
 #include "backends/shader_syntax.hpp"
 #include "backends/stage_writer.hpp"
 #include "compiler/debug_views.hpp"
@@ -27,19 +28,20 @@ IrGraph weatheredRock() {
 
 std::string fragmentText(const IrGraph& ir, ShaderLanguage language = ShaderLanguage::Glsl) {
   MaterialInterface mi = buildMaterialInterface(ir);
-  return writeStage(ir, mi, syntaxFor(language), ShaderStage::Fragment, "0", nameNodes(ir));
+  return writeReferenceHostStage(ir, buildEmbeddedSurfaceInterface(mi), language, ShaderStage::Fragment, "0",
+                                 nameNodes(ir));
 }
 
 TEST(StageWriter, WeatherGuardComesFromTheIr) {
   IrGraph ir = weatheredRock();
   ASSERT_TRUE(ir.weatherGuarded());
-  EXPECT_NE(fragmentText(ir).find("if (frame_snowLevel + frame_wetnessLevel + frame_mossLevel + frame_frostLevel + "
-                                  "frame_puddleLevel > 0.0) {"),
+  EXPECT_NE(fragmentText(ir).find("if (weather_snowLevel + weather_wetnessLevel + weather_mossLevel + "
+                                  "weather_frostLevel + weather_puddleLevel > 0.0) {"),
             std::string::npos);
   ir.weatherGuard = {"frame_snowLevel"};
   std::string text = fragmentText(ir);
-  EXPECT_NE(text.find("if (frame_snowLevel > 0.0) {"), std::string::npos);
-  EXPECT_EQ(text.find("frame_wetnessLevel +"), std::string::npos);
+  EXPECT_NE(text.find("if (weather_snowLevel > 0.0) {"), std::string::npos);
+  EXPECT_EQ(text.find("weather_wetnessLevel +"), std::string::npos);
 }
 
 // Node names are built without an identifier scope; this is what makes that safe.
@@ -89,7 +91,7 @@ TEST(StageWriter, DebugViewsComeFromTheIr) {
   IrGraph ir = weatheredRock();
   ASSERT_EQ(ir.debugViews.size(), kDebugViews.size() - 1);  // every view but "lit"
   std::string text = fragmentText(ir);
-  EXPECT_NE(text.find("case 4u: wg_color = vec3(wg_coverage_snow); break;"), std::string::npos);
+  EXPECT_NE(text.find("case 4u: wg_color = vec3(wg_surface.snow); break;"), std::string::npos);
   EXPECT_NE(text.find("case 14u: wg_color = wg_worldTangent.xyz; wg_alpha = wg_worldTangent.w; break;"),
             std::string::npos);
 
@@ -102,9 +104,10 @@ TEST(StageWriter, DebugViewsComeFromTheIr) {
 
 TEST(StageWriter, DebugViewsSplatScalarSlotsInEachLanguage) {
   IrGraph ir = weatheredRock();
-  EXPECT_NE(fragmentText(ir).find("case 2u: wg_color = vec3(wg_roughness); break;"), std::string::npos);
-  EXPECT_NE(fragmentText(ir, ShaderLanguage::Hlsl).find("case 2u: wg_color = ((float3)(wg_roughness)); break;"),
-            std::string::npos);
+  EXPECT_NE(fragmentText(ir).find("case 2u: wg_color = vec3(wg_surface.roughness); break;"), std::string::npos);
+  EXPECT_NE(
+      fragmentText(ir, ShaderLanguage::Hlsl).find("case 2u: wg_color = ((float3)(wg_surface.roughness)); break;"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -49,11 +49,14 @@ TEST(Texcoord1, BothBackendsPassItThroughTheStages) {
   CompiledMaterial m = compile(kGraph);
   auto source = [&](ShaderLanguage l, ShaderStage s) { return m.stage(l, s).source; };
   EXPECT_NE(source(ShaderLanguage::Glsl, ShaderStage::Vertex).find("layout(location = 5) in vec2 in_texcoord1;"), std::string::npos);
-  EXPECT_NE(source(ShaderLanguage::Glsl, ShaderStage::Vertex).find("v_texcoord1 = wg_texcoord1;"), std::string::npos);
-  EXPECT_NE(source(ShaderLanguage::Glsl, ShaderStage::Fragment).find("vec2 wg_texcoord1 = v_texcoord1;"), std::string::npos);
+  EXPECT_NE(source(ShaderLanguage::Glsl, ShaderStage::Vertex).find("wg_vertexInput.texcoord1 = in_texcoord1;"), std::string::npos);
+  EXPECT_NE(source(ShaderLanguage::Glsl, ShaderStage::Vertex).find("wg_out.texcoord1 = wg_texcoord1;"), std::string::npos);
+  EXPECT_NE(source(ShaderLanguage::Glsl, ShaderStage::Vertex).find("v_texcoord1 = wg_vertexOutput.texcoord1;"), std::string::npos);
+  EXPECT_NE(source(ShaderLanguage::Glsl, ShaderStage::Fragment).find("wg_fragmentInput.texcoord1 = v_texcoord1;"), std::string::npos);
+  EXPECT_NE(source(ShaderLanguage::Glsl, ShaderStage::Fragment).find("vec2 wg_texcoord1 = wg_in.texcoord1;"), std::string::npos);
   EXPECT_NE(source(ShaderLanguage::Hlsl, ShaderStage::Vertex).find("[[vk::location(5)]] float2 in_texcoord1 : TEXCOORD5;"),
             std::string::npos);
-  EXPECT_NE(source(ShaderLanguage::Hlsl, ShaderStage::Fragment).find("float2 wg_texcoord1 = wg_in.v_texcoord1;"), std::string::npos);
+  EXPECT_NE(source(ShaderLanguage::Hlsl, ShaderStage::Fragment).find("wg_fragmentInput.texcoord1 = wg_in.v_texcoord1;"), std::string::npos);
   for (const auto& stage : m.stages) EXPECT_FALSE(stage.spirv.empty());
 }
 

@@ -101,12 +101,12 @@ TEST(VertexRatePass, RocksFragmentStageReadsTheSlopeInsteadOfSamplingTheHeightMa
   std::string glslFragment = source(m, ShaderLanguage::Glsl, ShaderStage::Fragment);
   EXPECT_FALSE(contains(glslFragment, sample));
   EXPECT_TRUE(contains(glslFragment, "layout(location = 5) in vec3 v_interpolant0;"));
-  EXPECT_TRUE(contains(glslFragment, "_weather_terrain_slope = v_interpolant0;"));
+  EXPECT_TRUE(contains(glslFragment, "_weather_terrain_slope = wg_in.interpolant0;"));
   EXPECT_TRUE(contains(glslVertex, sample));
   EXPECT_TRUE(contains(glslVertex, "layout(location = 5) out vec3 v_interpolant0;"));
   // Zero while the weather branch is skipped, the slope inside it.
-  std::size_t zero = glslVertex.find("v_interpolant0 = vec3(0.0);");
-  std::size_t branch = glslVertex.find("  if (frame_snowLevel");
+  std::size_t zero = glslVertex.find("wg_out.interpolant0 = vec3(0.0);");
+  std::size_t branch = glslVertex.find("  if (weather_snowLevel");
   std::size_t write = glslVertex.find("_weather_terrain_slope;");
   ASSERT_NE(zero, std::string::npos);
   EXPECT_LT(zero, branch);
@@ -115,8 +115,9 @@ TEST(VertexRatePass, RocksFragmentStageReadsTheSlopeInsteadOfSamplingTheHeightMa
   std::string hlslVertex = source(m, ShaderLanguage::Hlsl, ShaderStage::Vertex);
   std::string hlslFragment = source(m, ShaderLanguage::Hlsl, ShaderStage::Fragment);
   EXPECT_TRUE(contains(hlslVertex, "[[vk::location(5)]] float3 v_interpolant0 : TEXCOORD5;"));
-  EXPECT_TRUE(contains(hlslVertex, "wg_out.v_interpolant0 = "));
-  EXPECT_TRUE(contains(hlslFragment, "_weather_terrain_slope = wg_in.v_interpolant0;"));
+  EXPECT_TRUE(contains(hlslVertex, "wg_out.v_interpolant0 = wg_vertexOutput.interpolant0;"));
+  EXPECT_TRUE(contains(hlslFragment, "wg_fragmentInput.interpolant0 = wg_in.v_interpolant0;"));
+  EXPECT_TRUE(contains(hlslFragment, "_weather_terrain_slope = wg_in.interpolant0;"));
   for (const auto& stage : m.stages) EXPECT_FALSE(stage.spirv.empty());
 
   json reflection = json::parse(m.reflectionJson);

@@ -138,7 +138,8 @@ std::size_t count(const std::string& text, const std::string& what) {
 }
 
 // The text of main() only: the library defines the functions once whatever calls them.
-std::string mainOf(const std::string& source) { return source.substr(source.find("void main()")); }
+// The statements of the stage's surface function, which the full shader's main() calls.
+std::string surfaceFunctionOf(const std::string& source) { return source.substr(source.find("Output surface")); }
 
 struct Compiled {
   std::string vert, frag;
@@ -150,8 +151,8 @@ Compiled compileGraph(const std::string& stem, const std::string& preset = "") {
   auto r = compileMaterialText(stem + ".json", readGraph(stem), options);
   EXPECT_TRUE(r.material) << stem;
   if (!r.material) return {};
-  return {mainOf(r.material->stage(ShaderLanguage::Glsl, ShaderStage::Vertex).source),
-          mainOf(r.material->stage(ShaderLanguage::Glsl, ShaderStage::Fragment).source),
+  return {surfaceFunctionOf(r.material->stage(ShaderLanguage::Glsl, ShaderStage::Vertex).source),
+          surfaceFunctionOf(r.material->stage(ShaderLanguage::Glsl, ShaderStage::Fragment).source),
           nlohmann::json::parse(r.material->reflectionJson)};
 }
 
