@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Installs weathergen into a temporary prefix and checks the engine library in it: the
-# header, libweathergen.so exporting only the API, and weathergen::compiler in the CMake
-# package. Then builds examples/engine-plugin against it with Ninja and runs it (compile
-# from memory, Vulkan pipelines from the reflection on lavapipe, validation on, hot
-# reload), and checks that add_subdirectory() gives a project weathergen::compiler too.
+# A deferred host with its own lights and bindings (docs/engine-api.md, "The surface
+# contract"): installs weathergen into a temporary prefix, builds examples/engine-plugin
+# against it with Ninja and runs it on lavapipe with the validation layers on. The host
+# compiles graphs/rock.json's surface, writes its GLSL and HLSL G-buffer glue from the
+# reflection alone (every resource moved to its own sets with the WG_ macros), lights
+# the G-buffer itself and checks that snow whitened the sphere's top only and that the
+# HLSL surface's G-buffer matches the GLSL one's; its weather comes from the installed
+# weathergen::weather. Then this script checks its outputs and that library.
+# The frames stay in $WG_DEFERRED_FRAMES when it is set.
 #
 # usage: engine_plugin_test.sh BUILD_DIR SOURCE_DIR [CMAKE] [NINJA] [CXX]
 set -euo pipefail
@@ -16,67 +20,45 @@ cxx=${5:-c++}
 
 # shellcheck source=package_steps.sh
 source "$(dirname "$0")/package_steps.sh" engine-plugin "$build_dir" "$cmake"
-for f in include/weathergen/weathergen.hpp lib/libweathergen.so \
-         lib/cmake/weathergen/weathergenConfig.cmake lib/cmake/weathergen/weathergenCompilerTargets.cmake; do
-  [[ -e "$prefix/$f" ]] || fail "cmake --install did not install $f"
+
+# The weather loop's library: its header compiles on its own, and it exports its
+# namespace only.
+for f in include/weathergen/weather.hpp lib/libweathergen_weather.so lib/cmake/weathergen/weathergenWeatherTargets.cmake; do
+  [[ -e "$prefix/$f" ]] || fail "the install lacks $f"
 done
-
-# The header is the only one a user needs: it compiles on its own, warning-free.
-echo '#include <weathergen/weathergen.hpp>' >"$tmp/header.cpp"
-quiet "the installed header does not compile on its own" \
-  "$cxx" -std=c++17 -fsyntax-only -Wall -Wextra -Werror -I"$prefix/include" "$tmp/header.cpp"
-
-# Only the API leaves the library: glslang, SPIRV-Tools, SPIRV-Cross and nlohmann_json
-# stay inside, so they cannot clash with an engine's own copies.
-leaked=$(nm -D -C --defined-only "$prefix/lib/libweathergen.so" | grep -v ' weathergen::' || true)
-[[ -z "$leaked" ]] || fail "libweathergen.so exports more than namespace weathergen:"$'\n'"$leaked"
-nm -D -C --defined-only "$prefix/lib/libweathergen.so" | grep -q ' weathergen::compile(' ||
-  fail "libweathergen.so does not export weathergen::compile"
-# An empty link interface is why the config needs no find_dependency(); a new public
-# dependency must come with one.
-if grep -q INTERFACE_LINK_LIBRARIES "$prefix/lib/cmake/weathergen/weathergenCompilerTargets.cmake"; then
-  fail "weathergen::compiler has link dependencies now: find_dependency() them in weathergenConfig.cmake.in"
-fi
+echo '#include <weathergen/weather.hpp>' >"$tmp/weather_header.cpp"
+quiet "the installed weather header does not compile on its own" \
+  "$cxx" -std=c++17 -fsyntax-only -Wall -Wextra -Werror -I"$prefix/include" "$tmp/weather_header.cpp"
+leaked=$(nm -D -C --defined-only "$prefix/lib/libweathergen_weather.so" | grep -v ' weathergen::weather::' || true)
+[[ -z "$leaked" ]] || fail "libweathergen_weather.so exports more than namespace weathergen::weather:"$'\n'"$leaked"
 
 quiet "configuring examples/engine-plugin against the installed package" \
   "$cmake" -S "$source_dir/examples/engine-plugin" -B "$tmp/example" -G Ninja -DCMAKE_MAKE_PROGRAM="$ninja" \
   -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
   "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wno-missing-field-initializers -Werror"
 quiet "building examples/engine-plugin" "$ninja" -C "$tmp/example"
-"$tmp/example/engine_plugin" >"$tmp/run.log" 2>&1 || { cat "$tmp/run.log" >&2; fail "engine_plugin failed"; }
+
+out=${WG_DEFERRED_FRAMES:-$tmp/out}
+"$tmp/example/engine_plugin" "$source_dir/graphs/rock.json" "$out" >"$tmp/run.log" 2>&1 ||
+  { cat "$tmp/run.log" >&2; fail "engine_plugin failed"; }
 cat "$tmp/run.log"
-[[ $(grep -c ' 2 pipelines;' "$tmp/run.log") == 2 ]] || fail "engine_plugin did not build both materials' pipelines"
+grep -q 'no validation messages$' "$tmp/run.log" || fail "engine_plugin did not finish cleanly"
 
-# add_subdirectory(): the same target name, the public include directory only, no tests.
-# Configured and one object compiled; building the library again here would take minutes.
-mkdir "$tmp/subdirectory"
-cat >"$tmp/subdirectory/CMakeLists.txt" <<CMAKE
-cmake_minimum_required(VERSION 3.25)
-project(weathergen_subdirectory_consumer CXX)
-add_subdirectory("$source_dir" weathergen)
-get_target_property(library weathergen::compiler ALIASED_TARGET)
-get_target_property(type "\${library}" TYPE)
-if(NOT type STREQUAL "SHARED_LIBRARY")
-  message(FATAL_ERROR "weathergen::compiler is '\${library}' (\${type}), not the shared library")
-endif()
-add_executable(app main.cpp)
-target_link_libraries(app PRIVATE weathergen::compiler)
-CMAKE
-printf '#include <weathergen/weathergen.hpp>\nint main() { return weathergen::version().empty(); }\n' \
-  >"$tmp/subdirectory/main.cpp"
-quiet "configuring a project that add_subdirectory()s weathergen" \
-  "$cmake" -S "$tmp/subdirectory" -B "$tmp/subdirectory/build" -G Ninja -DCMAKE_MAKE_PROGRAM="$ninja" \
-  -DCMAKE_CXX_COMPILER="$cxx"
-quiet "compiling against weathergen::compiler from add_subdirectory()" \
-  "$ninja" -C "$tmp/subdirectory/build" CMakeFiles/app.dir/main.cpp.o
-commands=$("$ninja" -C "$tmp/subdirectory/build" -t commands app)
-grep -q 'libweathergen\.so' <<<"$commands" || fail "app does not link libweathergen.so:"$'\n'"$commands"
-compile_line=$(grep -- '-o CMakeFiles/app.dir/main.cpp.o' <<<"$commands")
-if grep -q -- "-I$source_dir " <<<"$compile_line"; then
-  fail "weathergen::compiler exposes the whole source tree: $compile_line"
-fi
-if "$ninja" -C "$tmp/subdirectory/build" -t targets all | grep -q weathergen_unit_tests; then
-  fail "add_subdirectory(weathergen) builds weathergen's tests by default"
-fi
+# Both frames are 256x256 PNGs, and the weather changed the picture.
+for state in dry snow; do
+  png=$out/deferred-$state.png
+  [[ -s "$png" ]] || fail "engine_plugin wrote no $png"
+  header=$(head -c 24 "$png" | od -An -tx1 | tr -d ' \n')
+  [[ $header == 89504e470d0a1a0a0000000d494844520000010000000100 ]] ||
+    fail "$png is not a 256x256 PNG (header $header)"
+done
+cmp -s "$out/deferred-dry.png" "$out/deferred-snow.png" && fail "the snowy frame is the dry frame"
 
-echo "engine_plugin: library, header and config installed; pipelines built from the reflection; add_subdirectory works"
+# The glue moved the surface's resources with its macros, in both languages.
+for glue in gbuffer.vert.glsl gbuffer.frag.glsl gbuffer.vert.hlsl gbuffer.frag.hlsl; do
+  for define in 'WG_WEATHER_SET 1' 'WG_SET_rock 2' 'WG_BINDING_WeatherBlock 2' 'WG_NO_SKY_EXPOSURE_MAP'; do
+    grep -qx "#define $define" "$out/glue/$glue" || fail "$glue does not #define $define"
+  done
+done
+
+echo "engine_plugin: G-buffer glue from the reflection, resources moved by the WG_ macros, own lights; weather from weathergen::weather; snow on top only; HLSL matches GLSL"
