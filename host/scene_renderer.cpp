@@ -1,5 +1,6 @@
 #include "host/scene_renderer.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <set>
 #include <stdexcept>
@@ -197,7 +198,7 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
 // neutral, unless the request turns that off.
 std::vector<MaterialResources*> SceneRenderer::materialsFor(const RenderRequest& request) {
   const WeatherLevels& levels = request.weather.levels;
-  bool neutral = levels.snow <= 0.f && levels.wetness <= 0.f && levels.moss <= 0.f && levels.frost <= 0.f && levels.puddles <= 0.f;
+  bool neutral = std::all_of(kLevelMembers.begin(), kLevelMembers.end(), [&](auto level) { return levels.*level <= 0.f; });
   std::optional<std::string> preset = request.weatherPreset;
   if (!preset && neutral && request.unweatheredVariantWhenNeutral) preset = "none";
   std::vector<MaterialResources*> mats;

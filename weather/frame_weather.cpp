@@ -18,11 +18,7 @@ void forEachWeatherMember(Weather& weather, Frame& frame, Visit visit) {
   visit(weather.conditions.sunIntensity, frame.sunIntensity);
   visit(weather.conditions.sunMelt, frame.sunMelt);
   visit(weather.time, frame.time);  // double in the simulation, float in the block
-  visit(weather.levels.snow, frame.snowLevel);
-  visit(weather.levels.wetness, frame.wetnessLevel);
-  visit(weather.levels.moss, frame.mossLevel);
-  visit(weather.levels.frost, frame.frostLevel);
-  visit(weather.levels.puddles, frame.puddleLevel);
+  for (std::size_t i = 0; i < kWeatherLevels.size(); ++i) visit(weather.levels.*kLevelMembers[i], frame.*kWeatherLevels[i].frame);
 }
 
 }  // namespace

@@ -222,9 +222,8 @@ WeatherDynamics weatherDynamics(const WeatherConditions& conditions, const Weath
 
 void advanceWeather(WeatherState& state, double seconds, const WeatherRates& rates) {
   WeatherLevels& l = state.levels;
-  for (float* level : {&l.snow, &l.wetness, &l.moss, &l.frost, &l.puddles, &l.rainMemory}) {
-    *level = sanitizedLevel(*level);
-  }
+  for (float WeatherLevels::*level : kLevelMembers) l.*level = sanitizedLevel(l.*level);
+  l.rainMemory = sanitizedLevel(l.rainMemory);
   if (!std::isfinite(state.time)) state.time = 0.0;
   if (!std::isfinite(seconds) || seconds <= 0.0) return;
 

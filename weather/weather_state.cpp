@@ -16,7 +16,7 @@ std::string number(double x) {
   return out.str();
 }
 
-std::string checkRange(const char* name, float value, float lo, float hi) {
+std::string checkRange(std::string_view name, float value, float lo, float hi) {
   if (!std::isfinite(value))
     return std::string(name) + " = " + number(value) + " is not a finite number";
   if (value < lo || value > hi) {
@@ -27,7 +27,7 @@ std::string checkRange(const char* name, float value, float lo, float hi) {
 }
 
 // A value against its frame field's accepted range: one table holds every range.
-std::string checkField(const char* label, std::string_view field, float value) {
+std::string checkField(std::string_view label, std::string_view field, float value) {
   const FrameField* f = findFrameField(field);
   if (!f) throw std::logic_error("no frame field " + std::string(field));
   return checkRange(label, value, f->min, f->max);
@@ -61,15 +61,11 @@ std::string validate(const WeatherConditions& c) {
 std::string validate(const WeatherState& s) {
   if (std::string error = validate(s.conditions); !error.empty()) return error;
   if (!std::isfinite(s.time)) return "time = " + number(s.time) + " is not a finite number";
-  const WeatherLevels& l = s.levels;
-  for (std::string error :
-       {checkField("snow", "snowLevel", l.snow), checkField("wetness", "wetnessLevel", l.wetness),
-        checkField("moss", "mossLevel", l.moss), checkField("frost", "frostLevel", l.frost),
-        checkField("puddles", "puddleLevel", l.puddles),
-        checkRange("rainMemory", l.rainMemory, 0.0f, 1.0f)}) {  // simulation state, not a frame field
-    if (!error.empty()) return error;
-  }
-  return {};
+  for (std::size_t i = 0; i < kWeatherLevels.size(); ++i)
+    if (std::string error = checkField(kWeatherLevels[i].name, kWeatherLevels[i].frameField, s.levels.*kLevelMembers[i]);
+        !error.empty())
+      return error;
+  return checkRange("rainMemory", s.levels.rainMemory, 0.0f, 1.0f);  // simulation state, not a frame field
 }
 
 }  // namespace wg

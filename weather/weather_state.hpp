@@ -6,6 +6,7 @@
 #include <string>
 
 #include "nodes/frame_fields.hpp"
+#include "nodes/weather_levels.hpp"
 
 namespace wg {
 
@@ -44,6 +45,10 @@ struct WeatherLevels {
   // rain but not to a passing shower. Simulation state, not a material input.
   float rainMemory = 0.0f;
 };
+
+// Each level of nodes/weather_levels.hpp's table, in its order.
+inline constexpr std::array<float WeatherLevels::*, kWeatherLevels.size()> kLevelMembers = {
+    &WeatherLevels::snow, &WeatherLevels::wetness, &WeatherLevels::moss, &WeatherLevels::frost, &WeatherLevels::puddles};
 
 struct WeatherState {
   WeatherConditions conditions;

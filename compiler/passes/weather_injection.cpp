@@ -8,6 +8,7 @@
 
 #include "compiler/ir_node_builder.hpp"
 #include "compiler/pass_pipeline.hpp"
+#include "nodes/weather_levels.hpp"
 #include "nodes/weather_model.hpp"
 
 namespace wg {
@@ -276,16 +277,22 @@ class WeatherInjector {
   std::optional<Operand> noise_, windFlow_;
 };
 
-}  // namespace
+// Every weather level's uniform: while all are 0 the weather nodes leave the material as it was.
+const std::vector<std::string>& weatherLevelUniforms() {
+  static const std::vector<std::string> kUniforms = [] {
+    std::vector<std::string> uniforms;
+    for (const WeatherLevel& level : kWeatherLevels) uniforms.push_back("frame_" + std::string(level.frameField));
+    return uniforms;
+  }();
+  return kUniforms;
+}
 
-// Every weather level: while all are 0 the weather nodes leave the material as it was.
-constexpr std::string_view kWeatherLevels[] = {"frame_snowLevel", "frame_wetnessLevel", "frame_mossLevel",
-                                               "frame_frostLevel", "frame_puddleLevel"};
+}  // namespace
 
 void injectWeather(IrGraph& graph) {
   if (!graph.weather.active()) return;
   graph.unweathered = graph.outputs;
-  graph.weatherGuard.assign(std::begin(kWeatherLevels), std::end(kWeatherLevels));
+  graph.weatherGuard.assign(weatherLevelUniforms().begin(), weatherLevelUniforms().end());
   WeatherInjector(graph).run();
 }
 
