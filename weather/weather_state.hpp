@@ -2,6 +2,7 @@
 // (or a scripted timeline) sets, the simulated clock, and the levels the simulation
 // accumulates from them. Plain data so it can be copied into a uniform buffer as is.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -49,6 +50,8 @@ struct WeatherLevels {
 // Each level of nodes/weather_levels.hpp's table, in its order.
 inline constexpr std::array<float WeatherLevels::*, kWeatherLevels.size()> kLevelMembers = {
     &WeatherLevels::snow, &WeatherLevels::wetness, &WeatherLevels::moss, &WeatherLevels::frost, &WeatherLevels::puddles};
+static_assert(std::ranges::none_of(kLevelMembers, [](auto member) { return member == nullptr; }),
+              "every weather level of nodes/weather_levels.hpp needs its member here");
 
 struct WeatherState {
   WeatherConditions conditions;
