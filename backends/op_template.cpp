@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "backends/library_functions.hpp"
+#include "backends/surface_names.hpp"
 #include "nodes/op_registry.hpp"
 
 namespace wg {
@@ -20,7 +21,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kFixedSym
     {"worldNormal", "wg_worldNormal"},
     {"worldTangent", "wg_worldTangent"},
     {"vertexColor", "wg_vertexColor"},
-    {"time", "frame_time"},
+    {"time", "weather_time"},  // the weather block's member, as surfaces spell it
 }};
 
 constexpr std::array<std::pair<std::string_view, TemplatePiece::Kind>, 6> kSlotSymbols = {{
@@ -49,13 +50,13 @@ TemplatePiece keyPiece(const OpDef& op, std::string_view key) {
   return {TemplatePiece::Kind::Text, {}, 0};  // refused by op_template_check; writes nothing
 }
 
-// Every registered op's template in both languages, split at first use.
+// Every registered op's template in both languages, spelled and split at first use.
 struct SplitTemplates {
-  std::array<std::unordered_map<const OpDef*, OpTemplate>, 2> byLanguage;
+  std::array<std::unordered_map<const OpDef*, SpelledOpTemplate>, 2> byLanguage;
   SplitTemplates() {
     for (ShaderLanguage language : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
       for (const OpDef* op : allOps())
-        byLanguage[static_cast<std::size_t>(language)].emplace(op, splitOpTemplate(*op, syntaxFor(language).opCode(*op)));
+        byLanguage[static_cast<std::size_t>(language)].try_emplace(op, *op, syntaxFor(language).opCode(*op));
   }
 };
 
@@ -76,11 +77,14 @@ OpTemplate splitOpTemplate(const OpDef& op, std::string_view code) {
   return split;
 }
 
+SpelledOpTemplate::SpelledOpTemplate(const OpDef& op, std::string_view languageCode)
+    : code(renameTokens(languageCode, surfaceFrameNames())), split(splitOpTemplate(op, code)) {}
+
 const OpTemplate* registeredOpTemplate(const ShaderSyntax& syntax, const OpDef& op) {
   static const SplitTemplates split;
   const auto& templates = split.byLanguage[static_cast<std::size_t>(syntax.language())];
   auto it = templates.find(&op);
-  return it == templates.end() ? nullptr : &it->second;
+  return it == templates.end() ? nullptr : &it->second.split;
 }
 
 }  // namespace wg

@@ -3,6 +3,7 @@
 // instead of searching the template text for braces and names at every node.
 #pragma once
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -32,8 +33,17 @@ struct OpTemplate {
   std::vector<std::string_view> calls;  // the library functions it calls
 };
 
-// The op's template in the syntax's language, split once for every registered op;
-// null for an op outside the registry (tests make some), which splitOpTemplate splits.
+// An op's template in one language with the frame's names as surfaces spell them
+// (backends/surface_names.hpp), and its split, which views that text.
+struct SpelledOpTemplate {
+  SpelledOpTemplate(const OpDef& op, std::string_view languageCode);
+  SpelledOpTemplate(const SpelledOpTemplate&) = delete;
+  std::string code;
+  OpTemplate split;
+};
+
+// The op's spelled template in the syntax's language, split once for every registered
+// op; null for an op outside the registry (tests make some), which the caller spells.
 const OpTemplate* registeredOpTemplate(const ShaderSyntax& syntax, const OpDef& op);
 OpTemplate splitOpTemplate(const OpDef& op, std::string_view code);
 

@@ -18,7 +18,9 @@ struct StageSource {
   ShaderStage stage = ShaderStage::Fragment;
   const MaterialInterface* interface = nullptr;
   std::vector<const ShaderLibrary*> libraries;  // dependency order
-  // Node statements, then the locals the frame reads: wg_baseColor, wg_metallic,
+  // Node statements, in the surface functions' names (frame members as
+  // backends/surface_names.hpp spells them, interpolants as wg_out./wg_in. fields),
+  // then the locals the frame reads: wg_baseColor, wg_metallic,
   // wg_roughness, wg_specular, wg_normal, wg_occlusion, wg_emissive, wg_opacity and the
   // wg_coverage_* terms (fragment), or wg_offset (vertex). The frame provides
   // wg_texcoord1 when the interface has the "texcoord1" input.

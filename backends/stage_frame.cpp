@@ -49,25 +49,20 @@ const std::vector<std::string_view>& surfaceFrameLibraryCalls(ShaderStage stage)
   return stage == ShaderStage::Vertex ? kVertex : kFragment;
 }
 
-void appendSurfaceVertexBody(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+SurfaceFrameCode surfaceFrameCode(const StageSource& s, const ShaderSyntax& syntax) {
   bool texcoord1 = s.interface->hasTexcoord1();
-  std::string prologue(kSurfaceVertexPrologue);
-  prologue += kSurfaceCamera;
-  if (texcoord1) prologue += "  vec2 wg_texcoord1 = wg_in.texcoord1;\n";
-  out += syntax.frameCode(prologue, ShaderStage::Vertex);
-  out += s.body;
-  std::string epilogue(kVertexEpilogue);
-  if (texcoord1) epilogue += "  v_texcoord1 = wg_texcoord1;\n";
-  out += syntax.frameCode(epilogue, ShaderStage::Vertex);
-}
-
-void appendSurfaceFragmentBody(std::string& out, const StageSource& s, const ShaderSyntax& syntax) {
+  if (s.stage == ShaderStage::Vertex) {
+    std::string prologue(kSurfaceVertexPrologue);
+    prologue += kSurfaceCamera;
+    if (texcoord1) prologue += "  vec2 wg_texcoord1 = wg_in.texcoord1;\n";
+    std::string epilogue(kVertexEpilogue);
+    if (texcoord1) epilogue += "  v_texcoord1 = wg_texcoord1;\n";
+    return {syntax.frameCode(prologue, s.stage), syntax.frameCode(epilogue, s.stage)};
+  }
   std::string prologue(kFragmentPrologue);
-  if (s.interface->hasTexcoord1()) prologue += "  vec2 wg_texcoord1 = v_texcoord1;\n";
+  if (texcoord1) prologue += "  vec2 wg_texcoord1 = v_texcoord1;\n";
   prologue += kSurfaceCamera;
-  out += syntax.frameCode(prologue, ShaderStage::Fragment);
-  out += s.body;
-  out += syntax.frameCode(kShadingNormal, ShaderStage::Fragment);
+  return {syntax.frameCode(prologue, s.stage), syntax.frameCode(kShadingNormal, s.stage)};
 }
 
 }  // namespace wg

@@ -9,12 +9,14 @@
 
 namespace wg {
 
-// A surface function's statements (--target surface): geometry from the host's input
-// struct wg_in, the body, then (vertex) the varyings or (fragment) wg_N, the shading
-// normal. The varyings keep their v_ names here; the surface writer renames them to
-// the structs' fields. No camera transform, no lighting.
-void appendSurfaceVertexBody(std::string& out, const StageSource& source, const ShaderSyntax& syntax);
-void appendSurfaceFragmentBody(std::string& out, const StageSource& source, const ShaderSyntax& syntax);
+// A surface function's statements around its body: geometry from the host's input
+// struct wg_in before it; after it, (vertex) the varyings or (fragment) wg_N, the
+// shading normal. The varyings keep their v_ names here; the surface writer renames
+// them to the structs' fields. No camera transform, no lighting.
+struct SurfaceFrameCode {
+  std::string before, after;
+};
+SurfaceFrameCode surfaceFrameCode(const StageSource& source, const ShaderSyntax& syntax);
 const std::vector<std::string_view>& surfaceFrameLibraryCalls(ShaderStage stage);
 
 }  // namespace wg

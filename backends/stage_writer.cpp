@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 
 #include "backends/op_template.hpp"
@@ -85,9 +86,9 @@ class StageWriter {
     body += "  }\n";
   }
 
-  // The interpolants, in the target language's spelling of this stage's varying.
+  // The interpolants, as the surface functions' output (vertex) or input (fragment) fields.
   std::string interpolantVariable(std::size_t k) const {
-    return syntax_.stageVariable(mi_.varyings[mi_.interpolantVaryings[k]].identifier, stage_);
+    return (stage_ == ShaderStage::Vertex ? "wg_out." : "wg_in.") + mi_.varyings[mi_.interpolantVaryings[k]].name;
   }
   // The vertex stage writes each interpolant where its node was emitted: the weather's
   // inside the weather branch, after a zero for when the branch is skipped.
@@ -199,8 +200,8 @@ class StageWriter {
     if (interpolated_[index]) return emitInterpolantRead(index, body, indent);
     const OpDef& op = *node.op;
     const OpTemplate* pieces = registeredOpTemplate(syntax_, op);
-    OpTemplate unregistered;
-    if (!pieces) pieces = &(unregistered = splitOpTemplate(op, syntax_.opCode(op)));
+    std::optional<SpelledOpTemplate> unregistered;
+    if (!pieces) pieces = &unregistered.emplace(op, syntax_.opCode(op)).split;
     body += indent;
     body += syntax_.typeName(node.valueType);
     body += ' ';

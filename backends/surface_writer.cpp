@@ -12,6 +12,7 @@
 #include "backends/source_text.hpp"
 #include "backends/stage_frame.hpp"
 #include "backends/stage_writer.hpp"
+#include "backends/surface_names.hpp"
 #include "backends/token_renames.hpp"
 #include "compiler/pbr_output.hpp"
 #include "nodes/weather_maps.hpp"
@@ -206,10 +207,8 @@ class SurfaceWriter {
   }
   // An embedding host declares frame_debugView; any other surface is the lit view.
   static TokenRenames libraryRenames(bool es, bool embedded) {
-    TokenRenames r;
+    TokenRenames r = surfaceFrameNames();
     r.combineSamplers = es;
-    for (const auto& m : surfaceWeatherBlock().members) r.bare["frame_" + m.name] = m.identifier;
-    r.bare["frame_cameraPosition"] = "wg_cameraPosition";
     if (!embedded) r.bare["frame_debugView"] = "0u";
     return r;
   }
@@ -284,14 +283,26 @@ class SurfaceWriter {
     bool vertex = stage.stage == ShaderStage::Vertex;
     const SurfaceStruct& in = vertex ? s_.vertexInput : s_.fragmentInput;
     const SurfaceStruct& result = vertex ? s_.vertexOutput : s_.fragmentOutput;
-    std::string code;
-    if (vertex) appendSurfaceVertexBody(code, stage, syntax_);
-    else appendSurfaceFragmentBody(code, stage, syntax_);
     appendText(out, result.name, ' ', vertex ? s_.vertexFunction : s_.fragmentFunction, '(', in.name, " wg_in) {\n  ",
                result.name, " wg_out;\n");
-    out += renameTokens(code, stageRenames(stage.stage, embedded));
+    const TokenRenames& names = stageRenames(stage.stage, embedded);
+    const SurfaceFrameCode frame = surfaceFrameCode(stage, syntax_);
+    out += renamedFrameCode(frame.before, names);
+    // The body is written in the surface's names already; GLSL ES combines its samplers.
+    out += es() ? renameTokens(stage.body, names) : stage.body;
+    out += renamedFrameCode(frame.after, names);
     if (!vertex) appendFragmentResults(out, result);
     out += "  return wg_out;\n}\n";
+  }
+
+  // The frame code comes in a handful of texts per stage table: each is renamed once.
+  static const std::string& renamedFrameCode(const std::string& code, const TokenRenames& names) {
+    static std::mutex mutex;
+    static std::map<std::pair<const TokenRenames*, std::string>, std::string, std::less<>> renamed;
+    std::lock_guard lock(mutex);
+    auto [it, made] = renamed.try_emplace({&names, code});
+    if (made) it->second = renameTokens(code, names);
+    return it->second;
   }
 
   static bool callsPrelude(const StageSource& stage) {

@@ -8,6 +8,8 @@
 
 #include "compiler/ir_node_builder.hpp"
 #include "compiler/pass_pipeline.hpp"
+#include "compiler/material_interface.hpp"
+#include "nodes/frame_fields.hpp"
 #include "nodes/weather_levels.hpp"
 #include "nodes/weather_model.hpp"
 
@@ -281,7 +283,7 @@ class WeatherInjector {
 const std::vector<std::string>& weatherLevelUniforms() {
   static const std::vector<std::string> kUniforms = [] {
     std::vector<std::string> uniforms;
-    for (const WeatherLevel& level : kWeatherLevels) uniforms.push_back("frame_" + std::string(level.frameField));
+    for (const WeatherLevel& level : kWeatherLevels) uniforms.push_back(frameMemberIdentifier(*findFrameField(level.frameField)));
     return uniforms;
   }();
   return kUniforms;

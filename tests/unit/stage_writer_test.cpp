@@ -38,7 +38,7 @@ TEST(StageWriter, WeatherGuardComesFromTheIr) {
   EXPECT_NE(fragmentText(ir).find("if (weather_snowLevel + weather_wetnessLevel + weather_mossLevel + "
                                   "weather_frostLevel + weather_puddleLevel > 0.0) {"),
             std::string::npos);
-  ir.weatherGuard = {"frame_snowLevel"};
+  ir.weatherGuard = {"weather_snowLevel"};
   std::string text = fragmentText(ir);
   EXPECT_NE(text.find("if (weather_snowLevel > 0.0) {"), std::string::npos);
   EXPECT_EQ(text.find("weather_wetnessLevel +"), std::string::npos);
