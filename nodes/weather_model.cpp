@@ -53,6 +53,16 @@ constexpr float kTilePerRippleCell = 1.f / static_cast<float>(kRippleCells);
 constexpr float kRippleStrength = 0.25f;
 // Temperatures (C) over which rain turns into wetness (eq. 3.15's T > 0, made continuous).
 constexpr float kWetTemperatureRamp = 1.f;
+// Thaw patches: snow melting above 0 C retreats in patches shaped by the noise texture's
+// flow channel (4 m cells) with a fifth of the transition channel (1.5/m) for ragged
+// edges, its contrast stretched so the patches take the same range of levels as eq.
+// 3.14's transition (about 2 % to 98 % of the noise in [0, 1]); a patch's edge is where
+// eq. 3.14 gives half cover, softened over 0.15 of its value either side (the shader
+// widens it by half the pixel's footprint in metres, up to 0.5, so distant patches
+// do not alias; a point has no footprint).
+constexpr float kThawShapeWeight = 0.8f;
+constexpr float kThawContrast = 2.3f;
+constexpr float kThawEdge = 0.15f;
 // Precipitation over which the flowing-water normal fades in (eq. 3.15's P > 0).
 constexpr float kRainFlowRamp = 0.1f;
 // Maps a typical diffuse reflectance (0.1-0.5) across each measured band.
@@ -138,6 +148,12 @@ float terrainOrientation(glm::vec3 slope, glm::vec3 normal, float tangentNormalZ
 }
 
 float transition(float noise, float progress) { return clamp01(noise - 1.f + 3.f * progress); }
+
+float thawPatches(float noise, float patchNoise, float progress) {
+  float shape = lerp(noise, patchNoise, kThawShapeWeight);
+  float stretched = clamp01(0.5f + kThawContrast * (shape - 0.5f));
+  return smoothStep(0.5f - kThawEdge, 0.5f + kThawEdge, transition(stretched, progress));
+}
 
 float prediction(float inc, float sun, float heightTerm, float terrain, float wind, glm::vec4 w) {
   return clamp01(inc * (w.x * sun * w.z * heightTerm + w.w * terrain + w.y * wind));
@@ -241,10 +257,13 @@ float shapedPrediction(const FrameState& frame, glm::vec3 normal, glm::vec3 deta
 }  // namespace
 
 float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
-                   glm::vec3 diffuse, float terrain, float windFlow, float exposure, const SnowShape& shape, float noise) {
+                   glm::vec3 diffuse, float terrain, float windFlow, float exposure, const SnowShape& shape, float noise,
+                   float patchNoise) {
   float level = clamp01(frame.snowLevel) * clamp01(exposure);
   float fp = shapedPrediction(frame, normal, detailNormal, position, terrain, windFlow, shape);
-  return transition(0.5f * noise + 0.5f * (1.f - detailMask(diffuse)), fp * level);
+  float settling = transition(0.5f * noise + 0.5f * (1.f - detailMask(diffuse)), fp * level);
+  float melting = smoothStep(0.f, kWetTemperatureRamp, frame.temperature);
+  return lerp(settling, thawPatches(noise, patchNoise, fp * level), melting);
 }
 
 glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float windFlow, float exposure,

@@ -65,6 +65,10 @@ glm::vec3 terrainSlope(float h0, float hShiftU, float hShiftV, float intensity);
 // Eq. 3.13: ((slope * (1, 1, 0)) . N) (TN . (0, 0, 1)) intensity, the slope's u, v -> world x, z.
 float terrainOrientation(glm::vec3 slope, glm::vec3 normal, float tangentNormalZ, float intensity);
 float transition(float noise, float progress);  // eq. 3.14: Clamp(noise - 1 + 3 p)
+// Eq. 3.14 for melting snow: patches, not a partial cover everywhere. The shape (mostly
+// patchNoise, the noise texture's flow channel) is covered where eq. 3.14 gives more than
+// half cover, with a soft edge; 0 at progress 0, 1 from progress 2/3.
+float thawPatches(float noise, float patchNoise, float progress);
 // Eq. 3.1, grouped so that inclination gates every other term:
 // Clamp(inc * (w1 sun * w3 height + w4 terrain + w2 wind)).
 float prediction(float inc, float sun, float heightTerm, float terrain, float wind, glm::vec4 weights);
@@ -104,8 +108,12 @@ struct SnowShape {
   glm::vec4 terms{1.f, 1.f, 1.f, 1.f};
 };
 // `windFlow` is eq. 3.6's f_wind at the point (windFlow()), read where the wind term is on.
+// Settling snow (below 0 C) covers as eq. 3.14 prints; melting snow (above, over the 1 C
+// ramp of eq. 3.15) in thawPatches(noise, patchNoise), patchNoise the shared lookup's
+// flow channel (noiseAt(position).y).
 float snowCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
-                   glm::vec3 diffuse, float terrain, float windFlow, float exposure, const SnowShape& shape, float noise);
+                   glm::vec3 diffuse, float terrain, float windFlow, float exposure, const SnowShape& shape, float noise,
+                   float patchNoise);
 glm::vec3 snowOffset(const FrameState& frame, glm::vec3 normal, glm::vec3 position, float windFlow, float exposure,
                      const SnowShape& shape, float maxSnowHeight, float noise);
 float mossCoverage(const FrameState& frame, glm::vec3 normal, glm::vec3 position, glm::vec3 diffuse,

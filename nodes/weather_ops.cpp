@@ -286,17 +286,21 @@ void appendWeatherOps(std::vector<OpDef>& ops) {
   // Effect ops: each early-outs while its level is 0.
   ops.push_back(weatherOp("weather_snow_coverage",
                           "snow cover: eq. 3.1 prediction (windFlow: eq. 3.6's f_wind, weather_wind_flow), eq. 3.14 noisy "
-                          "edges, detail mask",
+                          "edges, detail mask; melting snow in patches (patchNoise: the shared noise's flow channel), "
+                          "their edges widened by the pixel footprint where antiAliasing is 1 (the CPU's point has none)",
                           {vec3Required("normal"), vec3Required("detailNormal"), vec3Required("position"), vec3Required("diffuse"),
                            floatPort("terrain", 0.f), floatPort("windFlow", 0.f), floatPort("exposure", 1.f, 0.f, 1.f),
                            vec4Port("weights", kDefaultShape.weights), vec4Port("shape", kDefaultShapeVector),
-                           vec4Port("terms", kDefaultShape.terms), floatRequired("noise")},
+                           vec4Port("terms", kDefaultShape.terms), floatRequired("noise"), floatPort("patchNoise", 0.5f, 0.f, 1.f),
+                           floatPort("antiAliasing", 0.f, 0.f, 1.f)},
                           F,
                           "wg_snow_coverage({normal}, {detailNormal}, {position}, {diffuse}, {terrain}, {windFlow}, {exposure}, "
-                          "{weights}, {shape}, {terms}, {noise})",
+                          "{weights}, {shape}, {terms}, {noise}, {patchNoise}, "
+                          "{antiAliasing} > 0.5 ? fwidth({position}.xz) : vec2(0.0))",
                           [](const Value* in, const EvalContext& c) {
                             return Value::scalar(snowCoverage(*c.frame, v3(in[0]), v3(in[1]), v3(in[2]), v3(in[3]), in[4].x(),
-                                                              in[5].x(), in[6].x(), shapeFrom(in[7], in[8], &in[9]), in[10].x()));
+                                                              in[5].x(), in[6].x(), shapeFrom(in[7], in[8], &in[9]), in[10].x(),
+                                                              in[11].x()));
                           },
                           V));
   ops.push_back(weatherOp("weather_snow_offset", "snow displacement along the normal (eq. 3.10), vertex stage",

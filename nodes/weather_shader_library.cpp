@@ -64,6 +64,17 @@ float wg_terrain_orientation(const vec3 slope, const vec3 n, const float tangent
   return dot(slope.xy, n.xz) * tangentNormalZ * intensity;
 }
 float wg_transition(const float noise, const float p) { return wg_clamp01(noise - 1.0 + 3.0 * p); }  // eq. 3.14
+// Eq. 3.14 for melting snow: patches shaped mostly by patchNoise (the flow channel, 4 m
+// cells), stretched to eq. 3.14's range of levels, covered where it gives half cover.
+// The soft edge widens with the pixel's footprint (metres, fwidth of the world xz), so
+// distant patches blur instead of aliasing; at most 0.5, so level 0 stays 0. Only the
+// lit frame: AOVs show a point's value, as the CPU (no footprint) does.
+float wg_thaw_patches(const float noise, const float patchNoise, const float p, const vec2 footprint) {
+  float stretched = wg_clamp01(0.5 + 2.3 * (wg_lerp(noise, patchNoise, 0.8) - 0.5));
+  float blur = 0.5 * max(footprint.x, footprint.y) * float(frame_debugView == 0u);
+  float edge = min(0.15 + blur, 0.5);
+  return smoothstep(0.5 - edge, 0.5 + edge, wg_transition(stretched, p));
+}
 // Eq. 3.1: inclination gates every other term.
 float wg_prediction(const float inc, const float sun, const float h, const float terrain, const float wind,
                     const vec4 w) {
@@ -150,13 +161,18 @@ float wg_shaped_prediction(const vec3 n, const vec3 nd, const vec3 p, const floa
 // No effect branches on its level: at level 0 its transition (eq. 3.14) of a noise of at
 // most 1 is exactly 0, and the weather's one uniform branch skips the lot while every
 // level is 0.
-// `noise` is the shared transition noise (eq. 3.14's NoiseMap, wg_weather_noise_at(p).x).
+// `noise` is the shared transition noise (eq. 3.14's NoiseMap, wg_weather_noise_at(p).x),
+// `patchNoise` its flow channel (.y), `footprint` fwidth of the world xz. Settling snow
+// covers as eq. 3.14 prints; melting snow (above 0 C, eq. 3.15's 1 C ramp) retreats in
+// patches.
 float wg_snow_coverage(const vec3 n, const vec3 nd, const vec3 p, const vec3 diffuse, const float terrain,
                        const float windFlow, const float exposure, const vec4 w, const vec4 shape, const vec4 terms,
-                       const float noise) {
+                       const float noise, const float patchNoise, const vec2 footprint) {
   float level = wg_clamp01(frame_snowLevel) * wg_clamp01(exposure);
   float fp = wg_shaped_prediction(n, nd, p, terrain, windFlow, w, shape, terms);
-  return wg_transition(0.5 * noise + 0.5 * (1.0 - wg_detail_mask(diffuse)), fp * level);
+  float settling = wg_transition(0.5 * noise + 0.5 * (1.0 - wg_detail_mask(diffuse)), fp * level);
+  float melting = smoothstep(0.0, 1.0, frame_temperature);
+  return wg_lerp(settling, wg_thaw_patches(noise, patchNoise, fp * level, footprint), melting);
 }
 vec3 wg_snow_offset(const vec3 n, const vec3 p, const float windFlow, const float exposure, const vec4 w,
                     const vec4 shape, const vec4 terms, const float maxSnowHeight, const float noise) {

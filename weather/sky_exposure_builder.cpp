@@ -25,9 +25,10 @@ struct TexelGrid {
 float edge(glm::vec2 a, glm::vec2 b, glm::vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
 
 // Raises every texel whose centre lies in the triangle's xz projection to the triangle's
-// height there; a triangle seen edge-on from above covers nothing.
-void raiseUnder(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const TexelGrid& grid,
-                std::vector<float>& heights) {
+// height there, and lowers its lowest surface to it; a triangle seen edge-on from above
+// covers nothing.
+void coverTexels(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const TexelGrid& grid,
+                 SkyExposureHeights& map) {
   const glm::vec2 pa(a.x, a.z), pb(b.x, b.z), pc(c.x, c.z);
   const float area = edge(pa, pb, pc);
   if (!(std::abs(area) > 1e-12f)) return;
@@ -39,8 +40,10 @@ void raiseUnder(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, cons
       const glm::vec2 p = grid.centre(column, row);
       const float wa = edge(pb, pc, p) / area, wb = edge(pc, pa, p) / area, wc = edge(pa, pb, p) / area;
       if (wa < 0.f || wb < 0.f || wc < 0.f) continue;
-      float& texel = heights[std::size_t(row) * grid.resolution + column];
-      texel = std::max(texel, wa * a.y + wb * b.y + wc * c.y);
+      const std::size_t t = std::size_t(row) * grid.resolution + column;
+      const float y = wa * a.y + wb * b.y + wc * c.y;
+      map.heights[t] = std::max(map.heights[t], y);
+      map.lowest[t] = std::min(map.lowest[t], y);
     }
 }
 
@@ -54,11 +57,14 @@ SkyExposureHeights rasteriseFromAbove(std::span<const OccluderTriangles> meshes,
   const glm::vec2 size = glm::max(hi - lo, glm::vec2(1e-6f));
   map.region = glm::vec4(lo.x, lo.y, 1.f / size.x, 1.f / size.y);
   map.heights.assign(std::size_t(resolution) * resolution, floor);
+  map.lowest.assign(map.heights.size(), std::numeric_limits<float>::max());
   const TexelGrid grid{lo, size / float(resolution), resolution};
   for (const OccluderTriangles& mesh : meshes)
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
-      raiseUnder(mesh.positions[mesh.indices[i]], mesh.positions[mesh.indices[i + 1]],
-                 mesh.positions[mesh.indices[i + 2]], grid, map.heights);
+      coverTexels(mesh.positions[mesh.indices[i]], mesh.positions[mesh.indices[i + 1]],
+                  mesh.positions[mesh.indices[i + 2]], grid, map);
+  for (float& y : map.lowest)
+    if (y == std::numeric_limits<float>::max()) y = floor;  // nothing covers it, as `heights`
   return map;
 }
 
@@ -76,7 +82,8 @@ std::pair<glm::vec3, glm::vec3> occluderBounds(std::span<const OccluderTriangles
 SkyExposureHeights buildSkyExposure(std::span<const OccluderTriangles> meshes, glm::vec3 lo, glm::vec3 hi,
                                     int resolution) {
   SkyExposureHeights map = rasteriseFromAbove(meshes, {lo.x, lo.z}, {hi.x, hi.z}, lo.y, resolution);
-  map.heights = reachUnderOverhangs(map.heights, resolution, resolution * map.region.z, resolution * map.region.w);
+  map.heights = reachUnderOverhangs(map.heights, map.lowest, resolution, resolution * map.region.z,
+                                    resolution * map.region.w);
   return map;
 }
 

@@ -1,6 +1,8 @@
 // The sky-exposure map from meshes, on the CPU (docs/weather-model.md, "Sky exposure"):
 // per texel the height of the highest triangle above the texel's centre, as a depth
-// render from above would give, then lowered under overhangs (sky_exposure_reach.hpp).
+// render from above would give, then lowered under overhangs (sky_exposure_reach.hpp)
+// by how far the highest stands above the lowest: the host should hand over its ground
+// too, or an overhang is measured from its own underside.
 // The reference host and engines (weathergen::weather) build it the same way.
 #pragma once
 #include <array>
@@ -24,6 +26,7 @@ struct SkyExposureHeights {
   glm::vec4 region{0.f};  // origin x, origin z, 1 / size x, 1 / size z
   float floor = 0.f;      // the height where nothing is above
   std::vector<float> heights;
+  std::vector<float> lowest;  // the lowest surface above each texel (floor where none): what an overhang stands over
 };
 
 // The whole builder over the box [lo, hi]: x and z give the map's region, lo.y its

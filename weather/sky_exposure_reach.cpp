@@ -2,75 +2,102 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "nodes/weather_model.hpp"
 
 namespace wg {
 
 namespace {
 
-constexpr float kReachStep = 0.5f;  // metres between the eroded maps a texel picks from
+constexpr double kFar = 1e30;  // squared distance of a texel with no open texel in its line yet
 
-// The minimum over [i - r, i + r] (clamped) for every i of a line: van Herk / Gil-Werman,
-// prefix and suffix minima in blocks of 2r + 1, so the cost does not grow with r.
-void slidingMin(std::vector<float>& line, int r, std::vector<float>& prefix, std::vector<float>& suffix) {
-  const int n = static_cast<int>(line.size()), w = 2 * r + 1;
-  if (r <= 0 || n == 0) return;
-  prefix.resize(line.size());
-  suffix.resize(line.size());
-  for (int i = 0; i < n; ++i) prefix[i] = i % w == 0 ? line[i] : std::min(prefix[i - 1], line[i]);
-  for (int i = n - 1; i >= 0; --i) suffix[i] = (i % w == w - 1 || i == n - 1) ? line[i] : std::min(suffix[i + 1], line[i]);
-  for (int i = 0; i < n; ++i) line[i] = std::min(suffix[std::max(i - r, 0)], prefix[std::min(i + r, n - 1)]);
+// Squared distances along one line of n texels `spacing` metres apart, to the nearest
+// texel whose cost is 0, given costs f (squared distances so far, kFar where unknown):
+// the lower envelope of parabolas (Felzenszwalb and Huttenlocher 2012), linear in n.
+// `stride` steps through the map, so rows and columns share it.
+void squaredDistancesAlong(double* line, int n, std::ptrdiff_t stride, double spacing, std::vector<double>& f,
+                           std::vector<int>& v, std::vector<double>& z) {
+  f.resize(static_cast<std::size_t>(n));
+  v.resize(static_cast<std::size_t>(n));
+  z.resize(static_cast<std::size_t>(n) + 1);
+  for (int q = 0; q < n; ++q) f[q] = line[q * stride];
+  auto at = [spacing](int q) { return q * spacing; };
+  auto meet = [&](int q, int p) {  // where the parabolas of q and p cross
+    return ((f[q] + at(q) * at(q)) - (f[p] + at(p) * at(p))) / (2.0 * (at(q) - at(p)));
+  };
+  int k = 0;
+  v[0] = 0;
+  z[0] = -std::numeric_limits<double>::infinity();
+  z[1] = std::numeric_limits<double>::infinity();
+  for (int q = 1; q < n; ++q) {
+    double s = meet(q, v[k]);
+    while (k > 0 && s <= z[k]) s = meet(q, v[--k]);
+    ++k;
+    v[k] = q;
+    z[k] = s;
+    z[k + 1] = std::numeric_limits<double>::infinity();
+  }
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[k + 1] < at(q)) ++k;
+    const double dx = at(q) - at(v[k]);
+    line[q * stride] = std::min(dx * dx + f[v[k]], kFar);
+  }
 }
 
-// The same down the columns of a row-major n x n map, all columns at once, so every
-// pass reads whole rows.
-void slidingMinColumns(std::vector<float>& map, int n, int r, std::vector<float>& prefix, std::vector<float>& suffix) {
-  const int w = 2 * r + 1;
-  if (r <= 0 || n == 0) return;
-  prefix.resize(map.size());
-  suffix.resize(map.size());
-  auto row = [n](std::vector<float>& m, int j) { return m.begin() + static_cast<std::ptrdiff_t>(j) * n; };
-  for (int j = 0; j < n; ++j) {
-    if (j % w == 0) std::copy_n(row(map, j), n, row(prefix, j));
-    else std::transform(row(map, j), row(map, j) + n, row(prefix, j - 1), row(prefix, j), [](float a, float b) { return std::min(a, b); });
-  }
-  for (int j = n - 1; j >= 0; --j) {
-    if (j % w == w - 1 || j == n - 1) std::copy_n(row(map, j), n, row(suffix, j));
-    else std::transform(row(map, j), row(map, j) + n, row(suffix, j + 1), row(suffix, j), [](float a, float b) { return std::min(a, b); });
-  }
-  for (int j = 0; j < n; ++j)
-    std::transform(row(suffix, std::max(j - r, 0)), row(suffix, std::max(j - r, 0)) + n, row(prefix, std::min(j + r, n - 1)),
-                   row(map, j), [](float a, float b) { return std::min(a, b); });
+// Metres from each texel centre to the nearest open texel centre (Euclidean).
+std::vector<double> distancesToOpen(const std::vector<bool>& open, int n, double texelX, double texelZ) {
+  std::vector<double> d(open.size());
+  for (std::size_t t = 0; t < open.size(); ++t) d[t] = open[t] ? 0.0 : kFar;
+  std::vector<double> f, z;
+  std::vector<int> v;
+  for (int j = 0; j < n; ++j) squaredDistancesAlong(d.data() + static_cast<std::ptrdiff_t>(j) * n, n, 1, texelX, f, v, z);
+  for (int i = 0; i < n; ++i) squaredDistancesAlong(d.data() + i, n, n, texelZ, f, v, z);
+  for (double& x : d) x = std::sqrt(x);
+  return d;
 }
 
-// The lowest height within rx texels along x and rz along z of each texel.
-std::vector<float> minFilter(const std::vector<float>& heights, int n, int rx, int rz) {
-  std::vector<float> out = heights, line(static_cast<std::size_t>(n)), prefix, suffix;
-  for (int j = 0; j < n; ++j) {
-    std::copy_n(out.begin() + static_cast<std::ptrdiff_t>(j) * n, n, line.begin());
-    slidingMin(line, rx, prefix, suffix);
-    std::copy(line.begin(), line.end(), out.begin() + static_cast<std::ptrdiff_t>(j) * n);
+float smoothUnit(float t) {
+  t = std::clamp(t, 0.f, 1.f);
+  return t * t * (3.f - 2.f * t);
+}
+
+// The occluder height over a point that gives it exposure e (weather::skyExposure falls
+// from 1 to 0 as the occluder rises), by bisection over its whole ramp.
+float shelterHeightFor(float e) {
+  float lo = 0.f, hi = 1.f;  // metres above the point; skyExposure is 0 by then
+  for (int i = 0; i < 24; ++i) {
+    const float mid = 0.5f * (lo + hi);
+    (weather::skyExposure(0.f, mid) > e ? lo : hi) = mid;
   }
-  slidingMinColumns(out, n, rz, prefix, suffix);
-  return out;
+  return lo;
 }
 
 }  // namespace
 
-std::vector<float> reachUnderOverhangs(const std::vector<float>& heights, int resolution, float texelsPerMetreX,
-                                       float texelsPerMetreZ, const ExposureReach& reach) {
-  const int steps = static_cast<int>(std::floor(reach.maxReach / kReachStep));
-  if (resolution <= 0 || steps <= 0 || heights.size() != static_cast<std::size_t>(resolution) * resolution) return heights;
-  auto eroded = [&](float metres) {
-    return minFilter(heights, resolution, static_cast<int>(metres * texelsPerMetreX), static_cast<int>(metres * texelsPerMetreZ));
-  };
-  // eroded[k]: the lowest height within k quarter metres; the last is the ground estimate.
-  std::vector<std::vector<float>> levels;
-  for (int k = 1; k <= steps; ++k) levels.push_back(eroded(static_cast<float>(k) * kReachStep));
-  const std::vector<float>& ground = levels.back();
-  std::vector<float> out = heights;
-  for (std::size_t t = 0; t < out.size(); ++t) {
-    int k = static_cast<int>(std::floor(reach.slant * (heights[t] - ground[t]) / kReachStep));
-    if (k > 0) out[t] = levels[static_cast<std::size_t>(std::min(k, steps) - 1)][t];
+std::vector<float> reachUnderOverhangs(const std::vector<float>& highest, const std::vector<float>& lowest,
+                                       int resolution, float texelsPerMetreX, float texelsPerMetreZ,
+                                       const ExposureReach& reach) {
+  const std::size_t texels = static_cast<std::size_t>(std::max(resolution, 0)) * std::max(resolution, 0);
+  if (resolution <= 0 || highest.size() != texels || lowest.size() != texels || !(texelsPerMetreX > 0.f) ||
+      !(texelsPerMetreZ > 0.f))
+    return highest;
+  // Open: nothing stands clear of the texel's own surface (exposure 1 there).
+  std::vector<bool> open(texels);
+  for (std::size_t t = 0; t < texels; ++t) open[t] = weather::skyExposure(lowest[t], highest[t]) >= 1.f;
+  const double texelX = 1.0 / texelsPerMetreX, texelZ = 1.0 / texelsPerMetreZ;
+  const std::vector<double> centres = distancesToOpen(open, resolution, texelX, texelZ);
+  // From the open texel's edge, not its centre.
+  const float halfTexel = static_cast<float>(0.25 * (texelX + texelZ));
+  std::vector<float> out = highest;
+  for (std::size_t t = 0; t < texels; ++t) {
+    if (open[t]) continue;
+    const float d = std::max(static_cast<float>(centres[t]) - halfTexel, 0.f);
+    const float r = std::min(reach.slant * (highest[t] - lowest[t]), reach.maxReach);
+    if (!(d < r)) continue;
+    const float exposure = 1.f - smoothUnit((d - 0.5f * r) / (0.5f * r));
+    out[t] = std::min(highest[t], lowest[t] + shelterHeightFor(exposure));
   }
   return out;
 }

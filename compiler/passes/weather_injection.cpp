@@ -133,7 +133,7 @@ class WeatherInjector {
 
   // The shared noise lookup at the point (nodes/weather_noise.hpp), made once: snow,
   // moss, ice and hoarfrost read its transition channel (eq. 3.14 shares one NoiseMap),
-  // puddles its puddle channel.
+  // puddles its puddle channel, melting snow its flow channel (the thaw patches).
   Operand noise(std::string_view channel) {
     if (!noise_) noise_ = b_.add("weather_noise", {{"position", position_}});
     return b_.output(*noise_, channel);
@@ -174,7 +174,8 @@ class WeatherInjector {
                                                         {"position", position_}, {"diffuse", diffuse_}, {"terrain", terrain},
                                                         {"windFlow", windFlow()}, {"exposure", exposure_},
                                                         {"weights", weights_}, {"shape", shape_}, {"terms", terms_},
-                                                        {"noise", noise("transition")}});
+                                                        {"noise", noise("transition")}, {"patchNoise", noise("flow")},
+                                                        {"antiAliasing", k(cfg_.effects.specularAntiAliasing ? 1.f : 0.f)}});
     // Snow's own lit micro-relief replaces the surface's detail under it.
     Operand layerNormal = relief(weather::kSnowReliefAmplitude);
     cover(coverage, b_.add("weather_snow_albedo", {{"diffuse", diffuse_}}), k(weather::kSnowRoughness), k(0.5f), 0.7f, layerNormal);

@@ -277,6 +277,19 @@ float hashUnit(std::uint32_t seed, std::int32_t stream) {
   return static_cast<float>(latticeHash(static_cast<std::int32_t>(seed), stream) >> 8) / 16777216.f;
 }
 
+// Eq. 3.8's range from the terrain ("MinHeight and MaxHeight are determined by the
+// ground level and peak position of the terrain"), on every object: the ground level at
+// f_height 0.5, where the default weights balance it (w3 = 2), and the peak at 0.75, so
+// summits hold more snow and less moss (eq. 3.9) and level ground keeps the cover the
+// weights give it (docs/weather-model.md, "Eq. 3.8-3.9: height").
+void setTerrainHeightRange(Scene& scene) {
+  const float ground = scene.terrainHeightOffset, relief = scene.terrainHeightScale;
+  for (SceneObject& o : scene.objects) {
+    o.parameters["weather.minHeight"] = ground - 2.f * relief;
+    o.parameters["weather.maxHeight"] = ground + 2.f * relief;
+  }
+}
+
 class SceneBuilder {
  public:
   SceneBuilder(std::string name, glm::vec3 towardsSun) {
@@ -456,6 +469,7 @@ class SceneBuilder {
       apron.horizon = true;
       scene_.objects.push_back(std::move(apron));
     }
+    if (scene_.terrainHeightResolution > 0) setTerrainHeightRange(scene_);
     return std::move(scene_);
   }
 

@@ -123,6 +123,7 @@ TEST_P(EachScene, AovsOfBothLanguagesMatchTheCpuEvaluator) {
         in.frame = frameStateFor(renderer, weather);
         in.terrainHeight = &terrainField(renderer);
         in.positionIsDisplaced = true;
+        for (const auto& [name, value] : object.parameters) in.parameters[name] = Value::scalar(value);
         EvalResult r = cpu.evaluate(in);
         auto compare = [&](float gpu, float expected) {
           float e = std::fabs(gpu - expected);

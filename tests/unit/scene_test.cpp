@@ -491,6 +491,21 @@ TEST_P(EachScene, UsesBundledGraphs) {
   ASSERT_FALSE(withGraph("terrain").empty());
 }
 
+// Eq. 3.8's MinHeight and MaxHeight come from the terrain, not a fixed -50..50 m: its
+// ground level lies mid-range and its peak at three quarters, on every object.
+TEST_P(EachScene, TheHeightRangeComesFromTheTerrain) {
+  const Scene& s = scene();
+  Bounds terrain = bounds(worldMesh(*s.find("terrain")));
+  if (const SceneObject* meadow = s.find("meadow")) terrain.include(bounds(worldMesh(*meadow)));
+  for (const auto& o : s.objects) {
+    SCOPED_TRACE(o.name);
+    ASSERT_TRUE(o.parameters.count("weather.minHeight") && o.parameters.count("weather.maxHeight"));
+    const float lo = o.parameters.at("weather.minHeight"), hi = o.parameters.at("weather.maxHeight");
+    EXPECT_NEAR((terrain.min.y - lo) / (hi - lo), 0.5f, 0.001f);
+    EXPECT_NEAR((terrain.max.y - lo) / (hi - lo), 0.75f, 0.001f);
+  }
+}
+
 TEST_P(EachScene, SunBoundsAndCameras) {
   const Scene& s = scene();
   EXPECT_NEAR(glm::length(s.towardsSun), 1.f, 1e-5f);

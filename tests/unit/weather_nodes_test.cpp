@@ -454,10 +454,12 @@ TEST(WeatherNodes, SkyExposureLevelsAndConditions) {
 // 0.5 * (1 - 0.408) = 0.296.
 TEST(WeatherNodes, SnowCoverage) {
   Env env;
+  env.frame.temperature = -5;  // settling snow: eq. 3.14 as printed (melting: below)
   auto coverage = [&](const Value& n, const Value& nd, float exposure, const Value& terms = kAllTerms,
                       const Value& position = kOrigin, float terrain = 0, float windFlow = 0) {
     return eval("weather_snow_coverage",
-                {n, nd, position, kDiffuse, s(terrain), s(windFlow), s(exposure), kWeights, kShape, terms, s(0)}, env);
+                {n, nd, position, kDiffuse, s(terrain), s(windFlow), s(exposure), kWeights, kShape, terms, s(0), s(0.5f), s(0)},
+                env);
   };
   // Level 0: the early-out, however favourable everything else is.
   env.frame.snowLevel = 0;
@@ -503,6 +505,33 @@ TEST(WeatherNodes, SnowCoverage) {
   expectValue(coverage(leeward, leeward, 1, v4(1, 0, 1, 1), low, 0, 0.f), s(0));
   // With the wind term off the flow is never read.
   expectValue(coverage(leeward, leeward, 1, v4(1, 0, 1, 0), low, 0, 1.f), s(0));
+}
+
+// Melting snow (above 0 C) in patches: the shape lerp(noise, patchNoise, 0.8) stretched
+// about 0.5 by 2.3, eq. 3.14 of it at p = f_p * level, smoothstep(0.35, 0.65, that).
+// Level up, no sun or wind, height 0.5: f_p = 1 as above; noise 0.
+TEST(WeatherNodes, MeltingSnowCoversInPatches) {
+  Env env;
+  env.frame.temperature = 6;
+  auto coverage = [&](float level, float patchNoise) {
+    env.frame.snowLevel = level;
+    return eval("weather_snow_coverage", {kUp, kUp, kOrigin, kDiffuse, s(0), s(0), s(1), kWeights, kShape, kAllTerms, s(0),
+                                          s(patchNoise), s(1)},
+                env);
+  };
+  // patchNoise 0.5: shape 0.4, stretched 0.27. Level 0.3: 0.27 - 1 + 0.9 = 0.17 -> bare;
+  // level 0.5: 0.77 -> covered.
+  expectValue(coverage(0.3f, 0.5f), s(0));
+  expectValue(coverage(0.5f, 0.5f), s(1));
+  // patchNoise 1: stretched 1. Level 0.3 -> 0.9, covered; level 0.2 -> 0.6, on the soft
+  // edge: t = 0.25 / 0.3, t^2 (3 - 2t) = 0.925926.
+  expectValue(coverage(0.3f, 1), s(1));
+  expectValue(coverage(0.2f, 1), s(0.925926f));
+  expectValue(coverage(0, 1), s(0));  // level 0 is bare wherever the patch lies
+  // At 0.5 C half melting (smoothstep(0, 1 C, T)): half the settling cover (0.196 at
+  // level 0.3, see above), half the patch (1).
+  env.frame.temperature = 0.5f;
+  expectValue(coverage(0.3f, 1), s(0.598f));
 }
 
 // Eq. 3.6 alone: weather_wind_flow is the f_wind that weather_wind's eq. 3.7 uses, so the

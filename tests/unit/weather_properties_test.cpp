@@ -494,6 +494,66 @@ TEST(WeatherProperties, HigherPointsHoldMoreSnowAndLessMoss) {
   EXPECT_LT(mossHigh, mossLow) << "moss on average";
 }
 
+// ---- Thaw ----------------------------------------------------------------------------------
+
+// Melting snow breaks up in patches with soft edges, not a partial cover everywhere:
+// on level ground (the terrain graph, a square of kThawSide points kThawStep apart),
+// at levels that leave about half the ground covered, most points are bare or covered,
+// and neighbours a quarter metre apart mostly agree. Settling snow at the same level
+// keeps eq. 3.14's partial cover (the contrast the property is about).
+constexpr int kThawSide = 48;
+constexpr float kThawStep = 0.25f;
+constexpr float kThawC = 6.f;
+struct CoverShares {
+  double mean = 0, partial = 0, neighboursDiffer = 0;
+};
+CoverShares groundCover(const CpuEvaluator& terrain, const FrameState& frame) {
+  std::vector<float> cover;
+  for (int i = 0; i < kThawSide; ++i)
+    for (int j = 0; j < kThawSide; ++j) {
+      SurfacePoint p = grid(0.f).front();
+      p.worldPosition = {0.37f + kThawStep * static_cast<float>(i), 0.f, 0.61f + kThawStep * static_cast<float>(j)};
+      p.texcoord = {p.worldPosition[0] * kUvPerMetre, p.worldPosition[2] * kUvPerMetre};
+      cover.push_back(terrain.evaluate(inputs(p, frame)).coverageOf(CoverageTerm::Snow));
+    }
+  CoverShares s;
+  std::size_t pairs = 0;
+  for (int i = 0; i < kThawSide; ++i)
+    for (int j = 0; j < kThawSide; ++j) {
+      const float c = cover[static_cast<std::size_t>(i * kThawSide + j)];
+      s.mean += c;
+      s.partial += c > 0.1f && c < 0.9f;
+      if (j + 1 < kThawSide) {
+        s.neighboursDiffer += std::fabs(c - cover[static_cast<std::size_t>(i * kThawSide + j + 1)]) > 0.5f;
+        ++pairs;
+      }
+    }
+  const double n = static_cast<double>(cover.size());
+  s.mean /= n;
+  s.partial /= n;
+  s.neighboursDiffer /= static_cast<double>(pairs);
+  return s;
+}
+
+TEST(WeatherProperties, ThawingSnowBreaksUpInSoftEdgedPatches) {
+  const CpuEvaluator& terrain = bundled("terrain");
+  int halfCovered = 0;
+  for (float level : {0.25f, 0.3f, 0.35f, 0.4f}) {
+    FrameState thaw;
+    thaw.temperature = kThawC;
+    thaw.snowLevel = level;
+    const CoverShares melting = groundCover(terrain, thaw);
+    if (melting.mean < 0.25 || melting.mean > 0.75) continue;
+    ++halfCovered;
+    EXPECT_LT(melting.partial, 0.35) << "level " << level << ": a partial cover everywhere, not patches (mean "
+                                    << melting.mean << ")";
+    EXPECT_LT(melting.neighboursDiffer, 0.05) << "level " << level << ": bare and covered alternate within 0.25 m";
+    const CoverShares settling = groundCover(terrain, snowyFrame(level));
+    EXPECT_GT(settling.partial, 0.5) << "level " << level << ": settling snow should keep eq. 3.14's partial cover";
+  }
+  EXPECT_GE(halfCovered, 1) << "no level left about half the ground covered";
+}
+
 // ---- Wetness -----------------------------------------------------------------------------
 
 // The frame the runtime uploads for a weather state.
