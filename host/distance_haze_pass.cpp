@@ -3,11 +3,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "backends/library_functions.hpp"
-#include "backends/shader_syntax.hpp"
-#include "nodes/pbr_shading.hpp"
-
 #include "host/material_resources.hpp"
+#include "host/sky_shader_text.hpp"
 #include "vulkan/compute_barriers.hpp"
 #include "vulkan/runtime_shader.hpp"
 
@@ -75,10 +72,6 @@ layout(push_constant) uniform Haze { mat4 clipToWorld; vec4 sun; vec4 sky; vec4 
 layout(set = 0, binding = 0, rgba16f) uniform image2D Colour;
 layout(set = 0, binding = 1) uniform texture2D SceneDepth;
 layout(set = 0, binding = 2) uniform sampler DepthSampler;
-#define frame_skyColor haze.sky.rgb
-#define frame_ambientIntensity haze.sky.w
-#define frame_precipitation haze.weather.x
-#define frame_windIntensity haze.weather.y
 #define frame_exposure haze.weather.z
 )";
   text += "const vec3 frame_sunColor = vec3(" + std::to_string(sunColor.r) + ", " + std::to_string(sunColor.g) + ", " +
@@ -88,8 +81,7 @@ layout(set = 0, binding = 2) uniform sampler DepthSampler;
   text += "const float kSunDiscCos = 0.99994516;\nconst float kSunDiscRadiance = 40.0;\n";
   // Just above wg_sky's horizon edge (0.04 at roughness 0), where the sky is all horizon.
   text += "const float kHorizonY = 0.05;\n";
-  for (const ReachedPiece& piece : reachedLibraryPieces(glslSyntax(), {&kPbrShadingLibrary}, {"wg_sky", "wg_tonemap"}))
-    text += piece.text;
+  text += skyLibraryText("haze", {"wg_sky", "wg_tonemap"});
   text += kHazeMain;
   return text;
 }
@@ -119,10 +111,11 @@ void DistanceHazePass::record(const ColourPassTargets& t, const FrameState& fram
                           VK_IMAGE_LAYOUT_GENERAL);
   vk::Image2D::transition(t.cmd, t.depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  const SkyInputs sky = skyInputs(frame);
   const HazeConstants c{glm::inverse(t.viewProjection),
                         {frame.sunDirection[0], frame.sunDirection[1], frame.sunDirection[2], frame.sunIntensity},
-                        {frame.skyColor[0], frame.skyColor[1], frame.skyColor[2], frame.ambientIntensity},
-                        {frame.precipitation, frame.windIntensity, frame.exposure, 0.f},
+                        sky.sky,
+                        {sky.weather.x, sky.weather.y, frame.exposure, 0.f},
                         {t.nearPlane, t.farPlane, settings.distance, settings.horizonFrom * t.farPlane}};
   VkDescriptorSet set = set_->set();
   vkCmdBindPipeline(t.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());

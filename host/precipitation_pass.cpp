@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "nodes/pbr_shading.hpp"
 #include "host/material_resources.hpp"
 #include "host/precipitation_shaders.hpp"
 #include "vulkan/runtime_shader.hpp"
@@ -11,7 +12,6 @@ namespace wg {
 
 namespace {
 constexpr std::uint32_t kVerticesPerParticle = 6;
-constexpr float kPi = 3.14159265f;
 // The GPU derives positions from the time; wrapping it keeps float positions precise
 // (at most ~10 km of travel) at the cost of a jump once every ten simulated minutes.
 constexpr double kTimeWrap = 600.0;
@@ -51,17 +51,16 @@ struct PrecipitationBlock {
 };
 static_assert(sizeof(PrecipitationBlock) == 64 + 9 * 16, "std140 layout of the Precipitation block");
 
-// The materials' tone curve (nodes/pbr_shading.cpp, wg_tonemap): Narkowicz's ACES fit.
-glm::vec3 toneMapped(glm::vec3 c, float exposure) {
-  c *= exposure;
-  return glm::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.f, 1.f);
+// The materials' tone curve (wg_tonemap).
+glm::vec3 toneMappedColour(glm::vec3 c, float exposure) {
+  return {toneMapped(c.r, exposure), toneMapped(c.g, exposure), toneMapped(c.b, exposure)};
 }
 }  // namespace
 
 PrecipitationLook precipitationLook(const PrecipitationLight& light) {
   glm::vec3 snow = kSnowAlbedo * (light.sunRadiance * (kFlakeSunFactor / kPi) + light.skyRadiance);
   glm::vec3 rain = kRainSky * light.skyRadiance + kRainSun * light.sunRadiance;
-  return {glm::vec4(toneMapped(snow, light.exposure), kSnowOpacity), glm::vec4(toneMapped(rain, light.exposure), kRainOpacity)};
+  return {glm::vec4(toneMappedColour(snow, light.exposure), kSnowOpacity), glm::vec4(toneMappedColour(rain, light.exposure), kRainOpacity)};
 }
 
 PrecipitationPass::PrecipitationPass(vk::Context& ctx)

@@ -18,6 +18,7 @@
 #include "host/pass_cameras.hpp"
 #include "host/precipitation_pass.hpp"
 #include "host/render_passes.hpp"
+#include "host/sky_irradiance_builder.hpp"
 #include "host/scene/graph_path.hpp"
 #include "weather/frame_weather.hpp"
 
@@ -64,6 +65,7 @@ struct SceneRenderer::Frame {
   ClipRange clip{};
   glm::vec3 towardsSun{0.f};
   glm::mat4 light{1.f};
+  SkyIrradiance skyIrradiance;  // the sky's diffuse light; lit frames only
   std::vector<Pass> passes;
   std::optional<FrameSlices> slices;  // per (pass, object)
   vk::UniqueDescriptorPool pool;
@@ -164,6 +166,13 @@ std::size_t SceneRenderer::gpuMemoryBytes() const {
   return n;
 }
 
+const SkyIrradiance& SceneRenderer::skyIrradiance() const {
+  static const SkyIrradiance kNone;
+  return skyIrradiance_ ? skyIrradiance_->irradiance() : kNone;
+}
+
+std::size_t SceneRenderer::skyIrradianceBuilds() const { return skyIrradiance_ ? skyIrradiance_->builds() : 0; }
+
 std::vector<std::string> SceneRenderer::materialInputFiles() const {
   std::set<std::string> files;
   for (const auto& [key, m] : materials_) {
@@ -183,6 +192,7 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   frame.towardsSun = glm::normalize(glm::vec3(sun[0], sun[1], sun[2]));
   frame.light = sunViewProjection(scene_, frame.towardsSun);
   frame.passes = passesFor(frame);
+  if (request.debugView == 0) frame.skyIrradiance = skyIrradianceOf(sharedFrameState(frame));
   writeFrameSlices(frame);
   allocateDescriptorSets(frame);
   createTargets(frame);
@@ -259,6 +269,7 @@ FrameState SceneRenderer::sharedFrameState(const Frame& frame) const {
   storeInto(uniforms.lightViewProjection, frame.light);
   storeInto(uniforms.skyExposureRegion, exposureRegion_);
   storeInto(uniforms.terrainRegion, scene_.terrainRegion);
+  writeSkyIrradiance(frame.skyIrradiance, uniforms);
   storeInto(uniforms.sunColor, kSunColor);
   uniforms.ambientIntensity = kAmbientIntensity;
   storeInto(uniforms.skyColor, kSkyColor);
@@ -403,6 +414,12 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   if (drawsHaze(scene_, r)) recordHaze(targets, sharedFrameState(frame), r.weather);
   if (drawsPrecipitation(r)) recordPrecipitation(targets, r.weather);
   if (r.afterColourPass) r.afterColourPass(targets);
+}
+
+// The diffuse light of the sky `frame` describes; rebuilt only when that sky changes.
+const SkyIrradiance& SceneRenderer::skyIrradianceOf(const FrameState& frame) {
+  if (!skyIrradiance_) skyIrradiance_ = std::make_unique<SkyIrradianceBuilder>(ctx_);
+  return skyIrradiance_->irradianceFor(frame);
 }
 
 // The sky the surfaces reflect, and haze towards it, so the ground meets the sky without a seam.

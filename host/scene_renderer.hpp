@@ -12,6 +12,7 @@
 #include "nodes/weather_model.hpp"
 #include "host/frame_recording.hpp"
 #include "host/material_resources.hpp"
+#include "host/sky_irradiance.hpp"
 #include "vulkan/gpu_timer.hpp"
 #include "host/scene/scene.hpp"
 #include "weather/weather_state.hpp"
@@ -20,6 +21,7 @@ namespace wg {
 
 class DistanceHazePass;
 class PrecipitationPass;
+class SkyIrradianceBuilder;
 
 // What work recorded after the colour pass sees (particles, post passes): the colour
 // target, to be left in COLOR_ATTACHMENT_OPTIMAL, and the depth target (D32, stored,
@@ -87,6 +89,10 @@ class SceneRenderer {
   glm::vec4 exposureRegion() const { return exposureRegion_; }
   glm::mat4 viewProjection(const std::string& camera, std::uint32_t width, std::uint32_t height) const;
   std::size_t gpuMemoryBytes() const;
+  // The sky's diffuse light of the last lit frame (zero before one), and how often it
+  // was built: once per sky (weather), never per frame; AOVs do not need it.
+  const SkyIrradiance& skyIrradiance() const;
+  std::size_t skyIrradianceBuilds() const;
   // Samples per pixel of lit frames (4 where the device allows; resolved before
   // anything reads the colour); AOVs are always drawn single-sampled.
   std::uint32_t colourSamples() const { return static_cast<std::uint32_t>(colourSamples_); }
@@ -129,6 +135,7 @@ class SceneRenderer {
   std::vector<std::size_t> drawOrder(const Frame& frame) const;
   std::vector<ObjectDraw> drawsOf(Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
   void recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
+  const SkyIrradiance& skyIrradianceOf(const FrameState& frame);
   void recordHaze(const ColourPassTargets& targets, const FrameState& frame, const WeatherState& weather);
   void recordPrecipitation(const ColourPassTargets& targets, const WeatherState& weather);
   RenderedFrame readBack(Frame& frame);
@@ -152,6 +159,7 @@ class SceneRenderer {
   glm::vec4 exposureRegion_{0.f};
   vk::GpuTimer timer_;  // the colour pass
   std::unique_ptr<DistanceHazePass> haze_;            // made on the first frame that draws it
+  std::unique_ptr<SkyIrradianceBuilder> skyIrradiance_;  // made on the first lit frame
   std::unique_ptr<PrecipitationPass> precipitation_;  // made on the first frame that draws it
 };
 

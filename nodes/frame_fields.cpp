@@ -36,12 +36,25 @@ constexpr FrameField field(std::string_view name, std::string_view doc, float mi
   return {name, Type, &memberBytes<Member>, min, max, doc, owner};
 }
 
+template <std::size_t I>
+std::byte* skyIrradianceBytes(FrameState& frame) {
+  return reinterpret_cast<std::byte*>(frame.skyIrradiance[I].data());
+}
+
+// One of the sky's nine irradiance coefficients: `doc` names its polynomial in the
+// world normal (host/sky_irradiance.hpp).
+template <std::size_t I>
+constexpr FrameField skyIrradianceField(std::string_view name, std::string_view doc) {
+  static_assert(sizeof(FrameState{}.skyIrradiance[I]) == 4 * components(T::Vec4));
+  return {name, T::Vec4, &skyIrradianceBytes<I>, -kInf, kInf, doc, FrameFieldOwner::Host};
+}
+
 constexpr FrameFieldOwner kWeather = FrameFieldOwner::Weather;
 using F = FrameState;
 
 // Ordered so std140 packs without holes: matrices and vec4s first, then each vec3
 // followed by a float, then the scalars.
-constexpr std::array<FrameField, 27> kFrameFields = {{
+constexpr std::array<FrameField, 36> kFrameFields = {{
     field<&F::model, T::Mat4>("model", "object to world"),
     field<&F::viewProjection, T::Mat4>("viewProjection", "world to clip space"),
     field<&F::normalMatrix, T::Mat4>("normalMatrix", "inverse transpose of model"),
@@ -50,6 +63,15 @@ constexpr std::array<FrameField, 27> kFrameFields = {{
                                           -kInf, kInf, FrameFieldOwner::MapPlace),
     field<&F::terrainRegion, T::Vec4>("terrainRegion", "xz origin, 1/size: world to height-map uv (eq. 3.11)", -kInf,
                                       kInf, FrameFieldOwner::MapPlace),
+    skyIrradianceField<0>("skyIrradiance0", "sky irradiance / pi, spherical harmonics: rgb times 1 (w unused)"),
+    skyIrradianceField<1>("skyIrradiance1", "sky irradiance / pi, spherical harmonics: rgb times n.x"),
+    skyIrradianceField<2>("skyIrradiance2", "sky irradiance / pi, spherical harmonics: rgb times n.y (up)"),
+    skyIrradianceField<3>("skyIrradiance3", "sky irradiance / pi, spherical harmonics: rgb times n.z"),
+    skyIrradianceField<4>("skyIrradiance4", "sky irradiance / pi, spherical harmonics: rgb times n.x n.y"),
+    skyIrradianceField<5>("skyIrradiance5", "sky irradiance / pi, spherical harmonics: rgb times n.y n.z"),
+    skyIrradianceField<6>("skyIrradiance6", "sky irradiance / pi, spherical harmonics: rgb times 3 n.y^2 - 1"),
+    skyIrradianceField<7>("skyIrradiance7", "sky irradiance / pi, spherical harmonics: rgb times n.x n.z"),
+    skyIrradianceField<8>("skyIrradiance8", "sky irradiance / pi, spherical harmonics: rgb times n.z^2 - n.x^2"),
     field<&F::cameraPosition, T::Vec3>("cameraPosition", "world position of the eye"),
     field<&F::time, T::Float>("time", "seconds since the scene started (pans wind, ripples, panners)", 0.f, kInf,
                               kWeather),

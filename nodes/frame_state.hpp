@@ -16,6 +16,9 @@ struct FrameState {
   FrameMatrix lightViewProjection{};
   std::array<float, 4> skyExposureRegion{0.f, 0.f, 0.f, 0.f};
   std::array<float, 4> terrainRegion{0.f, 0.f, 0.f, 0.f};  // xz origin, 1/size (eq. 3.11)
+  // The sky's diffuse light: 9 spherical-harmonic coefficients of its irradiance / pi,
+  // rgb each (w unused), as host/sky_irradiance.hpp projects them.
+  std::array<std::array<float, 4>, 9> skyIrradiance{};
   std::array<float, 3> cameraPosition{0.f, 2.f, 5.f};
   float time = 0.f;  // seconds
   std::array<float, 3> sunDirection{0.f, 1.f, 0.f};  // towards the sun

@@ -57,6 +57,11 @@ std::array<float, 3> skyTint(const std::array<float, 3>& skyColor, float precipi
   return tint;
 }
 
+float toneMapped(float linear, float exposure) {
+  float c = linear * exposure;
+  return std::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.f, 1.f);
+}
+
 std::array<float, 2> environmentBrdf(float roughness, float NoV) {
   const float r[4] = {roughness * -1.f + 1.f, roughness * -0.0275f + 0.0425f, roughness * -0.572f + 1.04f,
                       roughness * 0.022f - 0.04f};
@@ -151,14 +156,24 @@ vec3 wg_sky(const vec3 d, const float roughness) {
   vec3 sky = mix(horizon, zenith, sqrt(clamp(d.y, 0.0, 1.0)));
   return mix(horizon * 0.35, sky, smoothstep(-edge, edge, d.y));
 }
+// The sky's diffuse light at normal n: its irradiance / pi from the 9 spherical-harmonic
+// coefficients the host projects wg_sky onto (Ramamoorthi & Hanrahan 2001, eq. 13, y up;
+// host/sky_irradiance.hpp). A sky of one radiance everywhere gives that radiance.
+vec3 wg_sky_irradiance(const vec3 n) {
+  return frame_skyIrradiance0.rgb + frame_skyIrradiance1.rgb * n.x + frame_skyIrradiance2.rgb * n.y +
+         frame_skyIrradiance3.rgb * n.z + frame_skyIrradiance4.rgb * (n.x * n.y) +
+         frame_skyIrradiance5.rgb * (n.y * n.z) + frame_skyIrradiance6.rgb * (3.0 * n.y * n.y - 1.0) +
+         frame_skyIrradiance7.rgb * (n.x * n.z) + frame_skyIrradiance8.rgb * (n.z * n.z - n.x * n.x);
+}
 // The split sum's DFG term by Karis's analytic fit (UE4 mobile): F0 scale and bias.
 vec2 wg_env_brdf(const float roughness, const float NoV) {
   vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
   float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
   return vec2(-1.04, 1.04) * a004 + r.zw;
 }
-// Eq. 2.2 plus Burley diffuse, sun (times its shadow) and sky ambient, metallic workflow,
-// and the sky's reflection (split sum, with Lagarde's specular occlusion from ao).
+// Eq. 2.2 plus Burley diffuse, sun (times its shadow) and the sky's diffuse light at the
+// normal, metallic workflow, and the sky's reflection (split sum, with Lagarde's
+// specular occlusion from ao).
 vec3 wg_shade(const vec3 baseColor, const float metallic, float roughness, const float specular, const float ao,
               const vec3 emissive, const vec3 N, const vec3 V, const float shadow) {
   roughness = clamp(roughness, 0.02, 1.0);
@@ -173,7 +188,7 @@ vec3 wg_shade(const vec3 baseColor, const float metallic, float roughness, const
   float dg = wg_ggx(NoH, roughness) * wg_smith_g(NoL, NoV, roughness) / max(4.0 * NoL * NoV, 1e-4);
   vec3 direct = (diffuseColor * (wg_burley_diffuse(roughness, NoL, NoV, VoH) / 3.14159265) + dg * wg_fresnel(f0, VoH));
   vec3 sun = frame_sunColor * frame_sunIntensity * shadow;
-  vec3 sky = frame_skyColor * frame_ambientIntensity;
+  vec3 sky = wg_sky_irradiance(N);
   vec2 dfg = wg_env_brdf(roughness, NoV);
   float occlusion = clamp(pow(NoV + ao, exp2(-16.0 * roughness - 1.0)) - 1.0 + ao, 0.0, 1.0);
   vec3 reflection = wg_sky(reflect(-V, N), roughness) * (f0 * dfg.x + dfg.y) * occlusion;

@@ -31,13 +31,15 @@ struct ShadingInputs {
   std::array<float, 3> toViewer{0.f, 1.f, 0.f};
   std::array<float, 3> toSun{0.f, 1.f, 0.f};
   std::array<float, 3> sunRadiance{1.f, 1.f, 1.f};  // colour * intensity
-  std::array<float, 3> ambient{0.f, 0.f, 0.f};      // sky colour * intensity
+  std::array<float, 3> ambient{0.f, 0.f, 0.f};      // the sky's irradiance / pi at the normal (wg_sky_irradiance)
   std::array<float, 3> reflected{0.f, 0.f, 0.f};    // the sky's radiance along the reflection (wg_sky)
 };
-// Eq. 2.2 Cook-Torrance specular plus Burley diffuse under one sun and sky ambient,
+// Eq. 2.2 Cook-Torrance specular plus Burley diffuse under one sun and the sky's diffuse light,
 // metallic workflow (diffuse = base (1 - m), F0 = lerp(0.08 specular, base, m)), plus
 // the sky's reflection by the split sum.
 std::array<float, 3> shadeSurface(const ShadingInputs& in);
+// wg_tonemap on the CPU, one channel: Narkowicz's ACES fit after the exposure.
+float toneMapped(float linear, float exposure);
 // The split sum's DFG term (Karis's analytic fit): F0 scale and bias.
 std::array<float, 2> environmentBrdf(float roughness, float NoV);
 // The sky's zenith colour under the weather: wg_sky_tint, for the background.

@@ -91,7 +91,7 @@ void main() {
   float a = (1.0 - r2) * v_alpha * soft * view.fade.w;
   vec3 n = vec3(v_corner, sqrt(1.0 - r2));
   float sun = 0.5 + 0.5 * dot(n, view.sun.xyz);
-  const vec3 kSkyTint = vec3(0.9, 0.98, 1.12), kSunTint = vec3(1.0, 0.97, 0.92);
+  const vec3 kSkyTint = vec3(0.85, 0.97, 1.12), kSunTint = vec3(1.0, 0.97, 0.92);
   vec3 lit = v_shade * (view.right.w * kSkyTint + view.up.w * sun * sun * kSunTint);
   out_color = vec4(lit * a, a);  // premultiplied
 }
