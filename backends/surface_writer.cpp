@@ -259,7 +259,8 @@ class SurfaceWriter {
   // One stage for a host that embeds it in its own shader (one material, every map
   // bound, the sun's shadow the library's own): the library code the stage and the
   // host's calls reach, unguarded, then the stage's structs and function.
-  std::string embeddedStage(const IrGraph& graph, ShaderStage stage, const std::vector<std::string>& names, const std::vector<std::string_view>& hostCalls) const {
+  std::string embeddedStage(const IrGraph& graph, ShaderStage stage, const std::vector<std::string>& names,
+                            const std::vector<std::string_view>& hostCalls) const {
     const StageSource source = writeStageSource(graph, s_.prefixed, syntax_, stage, names);
     std::vector<std::string_view> roots = libraryRoots(source);
     roots.insert(roots.end(), hostCalls.begin(), hostCalls.end());
