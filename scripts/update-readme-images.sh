@@ -18,8 +18,8 @@ render() {  # NAME, then render's arguments
 }
 render valley-snowfall --scene valley --camera orbit:210,22,45 --weather precipitation=0.7,temperature=-6,snowLevel=0.7,windIntensity=0.3,frostLevel=0.4
 render rocks-moss --scene rocks --camera orbit:130,28,22 --weather temperature=11,mossLevel=0.6,wetnessLevel=0.5
-render river-frozen --scene river --weather temperature=-12,snowLevel=0.35,frostLevel=0.9
-render road-rain --scene road --camera orbit:150,18,30 --weather precipitation=0.8,temperature=7,wetnessLevel=0.8,puddleLevel=0.8,windIntensity=0.3
+render river-frozen --scene river --camera orbit:100,6,30 --weather temperature=-12,snowLevel=0.35,frostLevel=0.9
+render road-rain --scene road --camera orbit:60,4,18 --weather precipitation=0.8,temperature=7,wetnessLevel=0.8,puddleLevel=0.8,windIntensity=0.3
 render stand-rock-snow --material graphs/rock.json --camera sun-side --weather temperature=-4,snowLevel=0.6,frostLevel=0.5
 render model-engine-snow --model /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb \
   --model-scale 0.01 --weather temperature=-3,snowLevel=0.6,frostLevel=0.4
