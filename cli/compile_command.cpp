@@ -76,7 +76,7 @@ struct Options {
   WeatherEffectOverrides effects;
   int jobs = 0;  // 0: one per core
   std::string depfile;
-  std::optional<std::string> cacheDir;  // --cache; else $WEATHERGEN_CACHE_DIR
+  std::optional<std::string> cacheDir;  // --cache; else $WEATHERGEN_CACHE_DIR, else the user's cache
   bool noCache = false;
   std::optional<VariantSelection> variants;
   std::optional<std::string> dumpIrAfter;  // a pass name or "all": print IR, write nothing
@@ -139,9 +139,10 @@ std::vector<Option> outputOptions(Options& o) {
       {"--cache", "", "DIR",
        "reuse and keep compiled materials in DIR, keyed by the\n"
        "content of every file read and the options (default:\n"
-       "$WEATHERGEN_CACHE_DIR when set, else no cache)",
+       "$WEATHERGEN_CACHE_DIR when set, 'off' for none, else\n"
+       "$XDG_CACHE_HOME/weathergen or ~/.cache/weathergen)",
        [&o](const std::string& v) { return setCacheDirectory(v, o.cacheDir); }},
-      {"--no-cache", "", "", "compile every graph, even with WEATHERGEN_CACHE_DIR set", storeFlag(o.noCache)},
+      {"--no-cache", "", "", "compile every graph; use and keep no cache", storeFlag(o.noCache)},
   };
 }
 
@@ -286,13 +287,30 @@ CompileOptions compileOptionsFor(const Options& o) {
   return options;
 }
 
-// --cache DIR, else $WEATHERGEN_CACHE_DIR; none with --no-cache, or when neither names one.
+// The user's cache directory (XDG's base directories), or none without an absolute
+// $XDG_CACHE_HOME or $HOME.
+std::optional<std::string> userCacheDirectory() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && xdg[0] == '/') return std::string(xdg) + "/weathergen";
+  if (const char* home = std::getenv("HOME"); home && home[0] == '/') return std::string(home) + "/.cache/weathergen";
+  return std::nullopt;
+}
+
+// --cache DIR, else $WEATHERGEN_CACHE_DIR ("off": none), else the user's cache
+// directory; none with --no-cache. A directory the user named must work; the default
+// one is a convenience, and without it the compile runs uncached.
 std::string openCompileCache(const Options& o, std::optional<CompileCache>& cache) {
+  if (o.noCache || o.dumpIrAfter) return "";
   const char* fromEnvironment = std::getenv("WEATHERGEN_CACHE_DIR");
-  if (o.noCache || o.dumpIrAfter || (!o.cacheDir && (!fromEnvironment || !*fromEnvironment))) return "";
-  cache.emplace(o.cacheDir ? *o.cacheDir : std::string(fromEnvironment));
+  const bool environmentNames = fromEnvironment && *fromEnvironment;
+  if (!o.cacheDir && environmentNames && std::string_view(fromEnvironment) == "off") return "";
+  std::optional<std::string> directory =
+      o.cacheDir ? o.cacheDir : environmentNames ? std::optional<std::string>(fromEnvironment) : userCacheDirectory();
+  if (!directory) return "";
+  cache.emplace(*directory);
   std::string problem = cache->prepare();
   if (problem.empty()) return "";
+  cache.reset();
+  if (!o.cacheDir && !environmentNames) return "";
   return (o.cacheDir ? "--cache " : "WEATHERGEN_CACHE_DIR: ") + problem;
 }
 

@@ -50,6 +50,7 @@ def _weathergen_materials_impl(ctx):
         args.add("--target", ",".join(ctx.attr.targets))
         args.add("-j", "1")
         args.add("-q")
+        args.add("--no-cache")  # Bazel's own caches hold the outputs
         if ctx.attr.optimize:
             args.add("-O")
         if ctx.attr.emit_header:

@@ -60,7 +60,8 @@ struct Options {
   // A persistent compile cache shared by processes (docs/scaling.md, "The compile
   // cache"): "" compiles every time; else a directory, created if missing, that keeps
   // each compile without diagnostics, keyed by the graph's text, the files it reads and
-  // the options. A directory that cannot be written only leaves the cache out.
+  // the options. A directory that cannot be written only leaves the cache out. Unlike
+  // the CLI, the library has no default: it never writes outside what its program names.
   std::string cacheDirectory;
   // The variant: static switch name -> value (docs/graph-format.md, "Static switches");
   // switches not named keep their default. Unknown names or values are diagnostics.

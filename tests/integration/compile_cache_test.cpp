@@ -60,9 +60,11 @@ class CompileCacheCli : public ::testing::Test {
     for (const auto& name : listFiles(dir_.path() / out)) files[name] = readFile(dir_.path() / out / name);
     return files;
   }
-  std::vector<std::string> entries() const {
+  std::vector<std::string> entries() const { return entriesIn(cache()); }
+  static std::vector<std::string> entriesIn(const fs::path& directory) {
     std::vector<std::string> names;
-    for (const auto& name : listFiles(cache()))
+    if (!fs::is_directory(directory)) return names;
+    for (const auto& name : listFiles(directory))
       if (name.size() > 6 && name.substr(name.size() - 6) == ".entry") names.push_back(name);
     return names;
   }
@@ -149,6 +151,38 @@ TEST_F(CompileCacheCli, TheEnvironmentNamesTheDirectoryAndNoCacheWins) {
   EXPECT_FALSE(fs::exists(cache()));
   ASSERT_EQ(compile("on", "", environment).exitCode, 0);
   EXPECT_EQ(entries().size(), 1u);
+}
+
+// Without --cache or WEATHERGEN_CACHE_DIR the user's cache directory holds the cache:
+// $XDG_CACHE_HOME/weathergen, else ~/.cache/weathergen. (The suite runs with
+// WEATHERGEN_CACHE_DIR=off, which these commands take away.)
+TEST_F(CompileCacheCli, ByDefaultTheUsersCacheDirectoryHoldsIt) {
+  ASSERT_EQ(compile("plain", "--no-cache").exitCode, 0);
+  const fs::path xdg = dir_.path() / "xdg-cache-home", home = dir_.path() / "home-directory";
+  ASSERT_EQ(compile("xdg", "", "env -u WEATHERGEN_CACHE_DIR XDG_CACHE_HOME=" + shellQuote(xdg.string()) + " ").exitCode, 0);
+  EXPECT_EQ(entriesIn(xdg / "weathergen").size(), 1u);
+  ASSERT_EQ(compile("home", "", "env -u WEATHERGEN_CACHE_DIR -u XDG_CACHE_HOME HOME=" + shellQuote(home.string()) + " ")
+                .exitCode,
+            0);
+  EXPECT_EQ(entriesIn(home / ".cache" / "weathergen").size(), 1u);
+  EXPECT_TRUE(outputs("xdg") == outputs("plain"));
+  EXPECT_TRUE(outputs("home") == outputs("plain"));
+}
+
+TEST_F(CompileCacheCli, OffInTheEnvironmentTurnsTheDefaultOff) {
+  const fs::path xdg = dir_.path() / "xdg";
+  ASSERT_EQ(compile("out", "", "WEATHERGEN_CACHE_DIR=off XDG_CACHE_HOME=" + shellQuote(xdg.string()) + " ").exitCode, 0);
+  EXPECT_FALSE(fs::exists(xdg));
+}
+
+// The default directory is a convenience: where it cannot be made, compile runs uncached.
+TEST_F(CompileCacheCli, AnUnusableDefaultDirectoryCompilesUncached) {
+  ASSERT_EQ(compile("plain", "--no-cache").exitCode, 0);
+  writeFile(dir_.path() / "file", "not a directory");
+  auto r = compile("out", "", "env -u WEATHERGEN_CACHE_DIR XDG_CACHE_HOME=" + shellQuote((dir_.path() / "file").string()) + " ");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output, "");
+  EXPECT_TRUE(outputs("out") == outputs("plain"));
 }
 
 TEST_F(CompileCacheCli, ADirectoryThatCannotBeMadeIsAUsageError) {
