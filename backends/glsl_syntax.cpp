@@ -61,8 +61,8 @@ class GlslSyntax final : public ShaderSyntax {
     appendBlock(out, mi.material);
     for (const auto* list : {&mi.weatherMaps, &mi.textures})
     for (const auto& t : *list) {
-      appendText(out, "layout(set = ", Decimal{t.set}, ", binding = ", Decimal{t.textureBinding}, ") uniform texture2D ",
-                 t.textureIdentifier, ";\n");
+      appendText(out, "layout(set = ", Decimal{t.set}, ", binding = ", Decimal{t.textureBinding}, ") uniform ",
+                 t.cube ? "textureCube " : "texture2D ", t.textureIdentifier, ";\n");
       appendText(out, "layout(set = ", Decimal{t.set}, ", binding = ", Decimal{t.samplerBinding}, ") uniform sampler ",
                  t.samplerIdentifier, ";\n");
     }

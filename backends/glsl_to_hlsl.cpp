@@ -94,7 +94,8 @@ class Translator {
       std::size_t close = matchingClose(open, end);
       if (rewriteCall(token.text, open, close, out)) return close + 1;
     }
-    if (token.text == "sampler2D") throw std::invalid_argument("GLSL to HLSL: sampler2D outside texture()");
+    if (token.text == "sampler2D" || token.text == "samplerCube")
+      throw std::invalid_argument("GLSL to HLSL: " + std::string(token.text) + " outside texture()");
     out += renamed(token.text);
     return i + 1;
   }
@@ -141,11 +142,12 @@ class Translator {
     return false;
   }
 
-  // texture(sampler2D(t, s), rest) -> t.Sample(s, rest)
+  // texture(sampler2D(t, s), rest) -> t.Sample(s, rest); samplerCube the same.
   bool rewriteSampling(std::string_view method, const std::vector<Range>& args, std::size_t close,
                        std::string& out) const {
     std::size_t callee = nextSignificant(args[0].begin, args[0].end);
-    if (callee >= args[0].end || tokens_[callee].text != "sampler2D") return false;
+    if (callee >= args[0].end || (tokens_[callee].text != "sampler2D" && tokens_[callee].text != "samplerCube"))
+      return false;
     std::size_t open = nextSignificant(callee + 1, args[0].end);
     if (open >= args[0].end || !isPunctuation(open, '(')) return false;
     std::vector<Range> pair = arguments(open, matchingClose(open, args[0].end));

@@ -124,8 +124,8 @@ class HlslSyntax final : public ShaderSyntax {
     appendBlock(out, mi.material);
     for (const auto* list : {&mi.weatherMaps, &mi.textures})
     for (const auto& t : *list) {
-      appendText(out, "[[vk::binding(", Decimal{t.textureBinding}, ", ", Decimal{t.set}, ")]] Texture2D ",
-                 t.textureIdentifier, " : register(t", Decimal{t.textureBinding}, ", space", Decimal{t.set}, ");\n");
+      appendText(out, "[[vk::binding(", Decimal{t.textureBinding}, ", ", Decimal{t.set}, ")]] ",
+                 t.cube ? "TextureCube " : "Texture2D ", t.textureIdentifier, " : register(t", Decimal{t.textureBinding}, ", space", Decimal{t.set}, ");\n");
       appendText(out, "[[vk::binding(", Decimal{t.samplerBinding}, ", ", Decimal{t.set}, ")]] SamplerState ",
                  t.samplerIdentifier, " : register(s", Decimal{t.samplerBinding}, ", space", Decimal{t.set}, ");\n");
     }

@@ -92,13 +92,14 @@ MaterialInterface buildMaterialInterface(const IrGraph& graph) {
   }
 
   // Shared weather maps: set 0 next to the frame block, at the table's fixed bindings.
+  // The host's own maps (its lighting's) are in every full stage.
   for (const WeatherMap& map : weatherMaps()) {
-    bool used = map.name == "sunShadow" || std::any_of(graph.nodes.begin(), graph.nodes.end(), [&](const IrNode& n) {
+    bool used = !map.surface || std::any_of(graph.nodes.begin(), graph.nodes.end(), [&](const IrNode& n) {
       return std::find(n.op->weatherMaps.begin(), n.op->weatherMaps.end(), map.name) != n.op->weatherMaps.end();
     });
     if (used)
       mi.weatherMaps.push_back({-1, std::string(map.name), std::string(map.texture), std::string(map.sampler), 0,
-                                map.binding, map.binding + 1});
+                                map.binding, map.binding + 1, map.cube});
   }
 
   const std::array<std::pair<std::string_view, InterfaceType>, 5> kAttributes = {{

@@ -41,6 +41,7 @@ struct TextureBinding {
   std::string name;
   std::string textureIdentifier, samplerIdentifier;
   std::uint32_t set = 1, textureBinding = 0, samplerBinding = 0;
+  bool cube = false;  // a cube map; the rest are 2D textures
 };
 
 struct StageVariable {

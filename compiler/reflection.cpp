@@ -112,6 +112,7 @@ void writeBinding(IndentedJsonWriter& w, const TextureBinding& b) {
   w.key("set").integer(b.set);
   w.key("binding").integer(b.textureBinding);
   w.key("samplerBinding").integer(b.samplerBinding);
+  w.key("dimension").text(b.cube ? "cube" : "2d");
   w.key("textureIdentifier").text(b.textureIdentifier);
   w.key("samplerIdentifier").text(b.samplerIdentifier);
 }

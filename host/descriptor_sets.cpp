@@ -32,14 +32,17 @@ std::array<VkDescriptorSet, 2> allocateMaterialSets(VkDevice device, VkDescripto
   const auto& refl = material.reflection();
   writer.buffer(sets[0], refl.frame.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBuffer, frameSize);
   for (const auto& map : refl.weatherMaps) {
-    bool shadow = map.name == "sunShadow", deformation = map.name == "snowDeformation", noise = map.name == "weatherNoise";
+    bool shadow = map.name == "sunShadow", deformation = map.name == "snowDeformation", noise = map.name == "weatherNoise",
+         sky = map.name == "skyReflection";
     writer.image(sets[0], map.binding,
                  map.name == "terrainHeight" ? maps.terrainHeight
                  : shadow                    ? maps.sunShadow
                  : deformation               ? maps.snowDeformation
                  : noise                     ? maps.weatherNoise
+                 : sky                       ? maps.skyReflection
                                              : maps.skyExposure);
-    writer.sampler(sets[0], map.samplerBinding, shadow ? maps.nearest : deformation || noise ? maps.repeat : maps.linear);
+    writer.sampler(sets[0], map.samplerBinding,
+                   shadow ? maps.nearest : deformation || noise ? maps.repeat : sky ? maps.trilinear : maps.linear);
   }
   if (const vk::Buffer* params = material.parameterBuffer())
     writer.buffer(sets[1], refl.material.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params->handle(), refl.material.size);

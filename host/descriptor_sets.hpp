@@ -50,8 +50,10 @@ struct DescriptorWriter {
 struct SharedMaps {
   VkImageView terrainHeight, skyExposure, sunShadow, snowDeformation;
   VkImageView weatherNoise;   // the shared noise texture (nodes/weather_noise.hpp)
+  VkImageView skyReflection;  // the prefiltered sky, a cube (host/sky_light_builder.hpp)
   VkSampler linear, nearest;  // depth formats need not be filterable; PCF filters
   VkSampler repeat;           // the toroidal snow deformation map and the tiling noise
+  VkSampler trilinear;        // every level: the sky reflection's roughness
   // The materials' textures read at level 0 only (AOVs: as the CPU evaluator reads
   // them), not through their mip chains.
   bool baseLevelTextures = false;

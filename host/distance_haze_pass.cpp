@@ -36,7 +36,7 @@ void main() {
   // Below kHorizonY the background is the horizon's colour: past the far plane there is
   // no ground to show, and haze tends to the same colour, so they meet without a seam.
   vec3 background = normalize(vec3(d.x, max(d.y, kHorizonY), d.z));
-  vec3 horizon = wg_tonemap(wg_sky(normalize(vec3(d.x, kHorizonY, d.z) + vec3(1e-6, 0.0, 0.0)), 0.0));
+  vec3 horizon = wg_tonemap(wg_sky(normalize(vec3(d.x, kHorizonY, d.z) + vec3(1e-6, 0.0, 0.0))));
   float depth = texelFetch(sampler2D(SceneDepth, DepthSampler), p, 0).r;
   if (depth >= 1.0) {
     // The depth is one sample's (the multisampled resolve keeps sample 0): a pixel on
@@ -51,7 +51,7 @@ void main() {
       float disc = smoothstep(kSunDiscCos - 2e-5, kSunDiscCos + 2e-5, toSun);
       float glow = 0.6 * pow(max(toSun, 0.0), 400.0) + 0.12 * pow(max(toSun, 0.0), 12.0);
       vec3 sun = frame_sunColor * haze.sun.w * (disc * kSunDiscRadiance + glow) * clear * above;
-      imageStore(Colour, p, vec4(wg_tonemap(wg_sky(background, 0.0) + sun), 1.0));
+      imageStore(Colour, p, vec4(wg_tonemap(wg_sky(background) + sun), 1.0));
       return;
     }
   }
@@ -79,7 +79,7 @@ layout(set = 0, binding = 2) uniform sampler DepthSampler;
   // The sun's angular radius is 0.27 degrees; drawn at 0.6 so that it reads in a
   // 480-pixel-wide frame. Its radiance saturates the tone curve: a white disc.
   text += "const float kSunDiscCos = 0.99994516;\nconst float kSunDiscRadiance = 40.0;\n";
-  // Just above wg_sky's horizon edge (0.04 at roughness 0), where the sky is all horizon.
+  // Just above wg_sky's horizon edge (0.04), where the sky is all horizon.
   text += "const float kHorizonY = 0.05;\n";
   text += skyLibraryText("haze", {"wg_sky", "wg_tonemap"});
   text += kHazeMain;

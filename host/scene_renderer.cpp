@@ -18,7 +18,8 @@
 #include "host/pass_cameras.hpp"
 #include "host/precipitation_pass.hpp"
 #include "host/render_passes.hpp"
-#include "host/sky_irradiance_builder.hpp"
+#include "host/sky_light_builder.hpp"
+#include "vulkan/texture_sampler.hpp"
 #include "host/scene/graph_path.hpp"
 #include "weather/frame_weather.hpp"
 
@@ -99,6 +100,8 @@ SceneRenderer::SceneRenderer(vk::Context& ctx, scene::Scene scene, std::string g
                                         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   placeholderDeformation_.upload(ctx_, undeformed, sizeof undeformed);
   linearRepeat_ = createSampler(ctx_, "repeat", "linear");
+  trilinearClamp_ = vk::createSampler(ctx_, "clamp", "clamp", "linear", "linear", vk::MipSampling::FullChain);
+  skyLight_ = std::make_unique<SkyLightBuilder>(ctx_);
   const Image& noise = weather::noiseImage();  // the weather's noise texture, sampled with linearRepeat_
   weatherNoise_ = vk::Image2D(ctx_, static_cast<std::uint32_t>(noise.width), static_cast<std::uint32_t>(noise.height),
                               VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
@@ -160,18 +163,17 @@ glm::mat4 SceneRenderer::viewProjection(const std::string& camera, std::uint32_t
 }
 
 std::size_t SceneRenderer::gpuMemoryBytes() const {
-  std::size_t n = terrainHeight_.byteSize() + exposureMap_.byteSize() + shadowMap_.byteSize();
+  std::size_t n = terrainHeight_.byteSize() + exposureMap_.byteSize() + shadowMap_.byteSize() + skyLight_->reflectionBytes();
   for (const auto& o : objects_) n += o->mesh.vertices.size() + o->mesh.indices.size();
   for (const auto& [key, m] : materials_) n += m->textureBytes();
   return n;
 }
 
 const SkyIrradiance& SceneRenderer::skyIrradiance() const {
-  static const SkyIrradiance kNone;
-  return skyIrradiance_ ? skyIrradiance_->irradiance() : kNone;
+  return skyLight_->irradiance();
 }
 
-std::size_t SceneRenderer::skyIrradianceBuilds() const { return skyIrradiance_ ? skyIrradiance_->builds() : 0; }
+std::size_t SceneRenderer::skyLightBuilds() const { return skyLight_->builds(); }
 
 std::vector<std::string> SceneRenderer::materialInputFiles() const {
   std::set<std::string> files;
@@ -192,7 +194,7 @@ RenderedFrame SceneRenderer::render(const RenderRequest& request) {
   frame.towardsSun = glm::normalize(glm::vec3(sun[0], sun[1], sun[2]));
   frame.light = sunViewProjection(scene_, frame.towardsSun);
   frame.passes = passesFor(frame);
-  if (request.debugView == 0) frame.skyIrradiance = skyIrradianceOf(sharedFrameState(frame));
+  if (request.debugView == 0) frame.skyIrradiance = skyLight_->lightFor(sharedFrameState(frame));
   writeFrameSlices(frame);
   allocateDescriptorSets(frame);
   createTargets(frame);
@@ -314,7 +316,8 @@ void SceneRenderer::allocateDescriptorSets(Frame& frame) {
       const Pass& pass = frame.passes[p];
       SharedMaps maps{terrainHeight_.view(), pass.exposureView, pass.shadowView,
                       (snowDeformation_ ? *snowDeformation_ : placeholderDeformation_).view(), weatherNoise_.view(),
-                      linearClamp_.get(), nearestClamp_.get(), linearRepeat_.get()};
+                      skyLight_->reflectionView(), linearClamp_.get(), nearestClamp_.get(), linearRepeat_.get(),
+                      trilinearClamp_.get()};
       maps.baseLevelTextures = frame.request.debugView != 0;  // AOVs read textures as the CPU evaluator does
       MaterialResources& m = *frame.materials[i];
       frame.sets[frame.slot(p, i)] = allocateMaterialSets(ctx_.device(), frame.pool.get(), m, pipelineOf(m, frame.request),
@@ -414,12 +417,6 @@ void SceneRenderer::recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size
   if (drawsHaze(scene_, r)) recordHaze(targets, sharedFrameState(frame), r.weather);
   if (drawsPrecipitation(r)) recordPrecipitation(targets, r.weather);
   if (r.afterColourPass) r.afterColourPass(targets);
-}
-
-// The diffuse light of the sky `frame` describes; rebuilt only when that sky changes.
-const SkyIrradiance& SceneRenderer::skyIrradianceOf(const FrameState& frame) {
-  if (!skyIrradiance_) skyIrradiance_ = std::make_unique<SkyIrradianceBuilder>(ctx_);
-  return skyIrradiance_->irradianceFor(frame);
 }
 
 // The sky the surfaces reflect, and haze towards it, so the ground meets the sky without a seam.

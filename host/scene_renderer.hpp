@@ -21,7 +21,7 @@ namespace wg {
 
 class DistanceHazePass;
 class PrecipitationPass;
-class SkyIrradianceBuilder;
+class SkyLightBuilder;
 
 // What work recorded after the colour pass sees (particles, post passes): the colour
 // target, to be left in COLOR_ATTACHMENT_OPTIMAL, and the depth target (D32, stored,
@@ -92,7 +92,7 @@ class SceneRenderer {
   // The sky's diffuse light of the last lit frame (zero before one), and how often it
   // was built: once per sky (weather), never per frame; AOVs do not need it.
   const SkyIrradiance& skyIrradiance() const;
-  std::size_t skyIrradianceBuilds() const;
+  std::size_t skyLightBuilds() const;
   // Samples per pixel of lit frames (4 where the device allows; resolved before
   // anything reads the colour); AOVs are always drawn single-sampled.
   std::uint32_t colourSamples() const { return static_cast<std::uint32_t>(colourSamples_); }
@@ -135,7 +135,6 @@ class SceneRenderer {
   std::vector<std::size_t> drawOrder(const Frame& frame) const;
   std::vector<ObjectDraw> drawsOf(Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
   void recordScenePass(VkCommandBuffer cmd, Frame& frame, std::size_t pass, const std::vector<std::size_t>& order);
-  const SkyIrradiance& skyIrradianceOf(const FrameState& frame);
   void recordHaze(const ColourPassTargets& targets, const FrameState& frame, const WeatherState& weather);
   void recordPrecipitation(const ColourPassTargets& targets, const WeatherState& weather);
   RenderedFrame readBack(Frame& frame);
@@ -155,11 +154,12 @@ class SceneRenderer {
   vk::UniqueSampler linearClamp_;
   vk::UniqueSampler linearRepeat_;  // the toroidal snow deformation map
   vk::UniqueSampler nearestClamp_;  // depth formats need not be filterable; PCF filters
+  vk::UniqueSampler trilinearClamp_;  // the sky's reflection: a roughness per level
   std::vector<float> exposureHeights_;
   glm::vec4 exposureRegion_{0.f};
   vk::GpuTimer timer_;  // the colour pass
   std::unique_ptr<DistanceHazePass> haze_;            // made on the first frame that draws it
-  std::unique_ptr<SkyIrradianceBuilder> skyIrradiance_;  // made on the first lit frame
+  std::unique_ptr<SkyLightBuilder> skyLight_;  // its shaders compiled on the first lit frame
   std::unique_ptr<PrecipitationPass> precipitation_;  // made on the first frame that draws it
 };
 

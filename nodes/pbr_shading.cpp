@@ -140,21 +140,24 @@ float wg_sun_shadow(const vec3 p, const vec3 n) {
 }
 // The reference host's sky, the environment its surfaces reflect: zenith frame_skyColor,
 // a paler horizon and a dim ground; precipitation turns it overcast and a blizzard
-// darkens it (wg_sky_tint, mirrored by skyTint on the CPU for the background). Roughness
-// widens the horizon's edge, as a prefiltered environment map's rougher mips would.
+// darkens it (wg_sky_tint, mirrored by skyTint on the CPU for the background).
 vec3 wg_sky_tint() {
   float overcast = clamp(frame_precipitation * 1.5, 0.0, 1.0);
   return mix(frame_skyColor, vec3(0.62, 0.64, 0.68), overcast) * (1.0 - 0.45 * overcast * frame_windIntensity);
 }
-vec3 wg_sky(const vec3 d, const float roughness) {
+vec3 wg_sky(const vec3 d) {
   vec3 tint = wg_sky_tint() * frame_ambientIntensity;
   float luminance = dot(tint, vec3(0.2126, 0.7152, 0.0722));
   // A clear sky is deepest blue overhead and palest at the horizon.
   vec3 zenith = max(mix(vec3(luminance), tint, 2.5), vec3(0.0));
   vec3 horizon = mix(tint, vec3(luminance), 0.3) * 1.1;
-  float edge = 0.04 + roughness * roughness;
   vec3 sky = mix(horizon, zenith, sqrt(clamp(d.y, 0.0, 1.0)));
-  return mix(horizon * 0.35, sky, smoothstep(-edge, edge, d.y));
+  return mix(horizon * 0.35, sky, smoothstep(-0.04, 0.04, d.y));
+}
+// The split sum's first factor: wg_sky prefiltered with GGX of the roughness, from the
+// host's cube map, one roughness per level (level = 5 roughness; host/sky_light_builder.hpp).
+vec3 wg_sky_reflection(const vec3 r, const float roughness) {
+  return textureLod(samplerCube(wg_sky_reflection_map, wg_sky_reflection_sampler), r, roughness * 5.0).rgb;
 }
 // The sky's diffuse light at normal n: its irradiance / pi from the 9 spherical-harmonic
 // coefficients the host projects wg_sky onto (Ramamoorthi & Hanrahan 2001, eq. 13, y up;
@@ -191,7 +194,7 @@ vec3 wg_shade(const vec3 baseColor, const float metallic, float roughness, const
   vec3 sky = wg_sky_irradiance(N);
   vec2 dfg = wg_env_brdf(roughness, NoV);
   float occlusion = clamp(pow(NoV + ao, exp2(-16.0 * roughness - 1.0)) - 1.0 + ao, 0.0, 1.0);
-  vec3 reflection = wg_sky(reflect(-V, N), roughness) * (f0 * dfg.x + dfg.y) * occlusion;
+  vec3 reflection = wg_sky_reflection(reflect(-V, N), roughness) * (f0 * dfg.x + dfg.y) * occlusion;
   return direct * sun * NoL + sky * diffuseColor * ao + reflection + emissive;
 }
 // Filmic tone curve (Narkowicz's ACES fit) so renders are viewable as 8-bit images.

@@ -32,7 +32,7 @@ struct ShadingInputs {
   std::array<float, 3> toSun{0.f, 1.f, 0.f};
   std::array<float, 3> sunRadiance{1.f, 1.f, 1.f};  // colour * intensity
   std::array<float, 3> ambient{0.f, 0.f, 0.f};      // the sky's irradiance / pi at the normal (wg_sky_irradiance)
-  std::array<float, 3> reflected{0.f, 0.f, 0.f};    // the sky's radiance along the reflection (wg_sky)
+  std::array<float, 3> reflected{0.f, 0.f, 0.f};    // the prefiltered sky along the reflection (wg_sky_reflection)
 };
 // Eq. 2.2 Cook-Torrance specular plus Burley diffuse under one sun and the sky's diffuse light,
 // metallic workflow (diffuse = base (1 - m), F0 = lerp(0.08 specular, base, m)), plus

@@ -11,7 +11,7 @@ constexpr std::array<std::string_view, 2> kExposureAccessors = {"wg_sky_exposure
 constexpr std::array<std::string_view, 1> kDeformationAccessors = {"wg_snow_deformation_texel"};
 constexpr std::array<std::string_view, 1> kNoiseAccessors = {"wg_weather_noise"};
 
-constexpr std::array<WeatherMap, 5> kWeatherMaps = {{
+constexpr std::array<WeatherMap, 6> kWeatherMaps = {{
     {"terrainHeight", "wg_terrain_height_map", "wg_terrain_height_sampler", 1, "WG_NO_TERRAIN_HEIGHT_MAP",
      "vec4(0.0)", "level ground at y = 0", "r: terrain height in units of weather terrainHeightScale (eq. 3.8-3.12)",
      true, kTerrainAccessors},
@@ -26,6 +26,10 @@ constexpr std::array<WeatherMap, 5> kWeatherMaps = {{
     {"weatherNoise", "wg_weather_noise_map", "wg_weather_noise_sampler", 9, "WG_NO_WEATHER_NOISE_MAP", "vec4(0.5)",
      "uniform weather: transitions, flow, ripples and puddles without their spatial variation",
      "r transition, g flow, b ripple, a puddles (weathergen::weatherNoiseTexture())", true, kNoiseAccessors},
+    {"skyReflection", "wg_sky_reflection_map", "wg_sky_reflection_sampler", 11, "", "vec4(0.0)", "no reflection",
+     "rgb: the sky's radiance prefiltered for roughness lod / 5, a level per lod (the reference host's lighting, "
+     "read by wg_shade)",
+     false, {}, true},
 }};
 
 }  // namespace

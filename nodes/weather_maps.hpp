@@ -21,6 +21,7 @@ struct WeatherMap {
   std::string_view texel;               // what one texel holds
   bool surface;                         // read by a surface; the sun shadow is the host's own
   std::span<const std::string_view> accessors;  // wg_ functions in kWeatherMapLibrary: vec4 f(const vec2 uv)
+  bool cube = false;                    // a cube map (textureCube), else a 2D texture
 };
 
 std::span<const WeatherMap> weatherMaps();

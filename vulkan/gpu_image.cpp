@@ -25,19 +25,35 @@ VkDeviceSize Image2D::byteSize() const {
   VkDeviceSize texels = 0;
   for (std::uint32_t level = 0; level < mipLevels_; ++level)
     texels += VkDeviceSize(std::max(1u, width_ >> level)) * std::max(1u, height_ >> level);
-  return texels * texelSize(format_);
+  return texels * texelSize(format_) * layers_;
 }
 
 Image2D::Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,
                  std::uint32_t mipLevels, VkSampleCountFlagBits samples)
     : format_(format), width_(width), height_(height), mipLevels_(mipLevels) {
+  create(ctx, usage, samples, false);
+}
+
+Image2D Image2D::cube(Context& ctx, std::uint32_t size, VkFormat format, VkImageUsageFlags usage,
+                      std::uint32_t mipLevels) {
+  Image2D image;
+  image.format_ = format;
+  image.width_ = image.height_ = size;
+  image.mipLevels_ = mipLevels;
+  image.layers_ = 6;
+  image.create(ctx, usage, VK_SAMPLE_COUNT_1_BIT, true);
+  return image;
+}
+
+void Image2D::create(Context& ctx, VkImageUsageFlags usage, VkSampleCountFlagBits samples, bool cube) {
   VkDevice device = ctx.device();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.flags = cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
   info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = format;
-  info.extent = {width, height, 1};
-  info.mipLevels = mipLevels;
-  info.arrayLayers = 1;
+  info.format = format_;
+  info.extent = {width_, height_, 1};
+  info.mipLevels = mipLevels_;
+  info.arrayLayers = layers_;
   info.samples = samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
@@ -57,10 +73,10 @@ Image2D::Image2D(Context& ctx, std::uint32_t width, std::uint32_t height, VkForm
   check(vkBindImageMemory(device, image, memory, 0), "vkBindImageMemory");
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   viewInfo.image = image;
-  viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  viewInfo.format = format;
+  viewInfo.viewType = cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
+  viewInfo.format = format_;
   viewInfo.subresourceRange = {static_cast<VkImageAspectFlags>(isDepth() ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT),
-                               0, mipLevels, 0, 1};
+                               0, mipLevels_, 0, layers_};
   VkImageView view;
   check(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
   view_ = UniqueImageView(device, view);
@@ -77,6 +93,7 @@ Image2D& Image2D::operator=(Image2D&& o) noexcept {
     width_ = o.width_;
     height_ = o.height_;
     mipLevels_ = o.mipLevels_;
+    layers_ = o.layers_;
   }
   return *this;
 }
@@ -89,7 +106,7 @@ void Image2D::transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags 
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
+  barrier.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
   // Conservative but simple: every transition waits for all earlier work.
   barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
   barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
@@ -121,9 +138,10 @@ void Image2D::uploadLevels(Context& ctx, const std::vector<const std::vector<uns
   for (std::uint32_t i = 0; i < mipLevels_; ++i) {
     VkBufferImageCopy region{};
     region.bufferOffset = offset;
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, i, 0, 1};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, i, 0, layers_};
     region.imageExtent = {std::max(1u, width_ >> i), std::max(1u, height_ >> i), 1};
-    const VkDeviceSize bytes = VkDeviceSize(region.imageExtent.width) * region.imageExtent.height * texelSize(format_);
+    const VkDeviceSize bytes =
+        VkDeviceSize(region.imageExtent.width) * region.imageExtent.height * texelSize(format_) * layers_;
     if (levels[i]->size() != bytes) throw std::runtime_error("Image2D::uploadLevels: a level of the wrong size");
     std::memcpy(static_cast<unsigned char*>(staging.mapped()) + offset, levels[i]->data(), bytes);
     regions.push_back(region);

@@ -1,4 +1,4 @@
-// The reference host's diffuse sky light (host/sky_irradiance_builder.hpp): built from
+// The reference host's diffuse sky light (host/sky_light_builder.hpp): built from
 // the weather's sky once per sky, never per frame, and what a rough dielectric shows.
 #include <gtest/gtest.h>
 
@@ -59,19 +59,19 @@ TEST(SkyIrradianceRender, RebuiltOnlyWhenTheSkyChanges) {
   RenderRequest r = sunlessFrame(renderer, 32, 18);
   r.debugView = viewId("albedo");
   renderer.render(r);
-  EXPECT_EQ(renderer.skyIrradianceBuilds(), 0u) << "AOVs do not read the sky";
+  EXPECT_EQ(renderer.skyLightBuilds(), 0u) << "AOVs do not read the sky";
   r.debugView = 0;
   renderer.render(r);
   renderer.render(r);
-  EXPECT_EQ(renderer.skyIrradianceBuilds(), 1u);
+  EXPECT_EQ(renderer.skyLightBuilds(), 1u);
   r.weather.levels.snow = 0.5f;  // the ground changes, the sky does not
   r.weather.time = 600.0;
   renderer.render(r);
-  EXPECT_EQ(renderer.skyIrradianceBuilds(), 1u);
+  EXPECT_EQ(renderer.skyLightBuilds(), 1u);
   const glm::vec3 clearUp = skyIrradianceAt(renderer.skyIrradiance(), {0.f, 1.f, 0.f});
   r.weather.conditions.precipitation = 0.8f;  // overcast
   renderer.render(r);
-  EXPECT_EQ(renderer.skyIrradianceBuilds(), 2u);
+  EXPECT_EQ(renderer.skyLightBuilds(), 2u);
   expectNoValidationMessages();
   // A clear sky lights up-facing faces bluer than an overcast one, and any sky lights
   // them more than the ground below lights down-facing ones.

@@ -71,9 +71,11 @@ TEST(CrossCompile, GlslEsCombinesSamplersWithFullPrecisionAndExplicitBindings) {
   CompiledMaterial m = compileSmall(bothTargets());
   const std::string& frag = m.stage(ShaderLanguage::Glsl, ShaderStage::Fragment).glslEs;
   EXPECT_TRUE(contains(frag, "precision highp float;")) << frag;
-  // Slot 1: after the frame's shadow map (set 0), as in MSL's [[texture(1)]].
-  EXPECT_TRUE(contains(frag, "layout(binding = 1) uniform highp sampler2D tex_albedo_smp_albedo;")) << frag;
-  EXPECT_TRUE(contains(m.stage(ShaderLanguage::Glsl, ShaderStage::Fragment).msl, "tex_albedo [[texture(1)]]"));
+  // Slot 2: after the host's shadow map and sky reflection (set 0), as in MSL's [[texture(2)]].
+  EXPECT_TRUE(contains(frag, "layout(binding = 2) uniform highp sampler2D tex_albedo_smp_albedo;")) << frag;
+  EXPECT_TRUE(contains(frag, "layout(binding = 1) uniform highp samplerCube wg_sky_reflection_map_wg_sky_reflection_sampler;"))
+      << frag;
+  EXPECT_TRUE(contains(m.stage(ShaderLanguage::Glsl, ShaderStage::Fragment).msl, "tex_albedo [[texture(2)]]"));
   EXPECT_FALSE(contains(frag, "texture2D ")) << frag;  // no separate images left
   EXPECT_FALSE(contains(frag, "set = ")) << frag;      // GL has no descriptor sets
   EXPECT_TRUE(contains(frag, "layout(binding = 0, std140) uniform FrameBlock")) << frag;
