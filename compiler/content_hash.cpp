@@ -79,6 +79,11 @@ std::string contentHash(const IrGraph& graph) {
   // Later fields are hashed only when set, so graphs without them keep their hashes.
   if (graph.alphaMode == AlphaMode::Blend) h.add(alphaModeName(graph.alphaMode));
   if (graph.doubleSided) h.add("doubleSided");
+  if (graph.weather.steep) {
+    h.add(graph.weather.steep->preset);
+    h.add(std::bit_cast<std::uint32_t>(graph.weather.steep->fromDegrees));
+    h.add(std::bit_cast<std::uint32_t>(graph.weather.steep->toDegrees));
+  }
   // Effects switched away from the preset's: the reflection lists them even where the
   // shaders come out the same (relief on a preset without snow or ice). Without weather
   // it lists none.

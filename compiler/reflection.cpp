@@ -84,6 +84,15 @@ void writeWeather(IndentedJsonWriter& w, const IrGraph& graph) {
   const WeatherConfig& weather = graph.weather;
   w.beginObject();
   w.key("preset").text(weather.preset);
+  if (weather.active() && weather.steep) {
+    w.key("steep").beginObject();
+    w.key("preset").text(weather.steep->preset);
+    w.key("slope").beginArray();
+    w.number(weather.steep->fromDegrees);
+    w.number(weather.steep->toDegrees);
+    w.endArray();
+    w.endObject();
+  }
   w.key("effects").beginObject();
   if (weather.active())
     for (const auto& f : weatherEffectFlags()) w.key(f.name).boolean(weather.effects.*(f.flag));

@@ -43,8 +43,18 @@ inline constexpr std::size_t kWeatherEffectCount = 13;
 const std::array<WeatherEffectFlag, kWeatherEffectCount>& weatherEffectFlags();
 const WeatherEffectFlag* findWeatherEffectFlag(std::string_view name);  // nullptr: no such effect
 
+// A second preset for the steep parts (section 5.1.1: a terrain's "cliff and rocky parts"
+// take the complete prediction, its grassy parts only height and wind), blended in by
+// the geometric normal's slope.
+struct SteepBlend {
+  std::string preset;
+  std::array<float, 4> terms{1.f, 1.f, 1.f, 1.f};  // the steep preset's eq. 3.1 switches
+  float fromDegrees = 30.f, toDegrees = 45.f;        // all flat below, all steep above
+};
+
 struct WeatherConfig {
   std::string preset = "none";
+  std::optional<SteepBlend> steep;
   std::string quality = "high";  // the tier applied (compiler/quality_tiers.hpp)
   WeatherEffects effects;
   // Eq. 3.1 switches: inclination, sun, height, wind (a factor switched off counts as 1).

@@ -191,7 +191,7 @@ void applyNumberSetting(const std::string& key, const nlohmann::json& value, con
   auto setting = std::find_if(kNumberSettings.begin(), kNumberSettings.end(),
                               [&key](const NumberSetting& s) { return s.name == key; });
   if (setting == kNumberSettings.end()) {
-    std::vector<std::string_view> names = {"preset", "quality", "effects", "weights", "terms"};
+    std::vector<std::string_view> names = {"preset", "quality", "steep", "effects", "weights", "terms"};
     for (const auto& s : kNumberSettings) names.push_back(s.name);
     errors.report(DiagCode::UnknownWeatherKey, at, {"setting", quoteUserText(key), unknownNameHint(key, names, "settings")});
     return;
@@ -214,13 +214,61 @@ void applyOverrides(const nlohmann::json& overrides, const std::string& pointer,
                     SettingErrors& errors) {
   for (const auto& [key, value] : overrides.items()) {
     std::string at = appendPointer(pointer, key);
-    if (key == "preset" || key == "description" || key == "quality") continue;
+    if (key == "preset" || key == "description" || key == "quality" || key == "steep") continue;
     if (key == "effects") applyEffects(value, at, config, errors);
     else if (key == "weights" || key == "terms") applyFourNumbers(key, value, at, config, errors);
     else applyNumberSetting(key, value, at, config, errors);
   }
   if (config.minHeight >= config.maxHeight)
     errors.report(DiagCode::WeatherHeightRange, pointer, {formatFloat(config.minHeight), formatFloat(config.maxHeight)});
+}
+
+// Where only one of a slope blend's presets has moss, it fades with the slope. Terrain
+// orientation (eq. 3.11-3.13) blends an object into the terrain under it, which a
+// terrain's own cliffs do not need: the flat preset's setting stands.
+constexpr std::string_view kSlopeFadedEffect = "moss";
+constexpr std::string_view kFlatPresetsEffect = "terrainOrientation";
+
+// "steep": {"preset": "rock", "slope": [30, 45]}: the steep preset's terms, and its
+// effects switched on over the flat one's. An effect that only one of the two has must
+// be one the slope can fade.
+void applySteepBlend(const nlohmann::json& value, const std::string& at, WeatherConfig& config, SettingErrors& errors) {
+  const std::string expected = "an object {\"preset\": NAME, \"slope\": [FROM, TO]} (degrees)";
+  if (!value.is_object()) return errors.wrongKind(at, "setting 'steep'", expected, describeJsonKind(value));
+  SteepBlend blend;
+  for (const auto& [key, member] : value.items()) {
+    const std::string memberAt = appendPointer(at, key);
+    if (key == "preset") {
+      if (!member.is_string()) return errors.wrongKind(memberAt, "setting 'steep.preset'", "a preset's name", describeJsonKind(member));
+      blend.preset = member.get<std::string>();
+    } else if (key == "slope") {
+      const bool shaped = member.is_array() && member.size() == 2 && member[0].is_number() && member[1].is_number();
+      if (!shaped) return errors.wrongKind(memberAt, "setting 'steep.slope'", "[FROM, TO] in degrees", describeJsonKind(member));
+      blend.fromDegrees = member[0].get<float>();
+      blend.toDegrees = member[1].get<float>();
+      if (!(blend.fromDegrees >= 0.f && blend.fromDegrees < blend.toDegrees && blend.toDegrees <= 90.f))
+        return errors.wrongKind(memberAt, "setting 'steep.slope'", "two angles with 0 <= FROM < TO <= 90",
+                                "[" + formatFloat(blend.fromDegrees) + ", " + formatFloat(blend.toDegrees) + "]");
+    } else if (key != "description") {
+      return errors.report(DiagCode::UnknownWeatherKey, memberAt,
+                           {"setting", quoteUserText(key), unknownNameHint(key, {"preset", "slope"}, "settings")});
+    }
+  }
+  std::optional<WeatherConfig> steep = weatherPreset(blend.preset);
+  if (!steep || !steep->active())
+    return errors.wrongKind(appendPointer(at, "preset"), "setting 'steep.preset'", "a weathering preset (" + presetList() + " but none)",
+                            quoteUserText(blend.preset));
+  for (const WeatherEffectFlag& f : weatherEffectFlags()) {
+    const bool flat = config.effects.*(f.flag), steepOn = steep->effects.*(f.flag);
+    if (flat == steepOn || f.name == kFlatPresetsEffect) continue;
+    if (f.name != kSlopeFadedEffect)
+      return errors.wrongKind(appendPointer(at, "preset"), "setting 'steep.preset'",
+                              "a preset with the same effects as '" + config.preset + "' but for moss and terrainOrientation",
+                              "'" + blend.preset + "', which differs in " + std::string(f.name));
+    config.effects.*(f.flag) = true;
+  }
+  blend.terms = steep->terms;
+  config.steep = std::move(blend);
 }
 
 // The caller's effect switches, over the graph's, while the weather is active. An
@@ -308,6 +356,9 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
                  {quoteUserText(named.name), unknownNameHint(named.name, weatherPresetNames(), "presets")});
     return std::nullopt;
   }
+  // The blend belongs to the graph's own preset: --weather-preset replaces both.
+  if (named.overrides && named.overrides->contains("steep") && !presetOverride)
+    applySteepBlend(named.overrides->at("steep"), appendPointer(pointer, "steep"), *config, errors);
   if (!applyQuality(quality, named.overrides, pointer, *config, errors)) return std::nullopt;
   if (named.overrides) applyOverrides(*named.overrides, pointer, *config, errors);
   if (!applyEffectOverrides(effectOverrides, *config, diags)) return std::nullopt;

@@ -239,19 +239,23 @@ namespace {
 glm::vec3 toVec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
 glm::vec2 toVec2(const std::array<float, 2>& a) { return {a[0], a[1]}; }
 
+// A term of eq. 3.1 under its switch: f when on (1), `neutral` when off (0), blended in
+// between (a slope blend's terms; wg_switched_term).
+float switchedTerm(float on, float f, float neutral) { return lerp(neutral, f, on); }
+
 // Eq. 3.1 with the shape's switches: a switched-off factor counts as 1, and so does its
 // weight (w1 = 2 balances a typical f_sun of 0.5, w3 = 2 a mid height; without the term
 // the balance goes too); a switched-off sum term counts as 0.
 float shapedPrediction(const FrameState& frame, glm::vec3 normal, glm::vec3 detailNormal, glm::vec3 position,
                        float terrain, float windFlow, const SnowShape& shape) {
   glm::vec4 weights = shape.weights;
-  const glm::vec4& on = shape.terms;  // each switch is on above 0.5
-  weights.x = on.y > 0.5f ? weights.x : 1.f;
-  weights.z = on.z > 0.5f ? weights.z : 1.f;
-  float inc = on.x > 0.5f ? inclination(normal, detailNormal, shape.inclinationIntensity) : 1.f;
-  float sun = on.y > 0.5f ? sunFacing(normal, toVec3(frame.sunDirection), frame.sunMelt) : 1.f;
-  float h = on.z > 0.5f ? height(position.y, shape.minHeight, shape.maxHeight) : 1.f;
-  float wind = on.w > 0.5f ? windFromFlow(normal, toVec2(frame.windDirection), windFlow, frame.windIntensity) : 0.f;
+  const glm::vec4& on = shape.terms;
+  weights.x = switchedTerm(on.y, weights.x, 1.f);
+  weights.z = switchedTerm(on.z, weights.z, 1.f);
+  float inc = switchedTerm(on.x, inclination(normal, detailNormal, shape.inclinationIntensity), 1.f);
+  float sun = switchedTerm(on.y, sunFacing(normal, toVec3(frame.sunDirection), frame.sunMelt), 1.f);
+  float h = switchedTerm(on.z, height(position.y, shape.minHeight, shape.maxHeight), 1.f);
+  float wind = switchedTerm(on.w, windFromFlow(normal, toVec2(frame.windDirection), windFlow, frame.windIntensity), 0.f);
   return prediction(inc, sun, h, terrain, wind, weights);
 }
 }  // namespace

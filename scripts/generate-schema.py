@@ -290,6 +290,14 @@ defs["weatherBlock"] = {
                     "description": "eq. 3.1 weights [w1 sun, w2 wind, w3 height, w4 terrain]; become parameters weather.w1-w4"},
         "terms": {"type": "array", "items": {"enum": [0, 1]}, "minItems": 4, "maxItems": 4,
                   "description": "eq. 3.1 factors used: [inclination, sun, height, wind]"},
+        "steep": {"type": "object", "required": ["preset"], "additionalProperties": False,
+                  "description": "a second preset for the steep parts, blended in by slope (seed 000, 5.1.1: a terrain's "
+                                 "cliffs take rock's complete prediction); the two may differ only in moss and terrainOrientation",
+                  "properties": {"preset": {"$ref": "#/$defs/weatherPreset"},
+                                 "slope": {"type": "array", "items": num(0, 90), "minItems": 2, "maxItems": 2,
+                                           "description": "[FROM, TO] degrees from level: all flat below FROM, all steep "
+                                                          "above TO; default [30, 45]"},
+                                 "description": {"type": "string"}}},
         "maxSnowHeight": num(0, 10, description="metres (eq. 3.10); default 0.25"),
         "minHeight": num(-1e5, 1e5, description="metres (eq. 3.8)"),
         "maxHeight": num(-1e5, 1e5, description="metres (eq. 3.8)"),

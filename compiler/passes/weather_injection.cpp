@@ -3,6 +3,7 @@
 // graph is left as it is; only the output bindings move to the weathered values. With
 // preset "none" the pass does nothing, so the shader is exactly the unweathered one.
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <optional>
 
@@ -82,7 +83,7 @@ class WeatherInjector {
     emissive_ = g_.output(PbrField::Emissive);
     weights_ = b_.add("combine4", {{"x", paramNodes_[0]}, {"y", paramNodes_[1]}, {"z", paramNodes_[2]}, {"w", paramNodes_[3]}});
     shape_ = b_.add("combine4", {{"x", paramNodes_[5]}, {"y", paramNodes_[6]}, {"z", IrNodeBuilder::constant(cfg_.inclinationIntensity)}});
-    terms_ = IrNodeBuilder::constant(Value::vec4(cfg_.terms[0], cfg_.terms[1], cfg_.terms[2], cfg_.terms[3]));
+    terms_ = predictionTerms();
 
     // Order of the layers: moss grows on the rock, snow lies on top, rain wets both,
     // water pools in puddles, and frost or ice forms last.
@@ -149,9 +150,46 @@ class WeatherInjector {
   // Eq. 3.6's flow where the wind term is on (the vertex-rate pass moves it per vertex);
   // with the term off it is never read.
   Operand windFlow() {
-    if (cfg_.terms[3] <= 0.5f) return k(0.f);
+    const bool steepWind = cfg_.steep && cfg_.steep->terms[3] > 0.5f;
+    if (cfg_.terms[3] <= 0.5f && !steepWind) return k(0.f);
     if (!windFlow_) windFlow_ = b_.add("weather_wind_flow", {{"position", position_}});
     return *windFlow_;
+  }
+
+  static Operand termsConstant(const std::array<float, 4>& t) { return IrNodeBuilder::constant(Value::vec4(t[0], t[1], t[2], t[3])); }
+
+  // How steep the point is for the slope blend: 0 below its first angle, 1 above its
+  // second, by the geometric normal's up component.
+  Operand steepness() {
+    if (!steepness_) {
+      const SteepBlend& blend = *cfg_.steep;
+      const float degrees = 3.14159265f / 180.f;
+      Operand up = b_.output(b_.add("split", {{"in", normal_}}), "y");
+      Operand flat = b_.add("smoothstep", {{"edge0", k(std::cos(blend.toDegrees * degrees))},
+                                          {"edge1", k(std::cos(blend.fromDegrees * degrees))}, {"x", up}});
+      steepness_ = b_.add("one_minus", {{"in", flat}});
+    }
+    return *steepness_;
+  }
+
+  // Eq. 3.1's term switches: the preset's, or with a slope blend the flat preset's
+  // moving to the steep one's.
+  Operand predictionTerms() {
+    if (!cfg_.steep) return termsConstant(cfg_.terms);
+    return lerp(termsConstant(cfg_.terms), termsConstant(cfg_.steep->terms), steepness());
+  }
+
+  // How much of an effect a point has under a slope blend: all of it where both
+  // presets have it, else it fades in towards the side whose preset has it (moss).
+  std::optional<Operand> slopeFade(bool WeatherEffects::*effect) {
+    if (!cfg_.steep) return std::nullopt;
+    const bool flat = weatherPreset(cfg_.preset)->effects.*effect, steep = weatherPreset(cfg_.steep->preset)->effects.*effect;
+    if (flat == steep) return std::nullopt;
+    return steep ? steepness() : b_.add("one_minus", {{"in", steepness()}});
+  }
+  Operand faded(bool WeatherEffects::*effect, Operand value) {
+    if (auto fade = slopeFade(effect)) return b_.add("multiply", {{"a", value}, {"b", *fade}});
+    return value;
   }
 
   Operand terrainTerm() {
@@ -194,6 +232,7 @@ class WeatherInjector {
     Operand coverage = b_.add("weather_moss_coverage", {{"normal", normal_}, {"position", position_}, {"diffuse", diffuse_},
                                                         {"weights", weights_}, {"shape", shape_},
                                                         {"noise", noise("transition")}});
+    coverage = faded(&WeatherEffects::moss, coverage);
     cover(coverage, b_.add("weather_moss_albedo", {{"diffuse", diffuse_}}), weather::kMossRoughness, 0.5f, 0.f);
     g_.coverage(CoverageTerm::Moss) = coverage;
   }
@@ -277,6 +316,7 @@ class WeatherInjector {
   std::vector<Operand> paramNodes_;
   Operand position_, normal_, exposure_, diffuse_, color_, roughness_, specular_, metallic_, tangentNormal_, emissive_;
   Operand weights_, shape_, terms_;
+  std::optional<Operand> steepness_;
   std::optional<Operand> noise_, windFlow_;
 };
 

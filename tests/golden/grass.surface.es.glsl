@@ -244,21 +244,27 @@ float wg_prediction(const float inc, const float sun, const float h, const float
   return wg_clamp01(inc * (w.x * sun * w.z * h + w.w * terrain + w.y * wind));
 }
 #endif
+#ifndef WG_FN_wg_switched_term
+#define WG_FN_wg_switched_term
+// A term of eq. 3.1 under its switch: f when on (1), `neutral` when off (0), blended in
+// between, as a slope blend's terms are. Where the injected switch is a constant 0 or 1,
+// spirv-opt folds the mix to one side and drops what is off.
+float wg_switched_term(const float on, const float f, const float neutral) { return mix(neutral, f, on); }
+#endif
 #ifndef WG_FN_wg_shaped_prediction
 #define WG_FN_wg_shaped_prediction
 // Eq. 3.1 with switches: shape = (minHeight, maxHeight, inclination intensity, unused),
-// terms = (inclination, sun, height, wind), each on above 0.5.
+// terms = (inclination, sun, height, wind).
 // A switched-off factor counts as 1, and so does its weight (w1 sun, w3 height).
 // windFlow is eq. 3.6's f_wind at p (weather_wind_flow, computed per vertex).
 float wg_shaped_prediction(const vec3 n, const vec3 nd, const vec3 p, const float terrain, const float windFlow, vec4 w,
                            const vec4 shape, const vec4 terms) {
-  // Selects, not lerps: the injected terms are constants, so spirv-opt drops what is off.
-  w.x = terms.y > 0.5 ? w.x : 1.0;
-  w.z = terms.z > 0.5 ? w.z : 1.0;
-  float inc = terms.x > 0.5 ? wg_inclination(n, nd, shape.z) : 1.0;
-  float sun = terms.y > 0.5 ? wg_sun_facing(n, weather_sunDirection, weather_sunMelt) : 1.0;
-  float h = terms.z > 0.5 ? wg_height(p.y, shape.x, shape.y) : 1.0;
-  float wind = terms.w > 0.5 ? wg_wind_from_flow(n, weather_windDirection, windFlow, weather_windIntensity) : 0.0;
+  w.x = wg_switched_term(terms.y, w.x, 1.0);
+  w.z = wg_switched_term(terms.z, w.z, 1.0);
+  float inc = wg_switched_term(terms.x, wg_inclination(n, nd, shape.z), 1.0);
+  float sun = wg_switched_term(terms.y, wg_sun_facing(n, weather_sunDirection, weather_sunMelt), 1.0);
+  float h = wg_switched_term(terms.z, wg_height(p.y, shape.x, shape.y), 1.0);
+  float wind = wg_switched_term(terms.w, wg_wind_from_flow(n, weather_windDirection, windFlow, weather_windIntensity), 0.0);
   return wg_prediction(inc, sun, h, terrain, wind, w);
 }
 #endif
@@ -551,21 +557,27 @@ vec3 wg_band_albedo(const vec3 d, const vec3 tint, const float lo, const float h
 #define WG_FN_wg_snow_albedo
 vec3 wg_snow_albedo(const vec3 d) { return wg_band_albedo(d, vec3(0.97, 0.985, 1.0), 0.9, 0.95, 2.0); }
 #endif
+#ifndef WG_FN_wg_switched_term
+#define WG_FN_wg_switched_term
+// A term of eq. 3.1 under its switch: f when on (1), `neutral` when off (0), blended in
+// between, as a slope blend's terms are. Where the injected switch is a constant 0 or 1,
+// spirv-opt folds the mix to one side and drops what is off.
+float wg_switched_term(const float on, const float f, const float neutral) { return mix(neutral, f, on); }
+#endif
 #ifndef WG_FN_wg_shaped_prediction
 #define WG_FN_wg_shaped_prediction
 // Eq. 3.1 with switches: shape = (minHeight, maxHeight, inclination intensity, unused),
-// terms = (inclination, sun, height, wind), each on above 0.5.
+// terms = (inclination, sun, height, wind).
 // A switched-off factor counts as 1, and so does its weight (w1 sun, w3 height).
 // windFlow is eq. 3.6's f_wind at p (weather_wind_flow, computed per vertex).
 float wg_shaped_prediction(const vec3 n, const vec3 nd, const vec3 p, const float terrain, const float windFlow, vec4 w,
                            const vec4 shape, const vec4 terms) {
-  // Selects, not lerps: the injected terms are constants, so spirv-opt drops what is off.
-  w.x = terms.y > 0.5 ? w.x : 1.0;
-  w.z = terms.z > 0.5 ? w.z : 1.0;
-  float inc = terms.x > 0.5 ? wg_inclination(n, nd, shape.z) : 1.0;
-  float sun = terms.y > 0.5 ? wg_sun_facing(n, weather_sunDirection, weather_sunMelt) : 1.0;
-  float h = terms.z > 0.5 ? wg_height(p.y, shape.x, shape.y) : 1.0;
-  float wind = terms.w > 0.5 ? wg_wind_from_flow(n, weather_windDirection, windFlow, weather_windIntensity) : 0.0;
+  w.x = wg_switched_term(terms.y, w.x, 1.0);
+  w.z = wg_switched_term(terms.z, w.z, 1.0);
+  float inc = wg_switched_term(terms.x, wg_inclination(n, nd, shape.z), 1.0);
+  float sun = wg_switched_term(terms.y, wg_sun_facing(n, weather_sunDirection, weather_sunMelt), 1.0);
+  float h = wg_switched_term(terms.z, wg_height(p.y, shape.x, shape.y), 1.0);
+  float wind = wg_switched_term(terms.w, wg_wind_from_flow(n, weather_windDirection, windFlow, weather_windIntensity), 0.0);
   return wg_prediction(inc, sun, h, terrain, wind, w);
 }
 #endif

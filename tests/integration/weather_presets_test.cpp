@@ -210,6 +210,38 @@ TEST(WeatherFolding, RockWithoutDisplacementEmitsNoSnowOffset) {
   EXPECT_TRUE(calls(surfaceBody(readFile(dir.path() / "flat" / "rock.frag.glsl")), "wg_snow_coverage"));
 }
 
+// A slope blend: the terrain's moss comes from its steep preset and fades in with the
+// slope; its prediction's switches move with the slope. Without the blend the terrain
+// has no moss, and --weather-preset replaces the blend with the preset.
+TEST(WeatherSlopeBlend, SteepPartsTakeTheSteepPresetsEffectsAndTerms) {
+  TempDir dir("slope-blend");
+  fs::path graph = dir.path() / "terrain.json";
+  auto json = nlohmann::ordered_json::parse(readFile(fs::path(WG_SOURCE_DIR) / "graphs" / "terrain.json"));
+  ASSERT_TRUE(json["weather"].contains("steep"));
+  json["weather"]["steep"]["slope"] = {20, 50};
+  writeFile(graph, json.dump(2));
+  auto r = compile(graph, dir.path() / "blend", "--target glsl");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::string body = surfaceBody(readFile(dir.path() / "blend" / "terrain.frag.glsl"));
+  EXPECT_TRUE(calls(body, "wg_moss_coverage"));
+  EXPECT_FALSE(calls(body, "wg_terrain_orientation")) << "the terrain has no terrain under it to blend into";
+  // The flat angle's cosine and the steep one's bound the smoothstep of the normal's up.
+  EXPECT_NE(body.find("smoothstep(0.64278764, 0.9396926,"), std::string::npos) << body;
+  EXPECT_NE(body.find("mix(vec4(0.0, 0.0, 1.0, 1.0), vec4(1.0), "), std::string::npos) << body;
+  auto reflection = nlohmann::json::parse(readFile(dir.path() / "blend" / "terrain.reflect.json"));
+  EXPECT_EQ(reflection["weather"]["steep"], nlohmann::json::parse(R"({"preset": "rock", "slope": [20.0, 50.0]})"));
+
+  json["weather"] = "terrain";
+  writeFile(graph, json.dump(2));
+  ASSERT_EQ(compile(graph, dir.path() / "plain", "--target glsl").exitCode, 0);
+  const std::string plain = surfaceBody(readFile(dir.path() / "plain" / "terrain.frag.glsl"));
+  EXPECT_FALSE(calls(plain, "wg_moss_coverage"));
+
+  r = compile(fs::path(WG_SOURCE_DIR) / "graphs" / "terrain.json", dir.path() / "override", "--target glsl --weather-preset terrain");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(readFile(dir.path() / "override" / "terrain.frag.glsl"), readFile(dir.path() / "plain" / "terrain.frag.glsl"));
+}
+
 // ---------------------------------------------------------------------------------------
 // Weather block errors.
 
@@ -292,6 +324,21 @@ TEST(WeatherErrors, BadWeightsShapeIsWG4007AndAWeightOutOfRangeWG4002) {
   expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "terms": [1, 1, 1]})")), "WG4007", "/weather/terms");
   expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "terms": [1, 0, 1, 0.5]})")), "WG4007",
              "/weather/terms/3");
+}
+
+TEST(WeatherErrors, ABadSlopeBlendNamesItsMember) {
+  TempDir dir("weather-err");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "terrain", "steep": {"preset": "rock", "slope": [45, 30]}})")),
+             "WG4007", "/weather/steep/slope");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "terrain", "steep": {"preset": "rock", "slope": [30]}})")),
+             "WG4007", "/weather/steep/slope");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "terrain", "steep": {"preset": "road"}})")), "WG4007",
+             "/weather/steep/preset");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "terrain", "steep": {"preset": "none"}})")), "WG4007",
+             "/weather/steep/preset");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "terrain", "steep": {"preset": "rock", "angle": 3}})")),
+             "WG4006", "/weather/steep/angle");
+  expectOnly(compileText(dir, minimalGraph(R"({"preset": "terrain", "steep": "rock"})")), "WG4007", "/weather/steep");
 }
 
 TEST(WeatherErrors, ReservedParameterPrefixIsWG4004WithAnActivePreset) {
