@@ -320,7 +320,8 @@ std::vector<CompileResult> compileJobs(const VariantPlan& plan, const CompileOpt
   ProgressLine progress(plan.jobs.size(), !o.quiet && !o.json && ::isatty(STDERR_FILENO));
   std::vector<CompileResult> results = compileBatch(plan.jobs, options, jobs, [&](std::size_t index, std::size_t done) {
     const CompileJob& job = plan.jobs[index];
-    progress.update(done, job.switches.empty() ? job.graph : job.graph + " [" + variantName(job.switches) + "]");
+    const SwitchValues& variant = plan.variantOf[index];
+    progress.update(done, variant.empty() ? job.graph : job.graph + " [" + variantName(variant) + "]");
   });
   progress.finish();
   return results;
@@ -347,7 +348,7 @@ std::vector<GraphOutput> groupByGraph(const VariantPlan& plan, std::vector<Compi
     g.graph = plan.jobs[j].graph;
     g.stem = fileStemFor(r.material->name);
     g.variants.push_back(&*r.material);
-    g.switches.push_back(plan.jobs[j].switches);
+    g.switches.push_back(plan.variantOf[j]);
   }
   return outputs;
 }
@@ -454,11 +455,11 @@ int writeCompiled(const std::vector<GraphOutput>& outputs, const VariantPlan& pl
 int runCompileCommand(int argc, char** argv) {
   Options o;
   if (auto exit = parseCompileOptions(argc, argv, o)) return *exit;
+  CompileOptions options = compileOptionsFor(o);
   VariantPlan plan;
-  if (std::string e = planVariants(o.graphs, o.variants, plan); !e.empty()) return usageError(e, o.json);
+  if (std::string e = planVariants(o.graphs, o.variants, options.quality, plan); !e.empty()) return usageError(e, o.json);
   std::optional<CompileCache> cache;
   if (std::string e = openCompileCache(o, cache); !e.empty()) return usageError(e, o.json);
-  CompileOptions options = compileOptionsFor(o);
   if (o.dumpIrAfter) return dumpIrAfterPass(plan.jobs, *o.dumpIrAfter, options, o.json);
   options.cache = cache ? &*cache : nullptr;
   std::vector<CompileResult> results = compileJobs(plan, options, o);

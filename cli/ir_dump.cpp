@@ -7,6 +7,7 @@
 #include "compiler/graph_loader.hpp"
 #include "compiler/ir_text.hpp"
 #include "compiler/literal.hpp"
+#include "compiler/quality_tiers.hpp"
 
 namespace wg {
 
@@ -22,7 +23,9 @@ namespace {
 
 // "# rock.json [moss=off] after cse": which compile and which pass the IR below is.
 std::string dumpHeader(const CompileJob& job, std::string_view pass) {
-  std::string variant = job.switches.empty() ? "" : " [" + quoteUserText(variantName(job.switches)) + "]";
+  SwitchValues values = job.switches;  // with the job's tier, as --variants names it
+  if (job.quality) values[std::string(kQualitySwitch)] = *job.quality;
+  std::string variant = values.empty() ? "" : " [" + quoteUserText(variantName(values)) + "]";
   return "# " + quoteUserText(job.graph) + variant + " after " + std::string(pass) + "\n";
 }
 
@@ -31,8 +34,10 @@ std::string dumpHeader(const CompileJob& job, std::string_view pass) {
 int dumpIrAfterPass(const std::vector<CompileJob>& jobs, const std::string& passName, CompileOptions options, bool json) {
   DiagnosticList diagnostics;
   options.passes.verifyBetweenPasses = true;  // a debugging session wants the first broken invariant
+  const QualityChoice quality = options.quality;
   for (const CompileJob& job : jobs) {
     options.switches = job.switches;
+    options.quality.requested = job.quality ? job.quality : quality.requested;
     options.passes.afterPass = [&](const Pass& pass, const IrGraph& graph) {
       if (passName != kDumpIrAfterEveryPass && pass.name != passName) return;
       std::fputs((dumpHeader(job, pass.name) + formatIrText(graph)).c_str(), stdout);

@@ -90,16 +90,18 @@ std::optional<CompiledMaterial> compileForStats(const std::string& graph, const 
 
 // Every row of one graph; false when it does not compile.
 bool graphRows(const std::string& graph, const Options& o, std::vector<StatsRow>& rows) {
-  const std::optional<CompiledMaterial> none = compileForStats(graph, o, "none", std::nullopt);
-  if (!none) return false;
-  std::map<std::pair<ShaderStage, ShaderLanguage>, std::size_t> bare;  // preset none, per stage and language
-  for (ShaderStage stage : kStages)
-    for (ShaderLanguage language : kLanguages)
-      bare[{stage, language}] = countInstructions(optimizeSpirv(none->stage(language, stage).spirv));
   std::vector<std::string> tiers;
   for (const QualityTier& t : qualityTiers())
     if (!o.quality || *o.quality == t.name) tiers.emplace_back(t.name);
   for (const std::string& tier : tiers) {
+    // Against preset none at the same tier: a graph's own "quality" switch follows the
+    // tier, and what it drops from the material is not the weather's.
+    const std::optional<CompiledMaterial> none = compileForStats(graph, o, "none", tier);
+    if (!none) return false;
+    std::map<std::pair<ShaderStage, ShaderLanguage>, std::size_t> bare;
+    for (ShaderStage stage : kStages)
+      for (ShaderLanguage language : kLanguages)
+        bare[{stage, language}] = countInstructions(optimizeSpirv(none->stage(language, stage).spirv));
     const std::optional<CompiledMaterial> m = compileForStats(graph, o, o.weatherPreset, tier);
     if (!m) return false;
     const auto [uniformBytes, interpolants] = interfaceSizes(*m);

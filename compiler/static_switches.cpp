@@ -5,6 +5,7 @@
 
 #include "compiler/graph_loader.hpp"
 #include "compiler/literal.hpp"
+#include "compiler/quality_tiers.hpp"
 
 namespace wg {
 
@@ -208,12 +209,25 @@ bool resolveStaticSwitches(MaterialGraph& graph, const SwitchValues& requested, 
   return SwitchResolver(graph, document, diagnostics).run(requested);
 }
 
-std::vector<SwitchDecl> declaredSwitchesOf(const std::string& path) {
+namespace {
+// The graph, or nullopt when it does not load (its compile reports why, once).
+std::optional<MaterialGraph> loadQuietly(const std::string& path) {
   DiagnosticList ignored;
   auto text = readGraphFile(path, ignored);
   auto document = text ? parseJsonDocument(path, std::move(*text), ignored) : std::nullopt;
-  auto graph = document ? loadMaterialGraph(*document, ignored) : std::nullopt;
+  return document ? loadMaterialGraph(*document, ignored) : std::nullopt;
+}
+}  // namespace
+
+std::vector<SwitchDecl> declaredSwitchesOf(const std::string& path) {
+  auto graph = loadQuietly(path);
   return graph ? graph->switches : std::vector<SwitchDecl>{};
+}
+
+std::vector<SwitchDecl> variantAxesOf(const std::string& path, const QualityChoice& quality) {
+  auto graph = loadQuietly(path);
+  if (!graph) return withQualityAxis({}, quality.fallback);
+  return withQualityAxis(graph->switches, chosenTierName(quality, graph->weather));
 }
 
 std::optional<VariantSelection> parseVariantSelection(std::string_view text, std::string& error) {

@@ -39,6 +39,11 @@ bool resolveStaticSwitches(MaterialGraph& graph, const SwitchValues& requested, 
 // (its compile reports why, once, with the rest).
 std::vector<SwitchDecl> declaredSwitchesOf(const std::string& path);
 
+struct QualityChoice;
+// What --variants enumerates for a graph file: its switches and the quality tier as the
+// switch "quality" (compiler/quality_tiers.hpp), defaulting to the tier it compiles at.
+std::vector<SwitchDecl> variantAxesOf(const std::string& path, const QualityChoice& quality);
+
 // The CLI's --variants: "all", or a comma-separated list of SWITCH (all its values) and
 // SWITCH=V1|V2 (those values). Switches not named keep their default.
 struct VariantSelection {

@@ -11,6 +11,20 @@ namespace wg {
 
 namespace {
 
+// Effects that change nothing without the layers they act on are off, so a material's
+// reflection and content hash say what its shaders do: two tiers that differ only in
+// such effects give one shader set.
+void clearDeadEffects(WeatherEffects& e) {
+  const bool snowOrIce = e.snow || e.ice;
+  e.skyExposure = e.skyExposure && (e.snow || e.wetness || e.puddles || e.hoarfrost || e.foliageDensity);
+  e.displacement = e.displacement && e.snow;
+  e.terrainOrientation = e.terrainOrientation && e.snow;
+  e.relief = e.relief && snowOrIce;
+  e.ripple = e.ripple && e.wetness;
+  // Wet roughness, and the footprint-widened edges of melting snow's patches.
+  e.specularAntiAliasing = e.specularAntiAliasing && (e.wetness || e.snow);
+}
+
 WeatherConfig makePreset(std::string name) {
   WeatherConfig c;
   c.preset = std::move(name);
@@ -36,6 +50,7 @@ WeatherConfig makePreset(std::string name) {
     // Figures 5.7 and 5.12: wetness, puddles and frost, no displacement.
     e.wetness = e.puddles = e.hoarfrost = true;
   }
+  clearDeadEffects(c.effects);
   return c;
 }
 
@@ -362,6 +377,7 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
   if (!applyQuality(quality, named.overrides, pointer, *config, errors)) return std::nullopt;
   if (named.overrides) applyOverrides(*named.overrides, pointer, *config, errors);
   if (!applyEffectOverrides(effectOverrides, *config, diags)) return std::nullopt;
+  if (config->active()) clearDeadEffects(config->effects);
   return errors.ok ? config : std::nullopt;
 }
 

@@ -19,6 +19,7 @@ std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, co
     if (!variant.modules) variant.modules = &modules;
     variant.switches = batch[i].switches;
     if (batch[i].weatherPreset) variant.weatherPreset = batch[i].weatherPreset;
+    if (batch[i].quality) variant.quality.requested = batch[i].quality;
     results[i] = variant.cache ? variant.cache->compileFile(batch[i].graph, variant)
                                : compileMaterialFile(batch[i].graph, variant);
     std::lock_guard<std::mutex> lock(reportLock);

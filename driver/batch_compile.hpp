@@ -15,6 +15,7 @@ struct CompileJob {
   std::string graph;
   SwitchValues switches;
   std::optional<std::string> weatherPreset = std::nullopt;  // replaces the batch options' preset
+  std::optional<std::string> quality = std::nullopt;        // the tier, replacing the batch options'
 };
 
 // onDone(index, completedCount) is called after each graph, from the worker that did

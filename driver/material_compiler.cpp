@@ -58,11 +58,15 @@ std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string tex
   auto document = parseJsonDocument(file, std::move(text), diagnostics);
   if (!document) return std::nullopt;
   auto graph = loadMaterialGraph(*document, diagnostics);
-  if (!graph || !resolveStaticSwitches(*graph, options.switches, *document, diagnostics)) return std::nullopt;
+  if (!graph) return std::nullopt;
+  SwitchValues switches = options.switches;
+  QualityChoice quality = options.quality;
+  bindQualitySwitch(*graph, switches, quality);
+  if (!resolveStaticSwitches(*graph, switches, *document, diagnostics)) return std::nullopt;
   IrBuildOptions buildOptions;
   buildOptions.weatherPreset = options.weatherPreset;
   buildOptions.weatherEffects = options.weatherEffects;
-  buildOptions.quality = options.quality;
+  buildOptions.quality = quality;
   auto ir = buildIr(*graph, *document, diagnostics, buildOptions);
   if (!ir) return std::nullopt;
   if (auto violation = runPassPipeline(*ir, options.passes)) {

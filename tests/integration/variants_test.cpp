@@ -36,10 +36,11 @@ TEST(Variants, AllEmitsEveryPermutationUnderAStableName) {
   auto r = compileRock(dir.path(), "--variants all --target glsl,spirv");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   nlohmann::json index = readIndex(dir.path());
-  EXPECT_EQ(variantNames(index), (std::vector<std::string>{"moss=off,quality=low", "moss=off,quality=high",
-                                                           "moss=on,quality=low", "moss=on,quality=high"}));
-  // With the rock preset every switch changes the shaders: four file sets.
-  EXPECT_EQ(index["shaderSetCount"], 4);
+  EXPECT_EQ(variantNames(index),
+            (std::vector<std::string>{"moss=off,quality=low", "moss=off,quality=medium", "moss=off,quality=high",
+                                      "moss=on,quality=low", "moss=on,quality=medium", "moss=on,quality=high"}));
+  // With the rock preset every switch and tier changes the shaders: six file sets.
+  EXPECT_EQ(index["shaderSetCount"], 6);
   for (const auto& v : index["variants"]) {
     std::string hash = v["contentHash"];
     auto reflection = nlohmann::json::parse(readFile(dir.path() / v["reflection"].get<std::string>()));
@@ -54,22 +55,24 @@ TEST(Variants, AllEmitsEveryPermutationUnderAStableName) {
   // The default variant is exactly what a compile without --variants produces.
   TempDir plain("variants-plain");
   ASSERT_EQ(compileRock(plain.path(), "--target glsl,spirv").exitCode, 0);
-  std::string defaultHash = index["variants"][3]["contentHash"];
+  std::string defaultHash = index["variants"][5]["contentHash"];
   EXPECT_EQ(readFile(plain.path() / "rock.frag.glsl"), readFile(dir.path() / ("rock." + defaultHash + ".frag.glsl")));
 }
 
 TEST(Variants, IdenticalShadersAreStoredOnce) {
-  // Without weather the moss switch changes nothing, so its two values share files.
+  // Without weather the moss switch changes nothing, so its two values share files;
+  // rock's quality switch drops its detail normal map at the low tier only.
   TempDir dir("variants-dedupe");
   auto r = compileRock(dir.path(), "--variants all --weather-preset none --target glsl");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   nlohmann::json index = readIndex(dir.path());
-  ASSERT_EQ(index["variantCount"], 4);
+  ASSERT_EQ(index["variantCount"], 6);
   EXPECT_EQ(index["shaderSetCount"], 2);
   std::set<std::string> hashes;
   for (const auto& v : index["variants"]) hashes.insert(v["contentHash"]);
   EXPECT_EQ(hashes.size(), 2u);
-  EXPECT_EQ(index["variants"][0]["contentHash"], index["variants"][2]["contentHash"]);  // moss off/on, quality low
+  EXPECT_EQ(index["variants"][0]["contentHash"], index["variants"][3]["contentHash"]);  // moss off/on, quality low
+  EXPECT_EQ(index["variants"][1]["contentHash"], index["variants"][2]["contentHash"]);  // medium, high
   // Two file sets of 3 files (vert, frag, reflection) and the index.
   EXPECT_EQ(listFiles(dir.path()).size(), 2u * 3u + 1u);
 }
@@ -78,10 +81,49 @@ TEST(Variants, ListSelectsSwitchesAndValues) {
   TempDir dir("variants-list");
   ASSERT_EQ(compileRock(dir.path() / "a", "--variants quality --target glsl").exitCode, 0);
   EXPECT_EQ(variantNames(readIndex(dir.path() / "a")),
-            (std::vector<std::string>{"moss=on,quality=low", "moss=on,quality=high"}));
+            (std::vector<std::string>{"moss=on,quality=low", "moss=on,quality=medium", "moss=on,quality=high"}));
   ASSERT_EQ(compileRock(dir.path() / "b", "--variants " + shellQuote("moss=off,quality=high|low") + " --target glsl").exitCode, 0);
   EXPECT_EQ(variantNames(readIndex(dir.path() / "b")),
             (std::vector<std::string>{"moss=off,quality=low", "moss=off,quality=high"}));
+}
+
+// The tier is a variant axis of every graph. A road without ripple or specular
+// anti-aliasing: medium and high differ only in relief, which a road (no snow or ice)
+// cannot show, so they share one content hash; low drops sky exposure and differs.
+TEST(Variants, TiersWithIdenticalShadersShareOneHash) {
+  TempDir dir("variants-tiers");
+  nlohmann::json road = nlohmann::json::parse(readFile(std::string(WG_SOURCE_DIR) + "/graphs/road.json"));
+  road["weather"] = {{"preset", "road"}, {"effects", {{"ripple", false}, {"specularAntiAliasing", false}}}};
+  const fs::path graph = dir.path() / "road.json";
+  testing::writeFile(graph, road.dump());
+  auto r = runCommand(shellQuote(WG_CLI_PATH) + " compile " + shellQuote(graph.string()) + " -o " +
+                      shellQuote((dir.path() / "out").string()) + " --variants all --target glsl");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  nlohmann::json index = nlohmann::json::parse(readFile(dir.path() / "out" / "road.variants.json"));
+  EXPECT_EQ(index["switches"]["quality"]["values"], (std::vector<std::string>{"low", "medium", "high"}));
+  EXPECT_EQ(index["switches"]["quality"]["default"], "high");
+  EXPECT_EQ(variantNames(index), (std::vector<std::string>{"quality=low", "quality=medium", "quality=high"}));
+  EXPECT_EQ(index["shaderSetCount"], 2);
+  EXPECT_EQ(index["variants"][1]["contentHash"], index["variants"][2]["contentHash"]);
+  EXPECT_NE(index["variants"][0]["contentHash"], index["variants"][1]["contentHash"]);
+  // Each tier's reflection says what its shaders do.
+  auto effects = [&](int v) {
+    return nlohmann::json::parse(readFile(dir.path() / "out" / index["variants"][v]["reflection"].get<std::string>()))
+        ["weather"]["effects"];
+  };
+  EXPECT_FALSE(effects(0)["skyExposure"].get<bool>());
+  EXPECT_TRUE(effects(2)["skyExposure"].get<bool>());
+  EXPECT_FALSE(effects(2)["relief"].get<bool>());
+}
+
+// --quality picks the tier a selection that does not name "quality" compiles at.
+TEST(Variants, QualityIsTheDefaultOfTheTierAxis) {
+  TempDir dir("variants-quality");
+  ASSERT_EQ(compileRock(dir.path(), "--variants moss --quality medium --target glsl").exitCode, 0);
+  nlohmann::json index = readIndex(dir.path());
+  EXPECT_EQ(variantNames(index), (std::vector<std::string>{"moss=off,quality=medium", "moss=on,quality=medium"}));
+  EXPECT_EQ(index["switches"]["quality"]["values"], (std::vector<std::string>{"low", "medium", "high"}));  // rock's own
+  EXPECT_EQ(index["switches"]["quality"]["default"], "medium");
 }
 
 TEST(Variants, OutputIsByteIdenticalWhateverTheJobCount) {

@@ -106,28 +106,27 @@ TEST(WeatherLooksSwitch, RocksLowQualityVariantDropsTheLooks) {
   EXPECT_TRUE(contains(text, "= wg_snow_coverage("));
 }
 
-// Relief on a road (no snow or ice) changes no shader, but the reflection lists the
-// effect: the variants must not share one content hash, or their files would collide.
-TEST(WeatherLooksSwitch, AnEffectThatChangesNoShaderStillKeysItsVariantsFiles) {
+// Relief on a road (no snow or ice) changes no shader, so it is off in the reflection
+// and the content hash: the variants share one file set, and the graph's own hash.
+TEST(WeatherLooksSwitch, AnEffectThatChangesNoShaderSharesItsVariantsFiles) {
   json doc = json::parse(readFile(std::string(WG_SOURCE_DIR) + "/graphs/road.json"));
-  doc["switches"] = {{"quality", {{"values", {"low", "high"}}, {"default", "high"}}}};
-  doc["weather"] = {{"preset", "road"}, {"effects", {{"relief", {{"switch", "quality"}, {"when", {"high"}}}}}}};
-  auto stem = [&](const std::string& quality) {
-    CompileResult r = compileMaterialText("road.json", doc.dump(), {.hashKeyedFileStem = true, .switches = {{"quality", quality}}});
+  doc["switches"] = {{"looks", {{"values", {"plain", "rich"}}, {"default", "rich"}}}};
+  doc["weather"] = {{"preset", "road"}, {"effects", {{"relief", {{"switch", "looks"}, {"when", {"rich"}}}}}}};
+  auto stem = [&](const std::string& looks) {
+    CompileResult r = compileMaterialText("road.json", doc.dump(), {.hashKeyedFileStem = true, .switches = {{"looks", looks}}});
     EXPECT_TRUE(r.material);
-    return r.material ? std::pair(r.material->fileStem, fragment(*r.material)) : std::pair(std::string(), std::string());
+    return r.material ? std::pair(r.material->fileStem, r.material->reflectionJson) : std::pair(std::string(), std::string());
   };
-  auto [low, lowText] = stem("low");
-  auto [high, highText] = stem("high");
-  // The same shader below the header line, which names the material's hash.
-  EXPECT_TRUE(lowText.substr(lowText.find("\nlayout")) == highText.substr(highText.find("\nlayout")));
-  EXPECT_NE(low, high);
-  // An effect left as the preset has it keeps the graph's hash.
+  auto [plain, plainReflection] = stem("plain");
+  auto [rich, richReflection] = stem("rich");
+  EXPECT_EQ(plain, rich);
+  EXPECT_EQ(plainReflection, richReflection);
+  EXPECT_FALSE(json::parse(richReflection)["weather"]["effects"]["relief"].get<bool>());
   doc.erase("switches");
   doc["weather"] = "road";
-  CompileResult plain = compileMaterialText("road.json", doc.dump(), {.hashKeyedFileStem = true});
-  ASSERT_TRUE(plain.material);
-  EXPECT_EQ(plain.material->fileStem, high);
+  CompileResult preset = compileMaterialText("road.json", doc.dump(), {.hashKeyedFileStem = true});
+  ASSERT_TRUE(preset.material);
+  EXPECT_EQ(preset.material->fileStem, rich);
 }
 
 }  // namespace
