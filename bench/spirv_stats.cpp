@@ -9,17 +9,26 @@
 //                                              graph's own preset and with preset "none",
 //                                              and the difference; then what each effect
 //                                              adds to rock (the preset minus that effect)
+//   weathergen_spirv_stats --tiers             per bundled weathered graph and stage: what
+//                                              the weather adds at each quality tier
+//                                              (GLSL), against the tiers' budgets, as
+//                                              docs/BENCHMARKS.md quotes it
 //   weathergen_spirv_stats --weather-functions one probe graph per weather op: what the
 //                                              op (its library function, inlined) adds
 //                                              to a minimal material after spirv-opt
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "bench/bench_common.hpp"
+#include "compiler/quality_tiers.hpp"
 #include "driver/material_compiler.hpp"
+#include "driver/weather_cost.hpp"
 #include "nodes/op_registry.hpp"
 
 namespace {
@@ -230,8 +239,48 @@ int weatherFunctions() {
 
 }  // namespace
 
+// One row per graph and stage with the weather's instructions at each tier (GLSL), the
+// budgets, and the largest HLSL - GLSL difference; graphs without weather are left out.
+int tierCosts(const std::vector<wg::bench::BundledGraph>& graphs) {
+  int failures = 0;
+  std::printf("| material | stage | low | medium | high | budget low / medium / high | over | HLSL - GLSL |\n");
+  std::printf("|---|---|---:|---:|---:|---|---|---:|\n");
+  for (const auto& graph : graphs) {
+    std::map<ShaderStage, std::string> costs, budgets, over;
+    std::map<ShaderStage, long> hlslDrift, glsl;
+    bool weathered = false;
+    for (const wg::QualityTier& tier : wg::qualityTiers()) {
+      wg::DiagnosticList diagnostics;
+      auto cost = wg::weatherCostAtTier(graph.path, std::string(tier.name), std::nullopt, diagnostics);
+      if (!cost) {
+        for (const auto& d : diagnostics.items()) std::fputs(wg::formatDiagnosticText(d).c_str(), stderr);
+        ++failures;
+        break;
+      }
+      weathered = weathered || cost->material.ir.weather.active();
+      for (const wg::StageCost& c : cost->stages) {
+        if (c.language == ShaderLanguage::Glsl) {
+          const int budget = wg::weatherBudget(tier, c.stage);
+          glsl[c.stage] = c.weather;
+          costs[c.stage] += (costs[c.stage].empty() ? "" : " | ") + std::string(c.weather >= 0 ? "+" : "") + std::to_string(c.weather);
+          budgets[c.stage] += (budgets[c.stage].empty() ? "" : " / ") + std::to_string(budget);
+          if (c.weather > budget) over[c.stage] += (over[c.stage].empty() ? "" : ", ") + std::string(tier.name);
+        } else {
+          hlslDrift[c.stage] = std::max(hlslDrift[c.stage], std::abs(c.weather - glsl[c.stage]));
+        }
+      }
+    }
+    if (!weathered) continue;
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
+      std::printf("| %s | %s | %s | %s | %s | %ld |\n", graph.stem.c_str(), stageName(stage), costs[stage].c_str(),
+                  budgets[stage].c_str(), over[stage].empty() ? "-" : over[stage].c_str(), hlslDrift[stage]);
+  }
+  return failures;
+}
+
 int main(int argc, char** argv) {
   if (argc == 2 && std::strcmp(argv[1], "--weather-cost") == 0) return weatherCost(wg::bench::bundledGraphs()) == 0 ? 0 : 1;
+  if (argc == 2 && std::strcmp(argv[1], "--tiers") == 0) return tierCosts(wg::bench::bundledGraphs()) == 0 ? 0 : 1;
   if (argc == 2 && std::strcmp(argv[1], "--weather-functions") == 0) return weatherFunctions() == 0 ? 0 : 1;
   std::vector<wg::bench::BundledGraph> graphs;
   for (int i = 1; i < argc; ++i)

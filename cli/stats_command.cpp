@@ -3,7 +3,6 @@
 // them (against the same graph with preset none), texture reads, branches, uniform
 // bytes and interpolants. The budgets in docs/BENCHMARKS.md are read from it.
 #include <cstdio>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -15,7 +14,7 @@
 #include "cli/option_table.hpp"
 #include "compiler/literal.hpp"
 #include "compiler/quality_tiers.hpp"
-#include "driver/material_compiler.hpp"
+#include "driver/weather_cost.hpp"
 
 namespace wg {
 
@@ -24,8 +23,9 @@ namespace {
 constexpr const char* kStatsUsage = R"(Usage: weathergen stats GRAPH... [options]
 
 For each material, quality tier, stage and language: SPIR-V instructions after
-spirv-opt, the instructions the weather adds (against preset none), texture reads,
-conditional branches, uniform bytes and interpolants, as a table or JSON.
+spirv-opt, the instructions the weather adds (against preset none at the same tier)
+and the tier's budget for them, texture reads, conditional branches, uniform bytes
+and interpolants, as a table or JSON.
 
 Options:
 )";
@@ -63,6 +63,7 @@ struct StatsRow {
   std::string material, tier, stage, language;
   SpirvStatistics spirv;
   long weather = 0;  // instructions the weather adds
+  int budget = 0;    // the tier's budget for the stage (GLSL; HLSL is held to the same)
   std::size_t uniformBytes = 0, interpolants = 0;
 };
 
@@ -74,64 +75,40 @@ std::pair<std::size_t, std::size_t> interfaceSizes(const CompiledMaterial& m) {
   return {uniformBytes, reflection.at("varyings").size()};
 }
 
-constexpr ShaderStage kStages[] = {ShaderStage::Vertex, ShaderStage::Fragment};
-constexpr ShaderLanguage kLanguages[] = {ShaderLanguage::Glsl, ShaderLanguage::Hlsl};
-
-std::optional<CompiledMaterial> compileForStats(const std::string& graph, const Options& o,
-                                                const std::optional<std::string>& preset,
-                                                const std::optional<std::string>& tier) {
-  CompileOptions options;
-  options.weatherPreset = preset;
-  options.quality.requested = tier;
-  CompileResult result = compileMaterialFile(graph, options);
-  printDiagnostics(result.diagnostics.items(), o.json);
-  return std::move(result.material);
-}
-
 // Every row of one graph; false when it does not compile.
 bool graphRows(const std::string& graph, const Options& o, std::vector<StatsRow>& rows) {
-  std::vector<std::string> tiers;
-  for (const QualityTier& t : qualityTiers())
-    if (!o.quality || *o.quality == t.name) tiers.emplace_back(t.name);
-  for (const std::string& tier : tiers) {
-    // Against preset none at the same tier: a graph's own "quality" switch follows the
-    // tier, and what it drops from the material is not the weather's.
-    const std::optional<CompiledMaterial> none = compileForStats(graph, o, "none", tier);
-    if (!none) return false;
-    std::map<std::pair<ShaderStage, ShaderLanguage>, std::size_t> bare;
-    for (ShaderStage stage : kStages)
-      for (ShaderLanguage language : kLanguages)
-        bare[{stage, language}] = countInstructions(optimizeSpirv(none->stage(language, stage).spirv));
-    const std::optional<CompiledMaterial> m = compileForStats(graph, o, o.weatherPreset, tier);
-    if (!m) return false;
-    const auto [uniformBytes, interpolants] = interfaceSizes(*m);
-    for (ShaderStage stage : kStages)
-      for (ShaderLanguage language : kLanguages) {
-        StatsRow row{m->name, tier, stage == ShaderStage::Vertex ? "vert" : "frag", std::string(languageName(language))};
-        row.spirv = spirvStatistics(optimizeSpirv(m->stage(language, stage).spirv));
-        row.weather = static_cast<long>(row.spirv.instructions) - static_cast<long>(bare.at({stage, language}));
-        row.uniformBytes = uniformBytes;
-        row.interpolants = interpolants;
-        rows.push_back(std::move(row));
-      }
+  for (const QualityTier& tier : qualityTiers()) {
+    if (o.quality && *o.quality != tier.name) continue;
+    DiagnosticList diagnostics;
+    std::optional<WeatherCost> cost = weatherCostAtTier(graph, std::string(tier.name), o.weatherPreset, diagnostics);
+    printDiagnostics(diagnostics.items(), o.json);
+    if (!cost) return false;
+    const auto [uniformBytes, interpolants] = interfaceSizes(cost->material);
+    for (const StageCost& s : cost->stages) {
+      const bool vertex = s.stage == ShaderStage::Vertex;
+      rows.push_back({cost->material.name, std::string(tier.name), vertex ? "vert" : "frag",
+                      std::string(languageName(s.language)), s.spirv, s.weather, weatherBudget(tier, s.stage),
+                      uniformBytes, interpolants});
+    }
   }
   return true;
 }
 
 void printTable(const std::vector<StatsRow>& rows) {
-  std::printf("| material | tier | stage | language | instructions | weather | texture reads | branches | uniform bytes | "
-              "interpolants |\n|---|---|---|---|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("| material | tier | stage | language | instructions | weather | budget | texture reads | branches | "
+              "uniform bytes | interpolants |\n|---|---|---|---|---:|---:|---|---:|---:|---:|---:|\n");
   for (const StatsRow& r : rows)
-    std::printf("| %s | %s | %s | %s | %zu | %+ld | %zu | %zu | %zu | %zu |\n", quoteUserText(r.material).c_str(),
-                r.tier.c_str(), r.stage.c_str(), r.language.c_str(), r.spirv.instructions, r.weather,
-                r.spirv.textureReads, r.spirv.branches, r.uniformBytes, r.interpolants);
+    std::printf("| %s | %s | %s | %s | %zu | %+ld | %d%s | %zu | %zu | %zu | %zu |\n", quoteUserText(r.material).c_str(),
+                r.tier.c_str(), r.stage.c_str(), r.language.c_str(), r.spirv.instructions, r.weather, r.budget,
+                r.weather > r.budget ? " over" : "", r.spirv.textureReads, r.spirv.branches, r.uniformBytes,
+                r.interpolants);
 }
 
 void printJson(const std::vector<StatsRow>& rows) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const StatsRow& r : rows)
     out.push_back({{"material", r.material}, {"tier", r.tier}, {"stage", r.stage}, {"language", r.language},
-                   {"instructions", r.spirv.instructions}, {"weatherInstructions", r.weather},
+                   {"instructions", r.spirv.instructions}, {"weatherInstructions", r.weather}, {"weatherBudget", r.budget},
                    {"textureReads", r.spirv.textureReads}, {"branches", r.spirv.branches},
                    {"uniformBytes", r.uniformBytes}, {"interpolants", r.interpolants}});
   std::printf("%s\n", out.dump(2).c_str());

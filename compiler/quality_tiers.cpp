@@ -8,9 +8,9 @@ namespace wg {
 namespace {
 
 constexpr std::array<QualityTier, 3> kTiers = {{
-    {"low", "seed 000's terms only: for GLSL ES and mobile GPUs", false, false},
-    {"medium", "plus sky exposure: nothing under a roof or overhang gets snow, rain or puddles", true, false},
-    {"high", "plus the looks: snow's and ice's relief, rain ripples, specular anti-aliasing", true, true},
+    {"low", "seed 000's terms only: for GLSL ES and mobile GPUs", false, false, 180, 120},
+    {"medium", "plus sky exposure: nothing under a roof or overhang gets snow, rain or puddles", true, false, 250, 120},
+    {"high", "plus the looks: snow's and ice's relief, rain ripples, specular anti-aliasing", true, true, 320, 150},
 }};
 
 }  // namespace
@@ -20,6 +20,10 @@ std::span<const QualityTier> qualityTiers() { return kTiers; }
 const QualityTier* findQualityTier(std::string_view name) {
   auto tier = std::find_if(kTiers.begin(), kTiers.end(), [name](const QualityTier& t) { return t.name == name; });
   return tier == kTiers.end() ? nullptr : &*tier;
+}
+
+int weatherBudget(const QualityTier& tier, ShaderStage stage) {
+  return stage == ShaderStage::Vertex ? tier.vertexBudget : tier.fragmentBudget;
 }
 
 std::string qualityTierList() {

@@ -13,6 +13,7 @@
 #include "compiler/material_graph.hpp"
 #include "compiler/static_switches.hpp"
 #include "compiler/weather_config.hpp"
+#include "nodes/shader_stage.hpp"
 
 namespace wg {
 
@@ -21,12 +22,17 @@ struct QualityTier {
   std::string_view summary;  // for --help and the docs
   bool skyExposure;          // sheltered points get no snow, rain or puddles
   bool looks;                // relief, ripple and specular anti-aliasing
+  // Static budgets: SPIR-V instructions the weather may add after spirv-opt, GLSL
+  // (weathergen stats; docs/BENCHMARKS.md, "Quality tiers").
+  int fragmentBudget;
+  int vertexBudget;
 };
 
 // low, medium, high: each adds to the one before.
 std::span<const QualityTier> qualityTiers();
 const QualityTier* findQualityTier(std::string_view name);  // nullptr: no such tier
 std::string qualityTierList();                              // "low, medium, high"
+int weatherBudget(const QualityTier& tier, ShaderStage stage);
 
 // Which tier a compile asks for: the caller's (--quality, Options::quality), else the
 // graph's "weather": {"quality": ...}, else the targets' default (GLSL ES and MSL, for
