@@ -20,6 +20,7 @@ render valley-snowfall --scene valley --camera orbit:210,22,45 --weather precipi
 render rocks-moss --scene rocks --camera orbit:130,28,22 --weather temperature=11,mossLevel=0.6,wetnessLevel=0.5
 render river-frozen --scene river --camera orbit:100,6,30 --weather temperature=-12,snowLevel=0.35,frostLevel=0.9
 render road-rain --scene road --camera orbit:60,4,18 --weather precipitation=0.8,temperature=7,wetnessLevel=0.8,puddleLevel=0.8,windIntensity=0.3
+render road-after-rain --scene road --camera orbit:60,4,18 --weather precipitation=0,temperature=9,wetnessLevel=1,puddleLevel=0.8
 render stand-rock-snow --material graphs/rock.json --camera sun-side --weather temperature=-4,snowLevel=0.6,frostLevel=0.5
 render model-engine-snow --model /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb \
   --model-scale 0.01 --weather temperature=-3,snowLevel=0.6,frostLevel=0.4
@@ -30,6 +31,13 @@ render materialx-marble-dry --material "$tmp/marble/standard_surface_marble_soli
 render materialx-marble-snow --material "$tmp/marble/standard_surface_marble_solid_Marble_3D.json" \
   --weather temperature=-5,precipitation=0.5,snowLevel=0.5
 rm -rf "$tmp/marble"
+# A metal: MaterialX's gold (base colour, metalness 1, roughness 0.02), dry and in snow.
+build/weathergen import -q "${WEATHERGEN_MATERIALX_EXAMPLES:-../shared/materialx}/StandardSurface/standard_surface_gold.mtlx" \
+  -o "$tmp/gold" 2>/dev/null
+render materialx-gold-dry --material "$tmp/gold/standard_surface_gold_Gold.json"
+render materialx-gold-snow --material "$tmp/gold/standard_surface_gold_Gold.json" \
+  --weather temperature=-4,precipitation=0.4,snowLevel=0.5
+rm -rf "$tmp/gold"
 # The snowfield writes a contact sheet of its key moments; keep the second: trails and ruts.
 build/weathergen render --scene snowfield --size "$size" --device cpu -q --frames "$tmp/snowfield" -o "$tmp/sheet.png"
 cp "$(ls "$tmp"/snowfield/*.png | sed -n 2p)" "$tmp/snowfield-prints.png"
