@@ -599,6 +599,12 @@ Scene valley() {
   Bounds focus = bounds(b.worldMesh(rockNames[1]));
   glm::vec3 rockCentre = (focus.min + focus.max) * 0.5f;
   b.camera("rocks", rockCentre + glm::vec3(0.f, 8.f, -22.f), rockCentre, 50.f);
+  // Eye level on the verge, across the road's puddles to a rock on the slope beyond,
+  // clear of the shelter.
+  Bounds far = bounds(b.worldMesh(rockNames[2]));
+  const glm::vec3 farRock = (far.min + far.max) * 0.5f;
+  const glm::vec2 verge(farRock.x - 6.f, kRoadZ - 12.f);
+  b.camera("puddle", {verge.x, natural(verge.x, verge.y) + 2.f, verge.y}, farRock - glm::vec3(0.f, 6.f, 0.f), 45.f);
 
   // Probes.
   glm::vec2 dry = wettestSpot(road, shelterX - road.start.x - 0.5f * kShelterSize.x + kProbeRoofMargin,

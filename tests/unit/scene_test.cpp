@@ -517,7 +517,7 @@ TEST_P(EachScene, SunBoundsAndCameras) {
         << o.name;
   }
   static const std::map<std::string, std::vector<std::string>> kCameras = {
-      {"valley", {"overview", "aerial", "shelter", "river", "rocks"}},
+      {"valley", {"overview", "aerial", "shelter", "river", "rocks", "puddle"}},
       {"rocks", {"front", "sun-side", "shade-side"}},
       {"river", {"overhead", "bank"}},
       {"road", {"overview", "under-shelter"}}};
