@@ -276,7 +276,7 @@ class Loader {
   // The member's pointer and name are built only for a report: most fields are fine.
   const nlohmann::json* member(const nlohmann::json& object, const std::string& pointer, const char* key,
                                nlohmann::json::value_t kind, std::string_view expected, bool mandatory) {
-    auto it = object.find(key);
+    auto it = object.find(std::string_view(key));  // no strlen per comparison
     if (it == object.end()) {
       if (mandatory) report(DiagCode::MissingField, pointer, {key});
       return nullptr;

@@ -19,6 +19,8 @@ Operand IrNodeBuilder::add(std::string_view opName, std::initializer_list<std::p
   node.weather = weatherNodes_;
   for (const auto& [port, operand] : inputs)
     if (!op->findInput(port)) throw std::logic_error("IrNodeBuilder: " + std::string(opName) + " has no port " + std::string(port));
+  node.inputs.reserve(op->inputs.size());
+  node.inputTypes.reserve(op->inputs.size());
   int width = 1;
   for (const auto& spec : op->inputs) {
     auto given = std::find_if(inputs.begin(), inputs.end(), [&](const auto& p) { return p.first == spec.name; });
