@@ -61,7 +61,7 @@ class StageWriter {
     for (std::size_t i = 0; i < graph_.nodes.size(); ++i)
       if (needed_[i] && !graph_.nodes[i].weather) emitNode(i, body, "  ");
     appendInterpolantWrites(body, "  ", /*weather=*/false);
-    const auto slots = stageOutputSlots(stage_);
+    const auto& slots = stageOutputSlots(stage_);
     for (std::size_t slot : slots) {
       const Operand& base = graph_.weatherGuarded() ? graph_.unweathered[slot] : graph_.outputs[slot];
       body += "  ";

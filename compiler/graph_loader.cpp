@@ -276,7 +276,7 @@ class Loader {
   // The member's pointer and name are built only for a report: most fields are fine.
   const nlohmann::json* member(const nlohmann::json& object, const std::string& pointer, const char* key,
                                nlohmann::json::value_t kind, std::string_view expected, bool mandatory) {
-    auto it = object.find(key);
+    auto it = object.find(std::string_view(key));  // no strlen per comparison
     if (it == object.end()) {
       if (mandatory) report(DiagCode::MissingField, pointer, {key});
       return nullptr;
@@ -298,9 +298,10 @@ class Loader {
   }
   void checkFields(const nlohmann::json& object, const std::string& pointer, std::span<const std::string_view> known) {
     for (const auto& [key, value] : object.items()) {
-      if ((key == "description" || key == "$schema") && !value.is_string())
+      const std::string_view name = key;  // compared without a strlen each time
+      if ((name == "description" || name == "$schema") && !value.is_string())
         report(DiagCode::WrongJsonKind, appendPointer(pointer, key), {"'" + key + "'", "a string", describeJsonKind(value)});
-      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+      if (std::find(known.begin(), known.end(), name) != known.end()) continue;
       std::string hint = unknownNameHint(key, {known.begin(), known.end()}, "known fields");
       failed_ = true;
       std::string fieldPointer = appendPointer(pointer, key);
@@ -500,10 +501,10 @@ class Loader {
       return;
     }
     for (const char* field : {"switch", "cases"})
-      if (j.contains(field))
+      if (j.contains(std::string_view(field)))
         report(DiagCode::UnknownField, appendPointer(pointer, field), {field, "only op 'switch' takes 'switch' and 'cases'"});
-    if (j.contains("inputs")) {
-      const auto& inputs = j["inputs"];
+    if (auto found = j.find(std::string_view("inputs")); found != j.end()) {
+      const auto& inputs = *found;
       std::string ip = appendPointer(pointer, "inputs");
       const OpDef* def = findOp(n.op);
       if (expectKind(inputs, ip, nlohmann::json::value_t::object, "'inputs'", "an object"))

@@ -17,13 +17,15 @@ const std::array<CoverageInfo, kCoverageCount>& coverageTerms() {
   return kTerms;
 }
 
-std::vector<std::size_t> stageOutputSlots(ShaderStage stage) {
-  std::vector<std::size_t> slots;
-  for (const auto& info : pbrFields())
-    if (info.stage == stage) slots.push_back(static_cast<std::size_t>(info.field));
-  if (stage == ShaderStage::Fragment)
-    for (std::size_t t = 0; t < kCoverageCount; ++t) slots.push_back(kPbrFieldCount + t);
-  return slots;
+const std::vector<std::size_t>& stageOutputSlots(ShaderStage stage) {
+  static const auto kSlots = [] {
+    std::array<std::vector<std::size_t>, 2> slots;  // vertex, fragment
+    for (const auto& info : pbrFields())
+      slots[info.stage == ShaderStage::Vertex ? 0 : 1].push_back(static_cast<std::size_t>(info.field));
+    for (std::size_t t = 0; t < kCoverageCount; ++t) slots[1].push_back(kPbrFieldCount + t);
+    return slots;
+  }();
+  return kSlots[stage == ShaderStage::Vertex ? 0 : 1];
 }
 
 std::optional<ValueType> signatureValueType(PortType type) {

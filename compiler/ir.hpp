@@ -61,8 +61,8 @@ const std::array<CoverageInfo, kCoverageCount>& coverageTerms();
 inline constexpr std::size_t kIrOutputCount = kPbrFieldCount + kCoverageCount;
 
 // A stage's roots as output slots: its PBR fields and, in the fragment stage, the
-// coverage terms.
-std::vector<std::size_t> stageOutputSlots(ShaderStage stage);
+// coverage terms. Made once: the stage writers ask for them per stage.
+const std::vector<std::size_t>& stageOutputSlots(ShaderStage stage);
 
 // What a fragment debug view (frame_debugView) shows instead of the lit colour: an
 // output slot, or a value the stage frame computes.

@@ -307,6 +307,8 @@ class Builder {
     node.op = &op;
     node.parameter = p.parameter;
     node.debugName = p.decl->id;
+    node.inputs.reserve(op.inputs.size());
+    node.inputTypes.reserve(op.inputs.size());
     bool ok = true;
     for (std::size_t i = 0; i < op.inputs.size(); ++i) {
       const PortSpec& spec = op.inputs[i];

@@ -17,13 +17,15 @@ Operand IrNodeBuilder::add(std::string_view opName, std::initializer_list<std::p
   IrNode node;
   node.op = op;
   node.weather = weatherNodes_;
-  for (const auto& [port, operand] : inputs)
-    if (!op->findInput(port)) throw std::logic_error("IrNodeBuilder: " + std::string(opName) + " has no port " + std::string(port));
+  node.inputs.reserve(op->inputs.size());
+  node.inputTypes.reserve(op->inputs.size());
   int width = 1;
+  std::size_t matched = 0;
   for (const auto& spec : op->inputs) {
     auto given = std::find_if(inputs.begin(), inputs.end(), [&](const auto& p) { return p.first == spec.name; });
     if (given != inputs.end()) {
       node.inputs.push_back(given->second);
+      ++matched;
     } else if (spec.defaultValue) {
       node.inputs.push_back(Operand::ofConstant(*spec.defaultValue));
     } else {
@@ -31,6 +33,10 @@ Operand IrNodeBuilder::add(std::string_view opName, std::initializer_list<std::p
     }
     if (spec.type == PortType::Generic) width = std::max(width, componentCount(node.inputs.back().type));
   }
+  // A given port no spec took is not the op's.
+  if (matched != inputs.size())
+    for (const auto& [port, operand] : inputs)
+      if (!op->findInput(port)) throw std::logic_error("IrNodeBuilder: " + std::string(opName) + " has no port " + std::string(port));
   ValueType generic = floatVectorOfWidth(width);
   for (std::size_t i = 0; i < op->inputs.size(); ++i) {
     ValueType port = portValueType(op->inputs[i].type, generic);

@@ -96,14 +96,16 @@ bool parse(const std::string& text, nlohmann::json::json_sax_t& events, int maxD
   // The SIMD scan reads whole aligned 16-byte blocks, so the block holding the final
   // NUL may reach past the text's allocation: pad it. The caller has refused text
   // holding a NUL, so the C string ends where the text does.
+  // The copy is read in place (RapidJSON decodes each string where it lies instead of
+  // copying it to a buffer of its own first).
   std::string padded;
   padded.reserve(text.size() + 16);
   padded = text;
   padded.append(15, '\0');
-  rapidjson::StringStream stream(padded.c_str());
+  rapidjson::InsituStringStream stream(padded.data());
   rapidjson::Reader reader;
   EventForwarder forwarder(events, maxDepth);
-  return !reader.Parse<Flags>(stream, forwarder).IsError();
+  return !reader.Parse<Flags | rapidjson::kParseInsituFlag>(stream, forwarder).IsError();
 }
 }  // namespace
 

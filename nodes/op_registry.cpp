@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string_view>
+#include <unordered_map>
 
 #include "nodes/core_library.hpp"
 #include "nodes/op_template_check.hpp"
@@ -25,6 +27,8 @@ namespace {
 struct Registry {
   std::vector<OpDef> ops;
   std::vector<const OpDef*> sorted;
+  // findOp's index: the front end and the passes look ops up by name for every node.
+  std::unordered_map<std::string_view, const OpDef*> byName;
   std::vector<const ShaderLibrary*> libraries;
 
   Registry() {
@@ -40,6 +44,7 @@ struct Registry {
       // A bad template is a bug in weathergen: refuse to start rather than emit it.
       if (auto error = templateError(op)) throw std::logic_error("op '" + std::string(op.name) + "': " + *error);
       sorted.push_back(&op);
+      byName.emplace(op.name, &op);
     }
     std::sort(sorted.begin(), sorted.end(),
               [](const OpDef* a, const OpDef* b) { return a->name < b->name; });
@@ -63,10 +68,9 @@ const Registry& registry() {
 }  // namespace
 
 const OpDef* findOp(std::string_view name) {
-  const auto& sorted = registry().sorted;
-  auto it = std::lower_bound(sorted.begin(), sorted.end(), name,
-                             [](const OpDef* op, std::string_view n) { return op->name < n; });
-  return (it != sorted.end() && (*it)->name == name) ? *it : nullptr;
+  const auto& byName = registry().byName;
+  auto it = byName.find(name);
+  return it == byName.end() ? nullptr : it->second;
 }
 
 std::span<const OpDef* const> allOps() { return registry().sorted; }

@@ -20,6 +20,15 @@ bool Value::allFinite() const {
 
 void appendFloat(std::string& out, float x) {
   if (x == 0.f) x = 0.f;  // folds -0 into 0 so equal constants print alike
+  // Whole numbers below 10000 in magnitude, the commonest constants, as to_chars
+  // spells them (its fixed form is shorter than "1e+04" up to there) but directly.
+  if (std::fabs(x) < 10000.f && x == std::trunc(x)) {
+    char digits[8];
+    auto end = std::to_chars(digits, digits + sizeof digits, static_cast<int>(x)).ptr;
+    out.append(digits, end);
+    out += ".0";
+    return;
+  }
   char buf[64];
   auto res = std::to_chars(buf, buf + sizeof buf, x);
   std::string_view digits(buf, static_cast<std::size_t>(res.ptr - buf));
