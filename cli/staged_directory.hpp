@@ -1,7 +1,8 @@
 // All-or-nothing output: files are written into a private staging folder inside the
 // output directory (created exclusively, so nothing planted there is followed), and
 // only when every one of them is written and synced to disk are they renamed into
-// place. A failed run leaves the output directory as it was.
+// place. A failed run leaves the output directory as it was. An output that already
+// holds the same bytes is not written again; publishing touches it.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -26,6 +27,7 @@ class StagedDirectory {
   std::string syncStaged();
   std::filesystem::path directory_, staging_;
   std::vector<std::string> names_;
+  std::vector<std::string> unchanged_;  // already hold their bytes: touched on publishing
   std::vector<std::filesystem::path> created_;  // folders this run made, deepest last
   bool published_ = false;
 };

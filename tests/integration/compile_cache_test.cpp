@@ -9,6 +9,8 @@
 #include <map>
 #include <thread>
 
+#include <sys/stat.h>
+
 #include "driver/compile_cache.hpp"
 #include "process_support.hpp"
 
@@ -82,6 +84,28 @@ TEST_F(CompileCacheCli, AWarmRunWritesTheFilesAColdOneDoes) {
   EXPECT_EQ(entries().size(), 1u);
   EXPECT_TRUE(outputs("cold") == outputs("plain"));
   EXPECT_TRUE(outputs("warm") == outputs("plain"));
+}
+
+// A rebuild into the same folder leaves an output that already holds its bytes in
+// place (same inode: not created again) but touches it, so make and ninja see it as
+// fresh; an output that differs is replaced.
+TEST_F(CompileCacheCli, ARebuildTouchesUnchangedOutputsAndReplacesChangedOnes) {
+  ASSERT_EQ(compile("out", cacheFlag()).exitCode, 0);
+  const fs::path reflection = dir_.path() / "out" / "wall.reflect.json", vertex = dir_.path() / "out" / "wall.vert.glsl";
+  struct stat before {};
+  ASSERT_EQ(::stat(reflection.c_str(), &before), 0);
+  const auto old = fs::file_time_type::clock::now() - std::chrono::hours(1);
+  fs::last_write_time(reflection, old);
+  writeFile(vertex, "// edited by hand\n");
+  auto rebuild = compile("out", cacheFlag());
+  ASSERT_EQ(rebuild.exitCode, 0) << rebuild.output;
+  struct stat after {};
+  ASSERT_EQ(::stat(reflection.c_str(), &after), 0);
+  EXPECT_EQ(after.st_ino, before.st_ino) << "an unchanged output is not written again";
+  EXPECT_GT(fs::last_write_time(reflection), old + std::chrono::minutes(59)) << "but it is touched";
+  auto plain = compile("plain", "--no-cache");
+  ASSERT_EQ(plain.exitCode, 0) << plain.output;
+  EXPECT_TRUE(outputs("out") == outputs("plain")) << "the edited output is replaced";
 }
 
 TEST_F(CompileCacheCli, AWarmRunWritesTheSameDepfile) {
