@@ -2,17 +2,22 @@
 // from its file: GLSL and HLSL for both stages, each compiled to validated SPIR-V, and
 // the reflection JSON. BM_CacheHit/<graph>: the same through a warm CompileCache, which
 // reads the entry and checks every input file's digest instead.
+// BM_EndToEndStageThreads/<graph>: BM_EndToEnd with a thread per stage, up to the cores.
 #include <benchmark/benchmark.h>
 
 #include <unistd.h>
+
+#include <algorithm>
+#include <thread>
 
 #include "bench/bench_common.hpp"
 #include "driver/compile_cache.hpp"
 
 namespace {
 
-void endToEnd(benchmark::State& state, const wg::bench::BundledGraph& graph) {
-  const wg::CompileOptions options;
+void endToEnd(benchmark::State& state, const wg::bench::BundledGraph& graph, int stageThreads) {
+  wg::CompileOptions options;
+  options.stageThreads = stageThreads;
   for (auto _ : state) {
     auto result = wg::compileMaterialFile(graph.path, options);
     if (!result.material) state.SkipWithError(("does not compile: " + graph.path).c_str());
@@ -48,7 +53,12 @@ void cacheHit(benchmark::State& state, const wg::bench::BundledGraph& graph) {
 
 const bool registered = [] {
   for (const auto& graph : wg::bench::bundledGraphs()) {
-    benchmark::RegisterBenchmark(("BM_EndToEnd/" + graph.stem).c_str(), endToEnd, graph)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("BM_EndToEnd/" + graph.stem).c_str(), endToEnd, graph, 1)->Unit(benchmark::kMillisecond);
+    // The same with a thread per stage, up to the cores: wall time, as the threads share the work.
+    const int cores = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 4u));
+    benchmark::RegisterBenchmark(("BM_EndToEndStageThreads/" + graph.stem).c_str(), endToEnd, graph, cores)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
     benchmark::RegisterBenchmark(("BM_CacheHit/" + graph.stem).c_str(), cacheHit, graph)->Unit(benchmark::kMicrosecond);
   }
   return true;

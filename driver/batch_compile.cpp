@@ -1,10 +1,10 @@
 #include "driver/batch_compile.hpp"
 
-#include <atomic>
+#include <algorithm>
 #include <mutex>
-#include <thread>
 
 #include "driver/compile_cache.hpp"
+#include "driver/concurrent_indices.hpp"
 
 namespace wg {
 
@@ -14,8 +14,8 @@ std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, co
   SpirvModuleCache modules;
   std::mutex reportLock;
   std::size_t completed = 0;
-  auto compileOne = [&](std::size_t i) {
-    CompileOptions variant = options;
+  auto compileOne = [&](std::size_t i, const CompileOptions& shared) {
+    CompileOptions variant = shared;
     if (!variant.modules) variant.modules = &modules;
     variant.switches = batch[i].switches;
     if (batch[i].weatherPreset) variant.weatherPreset = batch[i].weatherPreset;
@@ -27,18 +27,17 @@ std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, co
     if (onDone) onDone(i, completed);
   };
   if (batch.empty()) return results;
-  // The first compile runs alone: glslang sets up process-wide tables on first use
-  // (Filament's matc does the same).
-  compileOne(0);
-  std::atomic<std::size_t> next{1};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < batch.size(); i = next++) compileOne(i);
-  };
-  std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), batch.size() - 1);
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  // The first compile runs alone, its stages across the threads: glslang sets up
+  // process-wide tables on first use (Filament's matc does the same). The rest share
+  // the threads graph by graph, and a batch smaller than the threads gives the spare
+  // ones to each graph's stages.
+  CompileOptions first = options;
+  first.stageThreads = std::max(jobs, 1);
+  compileOne(0, first);
+  CompileOptions rest = options;
+  const std::size_t remaining = batch.size() - 1;
+  rest.stageThreads = std::max(1, static_cast<int>(static_cast<std::size_t>(std::max(jobs, 1)) / std::max<std::size_t>(remaining, 1)));
+  forEachIndexConcurrently(remaining, jobs, [&](std::size_t i) { compileOne(i + 1, rest); });
   return results;
 }
 

@@ -16,6 +16,7 @@
 #include "compiler/name_mark.hpp"
 #include "compiler/pass_pipeline.hpp"
 #include "compiler/reflection.hpp"
+#include "driver/concurrent_indices.hpp"
 
 namespace wg {
 
@@ -188,6 +189,27 @@ bool compileStageToSpirv(CompiledStage& stage, const MaterialInterface& mi, cons
   return true;
 }
 
+// Every stage, the longest texts first so that the threads finish together. The
+// diagnostics are those of the first stage in order that fails, whatever the threads.
+bool compileStagesToSpirv(std::vector<CompiledStage>& stages, const MaterialInterface& mi, const CompileOptions& options,
+                          const std::string& file, DiagnosticList& diagnostics) {
+  std::vector<std::size_t> order(stages.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return stages[a].source.size() > stages[b].source.size(); });
+  std::vector<DiagnosticList> reports(stages.size());
+  std::vector<char> compiled(stages.size(), 0);
+  forEachIndexConcurrently(order.size(), options.stageThreads, [&](std::size_t k) {
+    const std::size_t i = order[k];
+    compiled[i] = compileStageToSpirv(stages[i], mi, options, file, reports[i]);
+  });
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    diagnostics.append(reports[i]);
+    if (!compiled[i]) return false;
+  }
+  return true;
+}
+
 // The surface files (--target surface, filament) and the reflection JSON.
 void writeSurfaceAndReflection(CompiledMaterial& material, const IrGraph& ir, const MaterialInterface& mi,
                                const std::vector<std::string>& names, const CompileOptions& options) {
@@ -222,9 +244,9 @@ CompileResult compileMaterialText(const std::string& file, std::string text, con
         material.stages.push_back(
             {language, stage, writeReferenceHostStage(*ir, embedded, language, stage, material.contentHash, names), {}, {}});
   // The SPIR-V translations need the module even when it is not wanted itself.
-  if (options.emitSpirv || options.emitMsl || options.emitGlslEs)
-    for (auto& stage : material.stages)
-      if (!compileStageToSpirv(stage, mi, options, file, result.diagnostics)) return result;
+  if ((options.emitSpirv || options.emitMsl || options.emitGlslEs) &&
+      !compileStagesToSpirv(material.stages, mi, options, file, result.diagnostics))
+    return result;
   // Only the surface files and the reflection read the surface interface.
   if (options.emitSurface || options.emitFilament || options.emitReflection)
     writeSurfaceAndReflection(material, *ir, mi, names, options);

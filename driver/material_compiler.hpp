@@ -25,6 +25,9 @@ struct CompileOptions {
   bool emitSpirv = true;
   bool emitDisassembly = false;  // .spvasm text of each SPIR-V module (compile --target spirv)
   bool optimize = false;  // spirv-opt performance passes (-O)
+  // Threads that compile the material's stages to SPIR-V at once; the output is the
+  // same for any count, so it is not part of the compile cache's key.
+  int stageThreads = 1;
   std::optional<std::string> weatherPreset;  // replaces the graph's preset (--weather-preset)
   WeatherEffectOverrides weatherEffects;     // switched over the graph's own effects (--effects)
   QualityChoice quality;                     // the tier (--quality); compiler/quality_tiers.hpp

@@ -72,6 +72,7 @@ Result compileOrThrow(std::string_view fileName, std::string_view json, const Op
   internal.emitHlsl = options.hlsl;
   internal.emitReflection = options.reflection;
   internal.optimize = options.optimize;
+  internal.stageThreads = options.threads;
   if (!options.weatherPreset.empty()) internal.weatherPreset = options.weatherPreset;
   internal.weatherEffects.assign(options.effects.begin(), options.effects.end());
   if (!options.quality.empty()) internal.quality.requested = options.quality;

@@ -46,6 +46,9 @@ struct Options {
   bool hlsl = true;
   bool reflection = true;
   bool optimize = false;       // spirv-opt's performance passes
+  // Threads that compile the four stages to SPIR-V at once (glslang, spirv-val), the
+  // calling thread among them; the result is the same for any count. 1 spawns none.
+  int threads = 1;
   std::string weatherPreset;   // "" keeps the graph's own preset
   // Quality tier: "low" (seed 000's terms), "medium" (plus sky exposure) or "high" (plus
   // the looks); "" keeps the graph's own, else high. An unknown tier is a diagnostic.

@@ -359,4 +359,19 @@ TEST(PublicApi, ConcurrentCompilesAreByteIdentical) {
   if (!failures.empty()) ADD_FAILURE() << failures.size() << " differing compiles, first: " << failures.front();
 }
 
+// Options::threads spreads one material's stages over threads: the result is the same
+// as with one, stage for stage and in the same order.
+TEST(PublicApi, ThreadsPerCompileGiveTheSameResult) {
+  ASSERT_TRUE(weathergen::initialize());
+  weathergen::Options threaded;
+  threaded.threads = 4;
+  for (const auto& g : bundledGraphs()) {
+    weathergen::Result one = weathergen::compile(g.file, g.text);
+    ASSERT_TRUE(one.ok) << g.file << "\n" << describe(one);
+    weathergen::Result four = weathergen::compile(g.file, g.text, threaded);
+    ASSERT_EQ(four.stages.size(), 4u) << g.file;
+    EXPECT_EQ(fingerprint(four), fingerprint(one)) << g.file;
+  }
+}
+
 }  // namespace

@@ -1,0 +1,12 @@
+// Runs fn(0..count-1) on up to `threads` threads, the calling one among them. Each
+// thread takes the next index in turn, so indices given in order of cost (largest
+// first) balance the threads.
+#pragma once
+#include <cstddef>
+#include <functional>
+
+namespace wg {
+
+void forEachIndexConcurrently(std::size_t count, int threads, const std::function<void(std::size_t)>& fn);
+
+}  // namespace wg
