@@ -1,4 +1,4 @@
-// GLSL 450 for Vulkan: blocks without instance names (members are globals, as in
+// GLSL 4.40 for Vulkan: blocks without instance names (members are globals, as in
 // HLSL cbuffers), explicit offsets, separate texture2D and sampler objects.
 #include <array>
 
@@ -49,7 +49,7 @@ class GlslSyntax final : public ShaderSyntax {
     const MaterialInterface& mi = *s.interface;
     std::string out;
     out.reserve(kFrameSizeHint + s.surface.size() + s.main.size());
-    out += "#version 450\n";
+    out += kGlslVersionLine;
     out += s.banner;
     // The frame block is the same for every material: format it once.
     static const std::string kFrameBlockText = [&] {

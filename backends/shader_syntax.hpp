@@ -12,6 +12,13 @@
 
 namespace wg {
 
+// The GLSL version of every stage we write and of the host's own shaders. glslang sets
+// up its built-in functions once per version in a process; from 4.50 on they add the
+// ray-tracing and mesh stages, which double that setup (half of a one-material
+// `weathergen compile`), and nothing we write needs 4.50.
+inline constexpr int kGlslVersion = 440;
+inline constexpr std::string_view kGlslVersionLine = "#version 440\n";
+
 // One stage's code before a language's frame wraps it: the material's node statements
 // and the libraries they call.
 struct StageSource {

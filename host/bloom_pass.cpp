@@ -16,7 +16,7 @@ struct BloomConstants {
   float intensity;
 };
 
-constexpr std::string_view kCommon = R"(#version 450
+constexpr std::string_view kCommon = R"(#version 440
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(push_constant) uniform Bloom { ivec2 size; ivec2 halfSize; float threshold; float intensity; } bloom;
 layout(set = 0, binding = 0, rgba16f) uniform image2D Colour;

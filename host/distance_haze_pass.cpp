@@ -66,7 +66,7 @@ void main() {
 // The pass's shader: its bindings, the frame names wg_sky reads bound to the push
 // constants, the shading library's sky functions, then main.
 std::string hazeShader(const glm::vec3& sunColor) {
-  std::string text = R"(#version 450
+  std::string text = R"(#version 440
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(push_constant) uniform Haze { mat4 clipToWorld; vec4 sun; vec4 sky; vec4 weather; vec4 range; } haze;
 layout(set = 0, binding = 0, rgba16f) uniform image2D Colour;

@@ -6,7 +6,7 @@ namespace wg {
 
 namespace {
 // Mirrors PrecipitationBlock in precipitation_pass.cpp (std140).
-constexpr std::string_view kBlock = R"(#version 450
+constexpr std::string_view kBlock = R"(#version 440
 layout(std140, set = 0, binding = 0) uniform Precipitation {
   mat4 viewProjection;
   vec4 eyeTime;     // xyz eye (world), w time (s)

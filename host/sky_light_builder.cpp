@@ -24,7 +24,7 @@ std::uint32_t reflectionTexelsBefore(std::uint32_t level) {
   return texels;
 }
 
-constexpr const char* kSkyPushConstants = R"(#version 450
+constexpr const char* kSkyPushConstants = R"(#version 440
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(push_constant) uniform Sky { vec4 sky; vec4 weather; } pc;
 )";

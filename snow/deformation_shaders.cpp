@@ -7,7 +7,7 @@ namespace {
 // Shared by the compute passes: the window (push constants) and the texel encoding of
 // deformation_texel.hpp. `originSlot` is the origin's storage position (origin mod N,
 // taken on the CPU, so no shader ever takes the modulo of a negative number).
-constexpr std::string_view kComputeHeader = R"(#version 450
+constexpr std::string_view kComputeHeader = R"(#version 440
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(push_constant) uniform Window {
   ivec2 origin;
@@ -20,7 +20,7 @@ layout(push_constant) uniform Window {
 
 // The mesh interactors' window: the same fields after the model matrix, and where the
 // undisturbed snow surface and the ground under it are (world y).
-constexpr std::string_view kMeshHeader = R"(#version 450
+constexpr std::string_view kMeshHeader = R"(#version 440
 layout(push_constant) uniform Window {
   mat4 model;
   ivec2 origin;

@@ -1,4 +1,4 @@
-// GLSL 450 of the deformation pass: stamps, normals over touched rectangles, the
+// GLSL 4.40 of the deformation pass: stamps, normals over touched rectangles, the
 // refill of printed tiles, recentring's tile transfers, and the mesh interactors' depth-from-below raster. Compiled at start-up through the project's
 // glslang wrapper; the descriptor layout comes from their SPIRV-Cross reflection.
 #pragma once

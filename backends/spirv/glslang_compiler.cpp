@@ -19,7 +19,6 @@ bool initializeGlslangProcess() {
 }
 
 namespace {
-constexpr int kGlslVersion = 450;
 constexpr int kClientInputVersion = 100;  // Vulkan client semantics version 1.00
 }  // namespace
 

@@ -24,7 +24,7 @@ bool initializeGlslangProcess();
 
 // Thread-safe: glslang's process state is initialised once, on first use.
 SpirvCompileResult compileToSpirv(std::string_view source, ShaderLanguage language, ShaderStage stage);
-// A GLSL 450 compute shader of the runtime's own passes (the deformable snow), with the
+// A GLSL compute shader (kGlslVersion) of the runtime's own passes (the deformable snow), with the
 // same glslang setup as the materials' stages.
 SpirvCompileResult compileComputeToSpirv(std::string_view glsl);
 // Empty when the module is valid in the Vulkan 1.1 environment.

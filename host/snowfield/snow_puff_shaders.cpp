@@ -5,7 +5,7 @@
 namespace wg::snow {
 
 namespace {
-constexpr std::string_view kParticle = R"(#version 450
+constexpr std::string_view kParticle = R"(#version 440
 struct Particle { vec4 positionAge; vec4 velocityLife; vec4 sizeShade; };
 )";
 
@@ -107,7 +107,7 @@ std::string_view puffVertexSource() {
   return s;
 }
 std::string_view puffFragmentSource() {
-  static const std::string s = std::string("#version 450\n") + std::string(kView) + std::string(kFragment);
+  static const std::string s = std::string("#version 440\n") + std::string(kView) + std::string(kFragment);
   return s;
 }
 

@@ -84,7 +84,7 @@ TEST(SkyIrradianceRender, RebuiltOnlyWhenTheSkyChanges) {
 // coefficients from a buffer) at each of `normals`.
 std::vector<glm::vec3> shaderIrradiance(const SkyIrradiance& sky, const std::vector<glm::vec3>& normals) {
   vk::Context& ctx = *renderContext();
-  std::string text = R"(#version 450
+  std::string text = R"(#version 440
 layout(local_size_x = 32, local_size_y = 1, local_size_z = 1) in;
 layout(std430, set = 0, binding = 0) readonly buffer Coefficients { vec4 coefficients[9]; };
 layout(std430, set = 0, binding = 1) buffer Normals { vec4 normals[]; };

@@ -92,7 +92,7 @@ TEST(CrossCompile, IsByteDeterministic) {
 }
 
 // Two textures declared in the reverse of their binding order, in two descriptor sets.
-const std::string kReversedDeclarations = R"(#version 450
+const std::string kReversedDeclarations = R"(#version 440
 layout(set = 1, binding = 4) uniform texture2D late;
 layout(set = 1, binding = 2) uniform texture2D early;
 layout(set = 1, binding = 5) uniform sampler lateSampler;

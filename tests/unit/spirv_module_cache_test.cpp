@@ -24,9 +24,9 @@ TEST(SpirvModuleCache, SharesTextsThatDifferOnlyInTheBanner) {
     m.words = {1, 2, 3};
     return m;
   };
-  const std::string a1 = "#version 450\n" + std::string(kStageBannerPrefix) + "0.1 from material aaaa\nvoid main() {}\n";
-  const std::string b1 = "#version 450\n" + std::string(kStageBannerPrefix) + "0.1 from material bbbb\nvoid main() {}\n";
-  const std::string c1 = "#version 450\n" + std::string(kStageBannerPrefix) + "0.1 from material aaaa\nvoid main() { }\n";
+  const std::string a1 = "#version 440\n" + std::string(kStageBannerPrefix) + "0.1 from material aaaa\nvoid main() {}\n";
+  const std::string b1 = "#version 440\n" + std::string(kStageBannerPrefix) + "0.1 from material bbbb\nvoid main() {}\n";
+  const std::string c1 = "#version 440\n" + std::string(kStageBannerPrefix) + "0.1 from material aaaa\nvoid main() { }\n";
   auto a = cache.get(a1, "frag.glsl", make);
   auto b = cache.get(b1, "frag.glsl", make);
   auto c = cache.get(c1, "frag.glsl", make);
