@@ -48,7 +48,9 @@ TEST(PublicWeatherApi, BlockFieldsAreTheSurfaceWeatherBlocksWeatherMembers) {
   std::set<std::string> names;
   for (const ww::BlockField& field : ww::weatherBlock(state)) {
     names.insert(field.name);
-    if (field.name == "snowLevel") EXPECT_EQ(field.value[0], 0.5f);
+    if (field.name == "snowLevel") {
+      EXPECT_EQ(field.value[0], 0.5f);
+    }
     if (field.name == "sunDirection") {
       EXPECT_EQ(field.components, 3u);
       EXPECT_FLOAT_EQ(field.value[1], 1.f);  // normalised

@@ -420,11 +420,13 @@ TEST(WeatherProperties, SunFacingSlopesHoldLessSnowButThirtyDegreesIsNotBare) {
         const double toward = meanCoverage(rock, frame, CoverageTerm::Snow, 0.f, tiltedTowards(tilt, azimuth), kFlatDetail);
         const double away = meanCoverage(rock, frame, CoverageTerm::Snow, 0.f, tiltedTowards(-tilt, azimuth), kFlatDetail);
         EXPECT_LE(toward, away + kTolerance) << tilt << " degree slope, sun at " << elevation << " degrees";
-        if (tilt == 30.f)
+        if (tilt == 30.f) {
           EXPECT_GT(toward, 0.5) << "30 degree slope facing a sun at " << elevation << " degrees is nearly bare";
-        if (tilt == 45.f && elevation <= 15.f)
+        }
+        if (tilt == 45.f && elevation <= 15.f) {
           EXPECT_LT(toward, away - 0.1) << "45 degree slope, sun at " << elevation << " degrees: facing it " << toward
                                         << ", facing away " << away;
+        }
       }
     }
   }
