@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -222,16 +223,20 @@ struct GraphOutput {
   std::vector<SwitchValues> switches;
 };
 
-// path -> bytes for one graph. Identical variants have one content hash and so one file
-// set; the bytes are compared anyway, so a hash collision could never lose a shader.
-std::optional<std::map<std::string, std::string>> graphFiles(const GraphOutput& g, const std::vector<SwitchDecl>& declared,
-                                                             const Options& o, std::string& error) {
-  std::map<std::string, std::string> files;
+// path -> bytes, views into the compiled materials (and the variant indexes).
+using OutputFiles = std::map<std::string, std::string_view>;
+
+// One graph's files. Identical variants have one content hash and so one file set; the
+// bytes are compared anyway, so a hash collision could never lose a shader. With
+// --variants, the index is kept in `indexes` (a deque: its texts never move).
+std::optional<OutputFiles> graphFiles(const GraphOutput& g, const std::vector<SwitchDecl>& declared, const Options& o,
+                                      std::deque<std::string>& indexes, std::string& error) {
+  OutputFiles files;
   std::vector<VariantEntry> entries;
   for (std::size_t v = 0; v < g.variants.size(); ++v) {
     const CompiledMaterial& m = *g.variants[v];
     for (auto& [path, bytes] : materialOutputs(m, o.targets, o.outputDir)) {
-      auto [it, inserted] = files.emplace(path, std::move(bytes));
+      auto [it, inserted] = files.emplace(path, bytes);
       if (!inserted && it->second != bytes) {
         error = "two variants of " + quoteUserText(g.graph) + " differ but share the content hash " + m.contentHash;
         return std::nullopt;
@@ -241,7 +246,7 @@ std::optional<std::map<std::string, std::string>> graphFiles(const GraphOutput& 
   }
   if (o.variants)
     files[(std::filesystem::path(o.outputDir) / (g.stem + ".variants.json")).string()] =
-        buildVariantIndexJson(g.variants.front()->name, declared, entries);
+        indexes.emplace_back(buildVariantIndexJson(g.variants.front()->name, declared, entries));
   return files;
 }
 
@@ -256,11 +261,12 @@ std::string outputOverwritesInput(const std::vector<DepfileRule>& rules, const s
   }
   if (!depfile.empty()) outputs.push_back({"--depfile", depfile});
   if (std::string e = inputs.checkOutputs(outputs); !e.empty()) return e;
+  if (depfile.empty()) return "";  // what follows asks only whether the depfile is an output
   std::error_code ec;
   std::set<std::filesystem::path> written;
   for (const auto& rule : rules)
     for (const auto& output : rule.outputs) written.insert(std::filesystem::weakly_canonical(output, ec));
-  if (!depfile.empty() && written.count(std::filesystem::weakly_canonical(depfile, ec)))
+  if (written.count(std::filesystem::weakly_canonical(depfile, ec)))
     return "--depfile '" + quoteUserText(depfile) + "' is one of the outputs; choose another path";
   return "";
 }
@@ -383,10 +389,10 @@ std::optional<int> reportDiagnostics(const BatchDiagnostics& diagnostics, bool j
 // Every file of every graph, known before the first is written; an exit code when two
 // variants disagree.
 std::optional<int> collectFiles(const std::vector<GraphOutput>& outputs, const VariantPlan& plan, const Options& o,
-                                std::vector<std::map<std::string, std::string>>& filesOf) {
+                                std::vector<OutputFiles>& filesOf, std::deque<std::string>& indexes) {
   for (std::size_t g = 0; g < outputs.size(); ++g) {
     std::string error;
-    auto files = graphFiles(outputs[g], plan.switchesOf[g], o, error);
+    auto files = graphFiles(outputs[g], plan.switchesOf[g], o, indexes, error);
     if (!files) {
       DiagnosticList list;
       list.report(DiagCode::InternalException, {outputs[g].graph, "", 0, 0}, {error});
@@ -400,7 +406,7 @@ std::optional<int> collectFiles(const std::vector<GraphOutput>& outputs, const V
 
 // Per graph: its files depend on the graph, its libraries and images, over every variant.
 std::vector<DepfileRule> depfileRules(const std::vector<GraphOutput>& outputs,
-                                      const std::vector<std::map<std::string, std::string>>& filesOf) {
+                                      const std::vector<OutputFiles>& filesOf) {
   std::vector<DepfileRule> rules;
   for (std::size_t g = 0; g < outputs.size(); ++g) {
     DepfileRule rule;
@@ -416,7 +422,7 @@ std::vector<DepfileRule> depfileRules(const std::vector<GraphOutput>& outputs,
 
 // All or nothing: every output is staged, then published together, then the depfile.
 // Returns the exit code and counts the files written.
-int writeOutputs(const std::vector<std::map<std::string, std::string>>& filesOf, const std::vector<DepfileRule>& rules,
+int writeOutputs(const std::vector<OutputFiles>& filesOf, const std::vector<DepfileRule>& rules,
                  const Options& o, std::size_t& written) {
   // The depfile is formatted before anything is written: a path it cannot express
   // safely stops the run with nothing written.
@@ -439,8 +445,9 @@ int writeOutputs(const std::vector<std::map<std::string, std::string>>& filesOf,
 
 // Writes every graph's files and prints the summary line on a terminal.
 int writeCompiled(const std::vector<GraphOutput>& outputs, const VariantPlan& plan, const Options& o) {
-  std::vector<std::map<std::string, std::string>> filesOf;
-  if (auto exit = collectFiles(outputs, plan, o, filesOf)) return *exit;
+  std::vector<OutputFiles> filesOf;
+  std::deque<std::string> indexes;
+  if (auto exit = collectFiles(outputs, plan, o, filesOf, indexes)) return *exit;
   std::size_t written = 0, compiled = 0;
   for (const auto& g : outputs) compiled += g.variants.size();
   if (int e = writeOutputs(filesOf, depfileRules(outputs, filesOf), o, written)) return e;

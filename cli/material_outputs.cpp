@@ -69,9 +69,9 @@ void applyOutputTargets(const OutputTargets& targets, CompileOptions& options) {
   options.quality.fallback = anyTarget && allLow ? "low" : "high";
 }
 
-std::map<std::string, std::string> materialOutputs(const CompiledMaterial& m, const OutputTargets& targets,
-                                                   const std::string& outputDir) {
-  std::map<std::string, std::string> files;
+std::map<std::string, std::string_view> materialOutputs(const CompiledMaterial& m, const OutputTargets& targets,
+                                                        const std::string& outputDir) {
+  std::map<std::string, std::string_view> files;
   std::filesystem::path dir(outputDir);
   for (const auto& s : m.stages) {
     bool wantSource = s.language == ShaderLanguage::Glsl ? targets.glsl : targets.hlsl;
@@ -80,7 +80,7 @@ std::map<std::string, std::string> materialOutputs(const CompiledMaterial& m, co
       std::string base = m.fileStem + "." + std::string(languageName(s.language)) +
                          (s.stage == ShaderStage::Vertex ? ".vert" : ".frag");
       files[(dir / (base + ".spv")).string()] =
-          std::string(reinterpret_cast<const char*>(s.spirv.data()), s.spirv.size() * sizeof(std::uint32_t));
+          std::string_view(reinterpret_cast<const char*>(s.spirv.data()), s.spirv.size() * sizeof(std::uint32_t));
       files[(dir / (base + ".spvasm")).string()] = s.disassembly;
     }
     // One translation per stage: the GLSL stages' SPIR-V (the HLSL stages' is equivalent).

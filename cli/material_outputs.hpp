@@ -31,8 +31,9 @@ std::optional<OutputTargets> parseOutputTargets(std::string_view list, std::stri
 // The compile options the targets need, and the quality tier they default to.
 void applyOutputTargets(const OutputTargets& targets, CompileOptions& options);
 
-// path -> bytes, every path under `dir` and named after the material's file stem.
-std::map<std::string, std::string> materialOutputs(const CompiledMaterial& m, const OutputTargets& targets,
-                                                   const std::string& dir);
+// path -> bytes, every path under `dir` and named after the material's file stem. The
+// bytes are views into `m`, which must outlive the map: a warm rebuild copies no output.
+std::map<std::string, std::string_view> materialOutputs(const CompiledMaterial& m, const OutputTargets& targets,
+                                                        const std::string& dir);
 
 }  // namespace wg
