@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -42,19 +43,20 @@ std::string StagedDirectory::ensureStaging() {
 
 namespace {
 // Whether `path` is a regular file (not followed through a link) holding exactly `bytes`.
+// Read a chunk at a time into one small buffer, so comparing allocates nothing and stops
+// at the first difference.
 bool holdsExactly(const std::filesystem::path& path, std::string_view bytes) {
-  int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return false;
   struct stat st {};
   bool same = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) == bytes.size();
-  std::string existing(same ? bytes.size() : 0, '\0');
-  for (std::size_t done = 0; same && done < existing.size();) {
-    ssize_t n = ::read(fd, existing.data() + done, existing.size() - done);
+  char chunk[64 * 1024];
+  for (std::size_t done = 0; same && done < bytes.size();) {
+    ssize_t n = ::read(fd, chunk, std::min(sizeof chunk, bytes.size() - done));
     if (n < 0 && errno == EINTR) continue;
-    same = n > 0;
+    same = n > 0 && std::memcmp(chunk, bytes.data() + done, static_cast<std::size_t>(n)) == 0;
     done += same ? static_cast<std::size_t>(n) : 0;
   }
-  same = same && existing == bytes;
   ::close(fd);
   return same;
 }

@@ -71,6 +71,26 @@ class Fifos(HostileCase):
                 os.remove(self.fifo)
                 os.mkfifo(self.fifo)
 
+    def test_in_place_of_an_output_or_a_cache_entry(self):
+        # A rebuild reads the file already at each output's name (to leave an unchanged
+        # one in place) and the cache's entries: a FIFO in either place is replaced, not
+        # waited on.
+        out, cache = self.path("out"), self.path("cache")
+        args = ["compile", self.graph, "-o", out, "--cache", cache, "-q"]
+        r = hs.run_cli(args, timeout=LIMIT)
+        self.assertEqual(r.returncode, 0, str(r))
+        entries = [name for name in os.listdir(cache) if name.endswith(".entry")]
+        self.assertEqual(len(entries), 1, entries)
+        for path in (os.path.join(out, "g.reflect.json"), os.path.join(cache, entries[0])):
+            with self.subTest(os.path.basename(path)):
+                os.remove(path)
+                os.mkfifo(path)
+                r = hs.run_cli(args, timeout=LIMIT)
+                self.assertClean(r)
+                self.assertFalse(r.timed_out, str(r))
+                self.assertEqual(r.returncode, 0, str(r))
+                self.assertTrue(os.path.isfile(path), "the FIFO was not replaced")
+
 
 if __name__ == "__main__":
     hs.main()
