@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
@@ -296,29 +295,6 @@ std::optional<std::string_view> entryBody(std::string_view bytes) {
   return body;
 }
 
-// Reads the entry at `path` into `buffer`, which each thread keeps from one entry to the
-// next so that a warm run does not fault in fresh pages for every entry it reads. Only
-// a regular file of at most kMaxEntryBytes (O_NONBLOCK: a FIFO put there cannot block).
-std::optional<std::string_view> readEntry(const std::filesystem::path& path, std::string& buffer) {
-  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) return std::nullopt;
-  struct stat status {};
-  std::size_t size = 0, done = 0;
-  if (::fstat(fd, &status) == 0 && S_ISREG(status.st_mode) && std::uintmax_t(status.st_size) <= kMaxEntryBytes) {
-    size = static_cast<std::size_t>(status.st_size);
-    if (buffer.size() < size) buffer.resize(size);
-    while (done < size) {
-      ssize_t n = ::read(fd, buffer.data() + done, size - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      done += static_cast<std::size_t>(n);
-    }
-  }
-  ::close(fd);
-  if (size == 0 || done != size) return std::nullopt;  // not a file, or one cut short meanwhile: a miss
-  return std::string_view(buffer.data(), size);
-}
-
 // A name no other writer, thread or process, uses at the same time.
 std::string temporaryName() {
   static std::atomic<std::uint64_t> counter{0};
@@ -339,9 +315,11 @@ bool writeWhole(const std::filesystem::path& path, std::string_view bytes) {
 }
 
 // The material an entry holds, when it is whole and every file it read is unchanged.
+// `buffer` is kept by each thread from one entry to the next, so that a warm run does
+// not fault in fresh pages for every entry it reads.
 std::optional<CompiledMaterial> readEntryFile(const std::filesystem::path& path, std::string& buffer) {
-  auto bytes = readEntry(path, buffer);
-  auto body = bytes ? entryBody(*bytes) : std::nullopt;
+  if (readRegularFile(path.string(), kMaxEntryBytes, buffer).status != FileReadStatus::Ok) return std::nullopt;
+  auto body = entryBody(buffer);
   if (!body) return std::nullopt;
   EntryReader in(*body);
   CompiledMaterial material;

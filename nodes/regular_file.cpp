@@ -1,9 +1,12 @@
 #include "nodes/regular_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 namespace wg {
 
@@ -26,11 +29,27 @@ FileRead readRegularFile(const std::string& path, std::uintmax_t maxBytes, std::
   if (kind.status != FileReadStatus::Ok) return kind;
   const std::uintmax_t size = kind.size;
   if (size > maxBytes) return {FileReadStatus::TooLarge, "larger than the limit", size};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {FileReadStatus::Unreadable, std::strerror(errno)};
+  // O_NONBLOCK and a second look at what was opened: a FIFO swapped in since the
+  // inspection cannot block the read.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return {FileReadStatus::Unreadable, std::strerror(errno)};
+  struct stat opened {};
+  if (::fstat(fd, &opened) != 0 || !S_ISREG(opened.st_mode)) {
+    ::close(fd);
+    return {FileReadStatus::NotRegular, "not a regular file (a FIFO, device or socket)"};
+  }
+  // Into the caller's string, so one kept from call to call reuses its memory. A file
+  // that grew since it was measured is read only up to the measured size.
   bytes.resize(size);
-  // A file that grew since it was measured is read only up to the measured size.
-  if (size && !in.read(bytes.data(), static_cast<std::streamsize>(size))) return {FileReadStatus::Unreadable, "read error"};
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::read(fd, bytes.data() + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  if (done != size) return {FileReadStatus::Unreadable, "read error"};
   return {FileReadStatus::Ok, "", size};
 }
 
