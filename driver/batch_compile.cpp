@@ -31,12 +31,12 @@ std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, co
   // process-wide tables on first use (Filament's matc does the same). The rest share
   // the threads graph by graph, and a batch smaller than the threads gives the spare
   // ones to each graph's stages.
-  CompileOptions first = options;
-  first.stageThreads = std::max(jobs, 1);
-  compileOne(0, first);
-  CompileOptions rest = options;
+  const std::size_t threads = static_cast<std::size_t>(std::max(jobs, 1));
   const std::size_t remaining = batch.size() - 1;
-  rest.stageThreads = std::max(1, static_cast<int>(static_cast<std::size_t>(std::max(jobs, 1)) / std::max<std::size_t>(remaining, 1)));
+  CompileOptions first = options, rest = options;
+  first.stageThreads = static_cast<int>(threads);
+  rest.stageThreads = static_cast<int>(std::max<std::size_t>(1, threads / std::max<std::size_t>(remaining, 1)));
+  compileOne(0, first);
   forEachIndexConcurrently(remaining, jobs, [&](std::size_t i) { compileOne(i + 1, rest); });
   return results;
 }
