@@ -2,6 +2,7 @@
 // Every graph is compiled before anything is written; on any error nothing is written.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
@@ -22,6 +23,8 @@
 #include "driver/compile_cache.hpp"
 #include "cli/depfile.hpp"
 #include "cli/effect_overrides_option.hpp"
+#include "cli/flag_file.hpp"
+#include "cli/persistent_worker.hpp"
 #include "cli/run_inputs.hpp"
 #include "cli/staged_directory.hpp"
 #include "cli/progress_line.hpp"
@@ -36,6 +39,8 @@
 namespace wg {
 
 namespace {
+
+constexpr const char* kPersistentWorkerFlag = "--persistent_worker";  // Bazel's spelling
 
 constexpr const char* kCompileUsageHead = R"(Usage: weathergen compile GRAPH... -o DIR [options]
 
@@ -169,6 +174,16 @@ std::vector<Option> materialAndReportOptions(Options& o) {
        "prints it after every pass) on stdout and write nothing;\n"
        "-o is not needed",
        storeChecked(o.dumpIrAfter, checkDumpIrPassName)},
+      {"--flagfile", "", "FILE",
+       "read more arguments from FILE, one a line (Bazel's\n"
+       "multiline parameter files)",
+       [](const std::string&) { return std::string("--flagfile is not read inside a flag file"); }},
+      {kPersistentWorkerFlag, "", "",
+       "serve Bazel's persistent worker protocol (JSON) on stdin\n"
+       "and stdout: each request is one compile's arguments",
+       [](const std::string&) {
+         return std::string(kPersistentWorkerFlag) + " belongs on the worker's own command line, not in a request";
+       }},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
   };
 }
@@ -183,19 +198,23 @@ OptionTable compileOptionTable(Options& o) {
   return table;
 }
 
-// Reads the command line into `o`; an exit code when the command is done (--help, or a
-// usage error already printed).
-std::optional<int> parseCompileOptions(int argc, char** argv, Options& o) {
-  o.json = jsonDiagnosticsRequested(argc, argv, 2);
+// Reads the arguments after "compile" into `o`; an exit code when the command is done
+// (--help, or a usage error already printed).
+std::optional<int> parseCompileOptions(const std::vector<std::string>& arguments, Options& o) {
+  o.json = jsonDiagnosticsRequested(arguments);
+  std::string error;
+  const std::optional<std::vector<std::string>> args = expandFlagFiles(arguments, error);
+  if (!args) return usageError(error, o.json);
+  o.json = o.json || jsonDiagnosticsRequested(*args);
   const OptionTable table = compileOptionTable(o);
-  const OptionParseResult parsed = parseOptions(table, argc, argv, 2);
+  CommandLine commandLine(*args);
+  const OptionParseResult parsed = parseOptions(table, commandLine);
   if (parsed.status == OptionParse::Failed) return usageError(parsed.error, o.json);
   if (o.help) {
     std::fputs((kCompileUsageHead + targetUsage() + kCompileUsageTail + formatOptionList(table) + kCompileUsageEnd).c_str(),
                stdout);
     return kExitOk;
   }
-  std::string error;
   auto targets = parseOutputTargets(o.targetList.value_or("all"), error);
   if (!targets) return usageError(error, o.json);
   targets->header = o.targets.header;  // set by --emit-header
@@ -457,11 +476,10 @@ int writeCompiled(const std::vector<GraphOutput>& outputs, const VariantPlan& pl
   return kExitOk;
 }
 
-}  // namespace
-
-int runCompileCommand(int argc, char** argv) {
+// One compile: the arguments after "compile".
+int compileWith(const std::vector<std::string>& arguments) {
   Options o;
-  if (auto exit = parseCompileOptions(argc, argv, o)) return *exit;
+  if (auto exit = parseCompileOptions(arguments, o)) return *exit;
   CompileOptions options = compileOptionsFor(o);
   VariantPlan plan;
   if (std::string e = planVariants(o.graphs, o.variants, options.quality, plan); !e.empty()) return usageError(e, o.json);
@@ -476,6 +494,23 @@ int runCompileCommand(int argc, char** argv) {
   reportNameCollisions(outputs, diagnostics.items);
   if (auto exit = reportDiagnostics(diagnostics, o.json)) return *exit;
   return writeCompiled(outputs, plan, o);
+}
+
+}  // namespace
+
+// With --persistent_worker (Bazel adds it to the worker's own command line) the other
+// arguments come first in every request's compile.
+int runCompileCommand(int argc, char** argv) {
+  std::vector<std::string> arguments(argv + 2, argv + argc);
+  const auto operands = std::find(arguments.begin(), arguments.end(), "--");
+  const auto worker = std::find(arguments.begin(), operands, kPersistentWorkerFlag);
+  if (worker == operands) return compileWith(arguments);
+  arguments.erase(worker);
+  return runPersistentWorker([&arguments](const std::vector<std::string>& request) {
+    std::vector<std::string> all = arguments;
+    all.insert(all.end(), request.begin(), request.end());
+    return compileWith(all);
+  });
 }
 
 }  // namespace wg

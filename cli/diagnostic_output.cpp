@@ -23,15 +23,28 @@ int usageError(const std::string& message, bool json) {
   return kExitUsage;
 }
 
+int internalError(const std::exception* escaped) {
+  if (escaped)
+    std::fprintf(stderr, "weathergen: error WG9900: internal error: %s\n  hint: this is a weathergen bug; please report it\n",
+                 quoteUserText(escaped->what(), 300).c_str());
+  else
+    std::fputs("weathergen: error WG9900: internal error: unknown exception\n  hint: this is a weathergen bug; please report it\n",
+               stderr);
+  return kExitInternal;
+}
+
 int briefUsageError(const std::string& message) {
   std::fprintf(stderr, "weathergen: error WG9001: %s\n", message.c_str());
   return kExitUsage;
 }
 
 bool jsonDiagnosticsRequested(int argc, char** argv, int first) {
-  for (int i = first; i < argc; ++i)
-    if (std::string(argv[i]) == "--diagnostics=json" ||
-        (std::string(argv[i]) == "--diagnostics" && i + 1 < argc && std::string(argv[i + 1]) == "json"))
+  return first < argc && jsonDiagnosticsRequested(std::vector<std::string>(argv + first, argv + argc));
+}
+
+bool jsonDiagnosticsRequested(const std::vector<std::string>& args) {
+  for (std::size_t i = 0; i < args.size(); ++i)
+    if (args[i] == "--diagnostics=json" || (args[i] == "--diagnostics" && i + 1 < args.size() && args[i + 1] == "json"))
       return true;
   return false;
 }

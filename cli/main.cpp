@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
 #include "compiler/literal.hpp"
 
 namespace {
@@ -39,12 +40,10 @@ int main(int argc, char** argv) {
   try {
     return runSubcommand(argc, argv);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "weathergen: error WG9900: internal error: %s\n  hint: this is a weathergen bug; please report it\n",
-                 wg::quoteUserText(e.what(), 300).c_str());
+    return wg::internalError(&e);
   } catch (...) {
-    std::fputs("weathergen: error WG9900: internal error: unknown exception\n  hint: this is a weathergen bug; please report it\n", stderr);
+    return wg::internalError(nullptr);
   }
-  return wg::kExitInternal;
 }
 
 int runSubcommand(int argc, char** argv) {

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Checks the WeathergenCompile spawns of a Bazel --execution_log_json_file.
 
-Usage: cache_hits.py LOG SPAWNS HITS
+Usage: cache_hits.py LOG SPAWNS HITS RUNNER
 Fails unless the log has exactly SPAWNS weathergen spawns, exactly HITS of them cache
-hits, and no absolute path or environment variable in any of their keys.
+hits, every other one run by RUNNER ("worker": the persistent worker; "local": a
+process of its own), and no absolute path or environment variable in any of their keys.
 """
 import json
 import sys
@@ -24,7 +25,7 @@ def spawns(path):
 
 
 def main():
-    log, want_spawns, want_hits = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+    log, want_spawns, want_hits, want_runner = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
     compiles = [s for s in spawns(log) if s.get("mnemonic") == "WeathergenCompile"]
     hits = [s for s in compiles if s.get("remoteCacheHit")]
     problems = []
@@ -39,7 +40,9 @@ def main():
     print("%d weathergen spawns, %d cache hits" % (len(compiles), len(hits)))
     for s in compiles:
         if not s.get("remoteCacheHit"):
-            print("  ran: %s" % s["progressMessage"])
+            print("  ran (%s): %s" % (s.get("runner"), s["progressMessage"]))
+            if s.get("runner") != want_runner:
+                problems.append("%s: ran by %s, not %s" % (s["progressMessage"], s.get("runner"), want_runner))
     if len(compiles) != want_spawns:
         problems.append("expected %d spawns" % want_spawns)
     if len(hits) != want_hits:

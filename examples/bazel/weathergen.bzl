@@ -43,8 +43,14 @@ def _weathergen_materials_impl(ctx):
         seen[name] = graph.path
         outputs = [ctx.actions.declare_file("%s/%s.%s" % (ctx.label.name, name, s)) for s in suffixes]
 
+        # "compile" starts the persistent worker; the rest is each request's arguments,
+        # in a parameter file as workers need (weathergen reads it with --flagfile when
+        # the action runs as a plain process).
+        command = ctx.actions.args()
+        command.add("compile")
         args = ctx.actions.args()
-        args.add("compile")
+        args.use_param_file("--flagfile=%s", use_always = True)
+        args.set_param_file_format("multiline")
         args.add(graph)
         args.add("-o", outputs[0].dirname)
         args.add("--target", ",".join(ctx.attr.targets))
@@ -60,10 +66,15 @@ def _weathergen_materials_impl(ctx):
         # to the graph and only known to weathergen, so the sandbox must hold them all.
         ctx.actions.run(
             executable = ctx.executable.compiler,
-            arguments = [args],
+            arguments = [command, args],
             inputs = [graph] + ctx.files.textures + ctx.files.libraries,
             outputs = outputs,
             mnemonic = "WeathergenCompile",
+            # One process compiles many materials: glslang's start-up is paid once.
+            execution_requirements = {
+                "supports-workers": "1",
+                "requires-worker-protocol": "json",
+            },
             progress_message = "Compiling material %s" % name,
         )
         all_outputs += outputs

@@ -1,0 +1,183 @@
+#include "cli/persistent_worker.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "cli/commands.hpp"
+#include "cli/diagnostic_output.hpp"
+#include "compiler/literal.hpp"
+
+namespace wg {
+
+namespace {
+
+// A response carries what its command printed, up to this much.
+constexpr std::size_t kMaxOutputBytes = 1u << 20;
+
+// Descriptors 1 and 2 point into a temporary file while a request runs, so that every
+// line its command prints, whatever prints it, reaches the response and not the protocol.
+class OutputCapture {
+ public:
+  OutputCapture() : file_(std::tmpfile()) {}
+  ~OutputCapture() {
+    if (file_) std::fclose(file_);
+  }
+  OutputCapture(const OutputCapture&) = delete;
+  OutputCapture& operator=(const OutputCapture&) = delete;
+  bool ok() const { return file_ != nullptr; }
+
+  bool begin() {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    const int fd = ::fileno(file_);
+    return ::ftruncate(fd, 0) == 0 && ::lseek(fd, 0, SEEK_SET) == 0 && ::dup2(fd, STDOUT_FILENO) >= 0 &&
+           ::dup2(fd, STDERR_FILENO) >= 0;
+  }
+
+  // Points 1 and 2 back at `log` and returns what was printed.
+  std::string end(int log) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::dup2(log, STDOUT_FILENO);
+    ::dup2(log, STDERR_FILENO);
+    const int fd = ::fileno(file_);
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) return "";
+    const std::size_t size = static_cast<std::size_t>(st.st_size);
+    std::string text(std::min(size, kMaxOutputBytes), '\0');
+    std::size_t got = 0;
+    while (got < text.size()) {
+      const ssize_t n = ::pread(fd, text.data() + got, text.size() - got, static_cast<off_t>(got));
+      if (n <= 0) break;
+      got += static_cast<std::size_t>(n);
+    }
+    text.resize(got);
+    if (size > got) text += "\n(" + std::to_string(size - got) + " more bytes of output left out)\n";
+    return text;
+  }
+
+ private:
+  std::FILE* file_;
+};
+
+enum class RequestRead { Ok, End, Malformed };
+
+// One WorkRequest: Bazel writes them one after another, with or without whitespace.
+RequestRead readRequest(std::istream& in, nlohmann::json& request, std::string& error) {
+  int c = in.peek();
+  while (c != std::char_traits<char>::eof() && std::isspace(c)) {
+    in.get();
+    c = in.peek();
+  }
+  if (c == std::char_traits<char>::eof()) return RequestRead::End;
+  try {
+    in >> request;
+  } catch (const nlohmann::json::exception& e) {
+    error = e.what();
+    return RequestRead::Malformed;
+  }
+  if (request.is_object()) return RequestRead::Ok;
+  error = "a work request must be a JSON object";
+  return RequestRead::Malformed;
+}
+
+// The request's arguments; Bazel leaves out an empty list.
+std::optional<std::vector<std::string>> requestArguments(const nlohmann::json& request, std::string& error) {
+  std::vector<std::string> arguments;
+  auto it = request.find("arguments");
+  if (it == request.end()) return arguments;
+  if (!it->is_array()) {
+    error = "the request's \"arguments\" must be an array of strings";
+    return std::nullopt;
+  }
+  for (const auto& a : *it) {
+    if (!a.is_string()) {
+      error = "the request's \"arguments\" must be an array of strings";
+      return std::nullopt;
+    }
+    arguments.push_back(a.get<std::string>());
+  }
+  return arguments;
+}
+
+std::int64_t requestId(const nlohmann::json& request) {
+  auto it = request.find("requestId");
+  return it != request.end() && it->is_number_integer() ? it->get<std::int64_t>() : 0;
+}
+
+// The command, with an escaping exception reported as main() reports it.
+int runGuarded(const WorkerCommand& command, const std::vector<std::string>& arguments) {
+  try {
+    return command(arguments);
+  } catch (const std::exception& e) {
+    return internalError(&e);
+  } catch (...) {
+    return internalError(nullptr);
+  }
+}
+
+bool writeAll(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+std::string responseLine(int exitCode, const std::string& output, std::int64_t id) {
+  nlohmann::json response = {{"exitCode", exitCode}, {"output", output}, {"requestId", id}};
+  // Output is bytes the command printed: invalid UTF-8 is replaced, not an exception.
+  return response.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace
+
+int runPersistentWorker(const WorkerCommand& command) {
+  // Responses go to the original stdout alone; stdout itself then points at stderr, the
+  // worker's log, between requests.
+  const int protocol = ::dup(STDOUT_FILENO);
+  const int log = ::dup(STDERR_FILENO);
+  OutputCapture capture;
+  if (protocol < 0 || log < 0 || ::dup2(log, STDOUT_FILENO) < 0 || !capture.ok()) {
+    std::perror("weathergen: error WG9900: internal error: the worker cannot set up its output");
+    return kExitInternal;
+  }
+  for (;;) {
+    nlohmann::json request;
+    std::string error;
+    const RequestRead read = readRequest(std::cin, request, error);
+    if (read == RequestRead::End) return kExitOk;
+    if (read == RequestRead::Malformed) {
+      std::fprintf(stderr, "weathergen: error WG9001: stdin is not Bazel's JSON worker protocol: %s\n",
+                   quoteUserText(error, 300).c_str());
+      return kExitUsage;
+    }
+    const std::int64_t id = requestId(request);
+    std::string response;
+    if (auto arguments = requestArguments(request, error)) {
+      if (!capture.begin()) {
+        capture.end(log);
+        std::perror("weathergen: error WG9900: internal error: the worker cannot capture a request's output");
+        return kExitInternal;
+      }
+      const int exitCode = runGuarded(command, *arguments);
+      response = responseLine(exitCode, capture.end(log), id);
+    } else {
+      response = responseLine(kExitUsage, "weathergen: error WG9001: " + error + "\n", id);
+    }
+    if (!writeAll(protocol, response)) return kExitInternal;
+  }
+}
+
+}  // namespace wg

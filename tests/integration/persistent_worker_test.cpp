@@ -1,0 +1,154 @@
+// `weathergen compile --persistent_worker` (Bazel's JSON worker protocol) and
+// `--flagfile`, as the Bazel rule in examples/bazel uses them. The rule's own test
+// (examples/bazel/run-cache-test.sh) runs them under Bazel; these need no Bazel.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "process_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using wg::testing::listFiles;
+using wg::testing::readFile;
+using wg::testing::runCommand;
+using wg::testing::shellQuote;
+using wg::testing::TempDir;
+using wg::testing::writeFile;
+
+const std::string kCli = shellQuote(WG_CLI_PATH);
+
+std::string graph(const std::string& name) { return std::string(WG_SOURCE_DIR) + "/graphs/" + name + ".json"; }
+
+std::string request(const std::vector<std::string>& arguments, int id) {
+  return nlohmann::json{{"arguments", arguments}, {"requestId", id}}.dump() + "\n";
+}
+
+// The worker's stdout, one response a line; fails the test on anything else there.
+std::vector<nlohmann::json> responses(const fs::path& stdoutFile) {
+  std::vector<nlohmann::json> all;
+  std::istringstream lines(readFile(stdoutFile));
+  for (std::string line; std::getline(lines, line);) {
+    auto response = nlohmann::json::parse(line, nullptr, false);
+    EXPECT_TRUE(response.is_object()) << "not a response on the worker's stdout: " << line;
+    if (response.is_object()) all.push_back(response);
+  }
+  return all;
+}
+
+// Runs a worker on `requests`; its stdout goes to dir/responses, and the result's
+// output is its stderr (the worker's log).
+wg::testing::CommandResult runWorker(const fs::path& dir, const std::string& requests) {
+  writeFile(dir / "requests", requests);
+  auto r = runCommand("(" + kCli + " compile --persistent_worker -q < " + shellQuote((dir / "requests").string()) +
+                      " > " + shellQuote((dir / "responses").string()) + " 2> " + shellQuote((dir / "log").string()) + ")");
+  r.output += readFile(dir / "log");
+  return r;
+}
+
+void expectSameFiles(const fs::path& a, const fs::path& b) {
+  ASSERT_EQ(listFiles(a), listFiles(b));
+  for (const auto& name : listFiles(a)) EXPECT_EQ(readFile(a / name), readFile(b / name)) << name;
+}
+
+TEST(PersistentWorker, EachRequestIsTheCompileItsArgumentsAsk) {
+  TempDir dir("wg-worker");
+  const std::string out = (dir.path() / "worker").string();
+  const std::string requests =
+      request({graph("rock"), "-o", out + "/rock", "--no-cache", "-j", "1"}, 7) +
+      request({(dir.path() / "missing.json").string(), "-o", out + "/missing", "--no-cache"}, 8) +
+      request({graph("road"), "-o", out + "/road", "--no-cache", "--target", "glsl"}, 9);
+  auto worker = runWorker(dir.path(), requests);
+  ASSERT_EQ(worker.exitCode, 0) << worker.output;
+  auto answers = responses(dir.path() / "responses");
+  ASSERT_EQ(answers.size(), 3u);
+  EXPECT_EQ(answers[0]["requestId"], 7);
+  EXPECT_EQ(answers[0]["exitCode"], 0) << answers[0];
+  EXPECT_EQ(answers[1]["requestId"], 8);
+  EXPECT_EQ(answers[1]["exitCode"], 1) << answers[1];
+  // The diagnostic reaches Bazel in the response, not the worker's log.
+  EXPECT_NE(answers[1]["output"].get<std::string>().find("WG1002"), std::string::npos) << answers[1];
+  EXPECT_EQ(worker.output.find("WG1002"), std::string::npos) << worker.output;
+  EXPECT_FALSE(fs::exists(out + "/missing"));
+  EXPECT_EQ(answers[2]["requestId"], 9);
+  EXPECT_EQ(answers[2]["exitCode"], 0) << answers[2];
+
+  // The same bytes as a compile of its own, and only the asked targets.
+  auto rock = runCommand(kCli + " compile " + shellQuote(graph("rock")) + " -q --no-cache -o " +
+                         shellQuote((dir.path() / "alone").string()));
+  ASSERT_EQ(rock.exitCode, 0) << rock.output;
+  expectSameFiles(out + "/rock", dir.path() / "alone");
+  EXPECT_EQ(listFiles(out + "/road"),
+            (std::vector<std::string>{"road.frag.glsl", "road.reflect.json", "road.vert.glsl"}));
+}
+
+TEST(PersistentWorker, WhatACommandPrintsGoesIntoItsResponseNotTheProtocol) {
+  TempDir dir("wg-worker");
+  auto worker = runWorker(dir.path(), request({"--help"}, 1) + request({"--no-such-option"}, 2));
+  ASSERT_EQ(worker.exitCode, 0) << worker.output;
+  auto answers = responses(dir.path() / "responses");
+  ASSERT_EQ(answers.size(), 2u);
+  EXPECT_EQ(answers[0]["exitCode"], 0);
+  EXPECT_NE(answers[0]["output"].get<std::string>().find("Usage: weathergen compile"), std::string::npos);
+  EXPECT_EQ(answers[1]["exitCode"], 2);
+  EXPECT_NE(answers[1]["output"].get<std::string>().find("--no-such-option"), std::string::npos);
+}
+
+TEST(PersistentWorker, ABadRequestIsAnsweredAndTheWorkerGoesOn) {
+  TempDir dir("wg-worker");
+  const std::string out = (dir.path() / "out").string();
+  auto worker = runWorker(dir.path(), R"({"arguments": "not a list", "requestId": 3})" "\n" +
+                                          request({graph("rock"), "-o", out, "--no-cache", "--target", "glsl"}, 4) +
+                                          request({"--persistent_worker"}, 5));
+  ASSERT_EQ(worker.exitCode, 0) << worker.output;
+  auto answers = responses(dir.path() / "responses");
+  ASSERT_EQ(answers.size(), 3u);
+  EXPECT_EQ(answers[0]["requestId"], 3);
+  EXPECT_EQ(answers[0]["exitCode"], 2);
+  EXPECT_NE(answers[0]["output"].get<std::string>().find("arguments"), std::string::npos);
+  EXPECT_EQ(answers[1]["exitCode"], 0) << answers[1];
+  EXPECT_TRUE(fs::exists(out + "/rock.frag.glsl"));
+  EXPECT_EQ(answers[2]["exitCode"], 2) << answers[2];
+}
+
+TEST(PersistentWorker, StdinThatIsNotTheProtocolIsAUsageError) {
+  TempDir dir("wg-worker");
+  auto worker = runWorker(dir.path(), "graphs/rock.json -o out\n");
+  EXPECT_EQ(worker.exitCode, 2) << worker.output;
+  EXPECT_NE(worker.output.find("WG9001"), std::string::npos) << worker.output;
+  EXPECT_NE(worker.output.find("worker protocol"), std::string::npos) << worker.output;
+  EXPECT_EQ(readFile(dir.path() / "responses"), "");
+}
+
+TEST(FlagFile, ItsLinesAreTheArguments) {
+  TempDir dir("wg-flagfile");
+  const fs::path flags = dir.path() / "rock.params";
+  writeFile(flags, graph("rock") + "\n-o\n" + (dir.path() / "from-file").string() + "\n--target\nglsl\n--no-cache\n");
+  auto fromFile = runCommand(kCli + " compile -q --flagfile=" + shellQuote(flags.string()));
+  ASSERT_EQ(fromFile.exitCode, 0) << fromFile.output;
+  auto direct = runCommand(kCli + " compile -q " + shellQuote(graph("rock")) + " -o " +
+                           shellQuote((dir.path() / "direct").string()) + " --target glsl --no-cache");
+  ASSERT_EQ(direct.exitCode, 0) << direct.output;
+  expectSameFiles(dir.path() / "from-file", dir.path() / "direct");
+}
+
+TEST(FlagFile, AnUnreadableOrNestedOneIsAUsageErrorNamingIt) {
+  TempDir dir("wg-flagfile");
+  auto missing = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "none.params").string()));
+  EXPECT_EQ(missing.exitCode, 2) << missing.output;
+  EXPECT_NE(missing.output.find("none.params"), std::string::npos) << missing.output;
+  auto directory = runCommand(kCli + " compile --flagfile=" + shellQuote(dir.path().string()));
+  EXPECT_EQ(directory.exitCode, 2) << directory.output;
+  EXPECT_NE(directory.output.find("directory"), std::string::npos) << directory.output;
+  writeFile(dir.path() / "outer.params", "--flagfile\n" + (dir.path() / "outer.params").string() + "\n");
+  auto nested = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "outer.params").string()));
+  EXPECT_EQ(nested.exitCode, 2) << nested.output;
+  EXPECT_NE(nested.output.find("inside a flag file"), std::string::npos) << nested.output;
+}
+
+}  // namespace
