@@ -21,6 +21,10 @@ bool readFlagFile(const std::string& path, std::vector<std::string>& args, std::
     error = "--flagfile '" + quoteUserText(path) + "': " + read.reason;
     return false;
   }
+  if (text.find('\0') != std::string::npos) {
+    error = "--flagfile '" + quoteUserText(path) + "' holds a NUL character; it must be text, one argument a line";
+    return false;
+  }
   if (!text.empty() && text.back() == '\n') text.pop_back();  // the last line's end
   if (text.empty()) return true;
   std::size_t start = 0;

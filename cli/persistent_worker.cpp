@@ -103,6 +103,11 @@ std::optional<std::vector<std::string>> requestArguments(const nlohmann::json& r
       error = "the request's \"arguments\" must be an array of strings";
       return std::nullopt;
     }
+    // A command line cannot hold NUL, and a path would end at it.
+    if (a.get_ref<const std::string&>().find('\0') != std::string::npos) {
+      error = "argument " + std::to_string(arguments.size() + 1) + " of the request holds a NUL character";
+      return std::nullopt;
+    }
     arguments.push_back(a.get<std::string>());
   }
   return arguments;

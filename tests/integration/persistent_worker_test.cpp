@@ -104,16 +104,21 @@ TEST(PersistentWorker, ABadRequestIsAnsweredAndTheWorkerGoesOn) {
   const std::string out = (dir.path() / "out").string();
   auto worker = runWorker(dir.path(), R"({"arguments": "not a list", "requestId": 3})" "\n" +
                                           request({graph("rock"), "-o", out, "--no-cache", "--target", "glsl"}, 4) +
-                                          request({"--persistent_worker"}, 5));
+                                          request({"--persistent_worker"}, 5) +
+                                          request({graph("rock") + std::string(1, '\0') + "x", "-o", out + "2"}, 6));
   ASSERT_EQ(worker.exitCode, 0) << worker.output;
   auto answers = responses(dir.path() / "responses");
-  ASSERT_EQ(answers.size(), 3u);
+  ASSERT_EQ(answers.size(), 4u);
   EXPECT_EQ(answers[0]["requestId"], 3);
   EXPECT_EQ(answers[0]["exitCode"], 2);
   EXPECT_NE(answers[0]["output"].get<std::string>().find("arguments"), std::string::npos);
   EXPECT_EQ(answers[1]["exitCode"], 0) << answers[1];
   EXPECT_TRUE(fs::exists(out + "/rock.frag.glsl"));
   EXPECT_EQ(answers[2]["exitCode"], 2) << answers[2];
+  // A path with a NUL in it is not cut short at the NUL and compiled.
+  EXPECT_EQ(answers[3]["exitCode"], 2) << answers[3];
+  EXPECT_NE(answers[3]["output"].get<std::string>().find("NUL"), std::string::npos) << answers[3];
+  EXPECT_FALSE(fs::exists(out + "2"));
 }
 
 TEST(PersistentWorker, StdinThatIsNotTheProtocolIsAUsageError) {
@@ -145,6 +150,11 @@ TEST(FlagFile, AnUnreadableOrNestedOneIsAUsageErrorNamingIt) {
   auto directory = runCommand(kCli + " compile --flagfile=" + shellQuote(dir.path().string()));
   EXPECT_EQ(directory.exitCode, 2) << directory.output;
   EXPECT_NE(directory.output.find("directory"), std::string::npos) << directory.output;
+  writeFile(dir.path() / "binary.params", graph("rock") + std::string(1, '\0') + "\n-o\n" + dir.path().string() + "/out\n");
+  auto binary = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "binary.params").string()));
+  EXPECT_EQ(binary.exitCode, 2) << binary.output;
+  EXPECT_NE(binary.output.find("NUL"), std::string::npos) << binary.output;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
   writeFile(dir.path() / "outer.params", "--flagfile\n" + (dir.path() / "outer.params").string() + "\n");
   auto nested = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "outer.params").string()));
   EXPECT_EQ(nested.exitCode, 2) << nested.output;
