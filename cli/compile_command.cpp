@@ -176,7 +176,8 @@ std::vector<Option> materialAndReportOptions(Options& o) {
        storeChecked(o.dumpIrAfter, checkDumpIrPassName)},
       {"--flagfile", "", "FILE",
        "read more arguments from FILE, one a line (Bazel's\n"
-       "multiline parameter files)",
+       "multiline parameter files; LF or CRLF line ends, an\n"
+       "empty line is an empty argument)",
        [](const std::string&) { return std::string("--flagfile is not read inside a flag file"); }},
       {kPersistentWorkerFlag, "", "",
        "serve Bazel's persistent worker protocol (JSON) on stdin\n"

@@ -30,7 +30,10 @@ bool readFlagFile(const std::string& path, std::vector<std::string>& args, std::
   std::size_t start = 0;
   for (;;) {
     const std::size_t end = text.find('\n', start);
-    args.push_back(text.substr(start, end - start));
+    std::string line = text.substr(start, end - start);
+    // A CRLF line end written by hand: a trailing CR would end up in a path or option.
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    args.push_back(std::move(line));
     if (end == std::string::npos) return true;
     start = end + 1;
   }

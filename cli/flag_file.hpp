@@ -1,6 +1,7 @@
 // Arguments read from a file: "--flagfile FILE" and "--flagfile=FILE" stand for FILE's
 // lines, one argument each (Bazel's "multiline" parameter files, which its persistent
-// workers need). Not read after "--", nor inside a flag file.
+// workers need). A line may end in LF or CRLF; an empty line is an empty argument. Not
+// read after "--", nor inside a flag file.
 #pragma once
 #include <optional>
 #include <string>

@@ -142,6 +142,19 @@ TEST(FlagFile, ItsLinesAreTheArguments) {
   expectSameFiles(dir.path() / "from-file", dir.path() / "direct");
 }
 
+// A flag file written by hand may have CRLF line ends: "-o\r" is not an unknown option
+// and "out\r" not the output directory.
+TEST(FlagFile, CrlfLineEndsAreLineEnds) {
+  TempDir dir("wg-flagfile");
+  const fs::path flags = dir.path() / "crlf.params";
+  writeFile(flags, graph("rock") + "\r\n-o\r\n" + (dir.path() / "out").string() + "\r\n--target\r\nglsl\r\n--no-cache");
+  auto r = runCommand(kCli + " compile -q --flagfile " + shellQuote(flags.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(listFiles(dir.path() / "out"),
+            (std::vector<std::string>{"rock.frag.glsl", "rock.reflect.json", "rock.vert.glsl"}));
+  EXPECT_FALSE(fs::exists(dir.path() / "out\r"));
+}
+
 TEST(FlagFile, AnUnreadableOrNestedOneIsAUsageErrorNamingIt) {
   TempDir dir("wg-flagfile");
   auto missing = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "none.params").string()));
