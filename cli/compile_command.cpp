@@ -183,7 +183,7 @@ std::vector<Option> materialAndReportOptions(Options& o) {
        "serve Bazel's persistent worker protocol (JSON) on stdin\n"
        "and stdout: each request is one compile's arguments",
        [](const std::string&) {
-         return std::string(kPersistentWorkerFlag) + " belongs on the worker's own command line, not in a request";
+         return std::string(kPersistentWorkerFlag) + " belongs on the worker's own command line, not in a request or a flag file";
        }},
       {"--help", "-h", "", "this help", storeFlag(o.help), true},
   };

@@ -58,6 +58,10 @@ std::optional<std::vector<std::string>> expandFlagFiles(const std::vector<std::s
       }
       path = args[++i];
     }
+    if (path && path->empty()) {
+      error = "--flagfile takes a file name (it is empty; is a build variable unset?)";
+      return std::nullopt;
+    }
     if (!path) expanded.push_back(arg);
     else if (!readFlagFile(*path, expanded, error)) return std::nullopt;
   }

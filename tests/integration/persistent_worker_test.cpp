@@ -155,6 +155,17 @@ TEST(FlagFile, CrlfLineEndsAreLineEnds) {
   EXPECT_FALSE(fs::exists(dir.path() / "out\r"));
 }
 
+TEST(FlagFile, AnEmptyNameOrAWorkerFlagInsideSaysWhatToChange) {
+  TempDir dir("wg-flagfile");
+  auto empty = runCommand(kCli + " compile " + shellQuote(graph("rock")) + " -o out --flagfile=");
+  EXPECT_EQ(empty.exitCode, 2) << empty.output;
+  EXPECT_NE(empty.output.find("--flagfile takes a file name (it is empty"), std::string::npos) << empty.output;
+  writeFile(dir.path() / "worker.params", "--persistent_worker\n");
+  auto worker = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "worker.params").string()));
+  EXPECT_EQ(worker.exitCode, 2) << worker.output;
+  EXPECT_NE(worker.output.find("not in a request or a flag file"), std::string::npos) << worker.output;
+}
+
 TEST(FlagFile, AnUnreadableOrNestedOneIsAUsageErrorNamingIt) {
   TempDir dir("wg-flagfile");
   auto missing = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "none.params").string()));
