@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <climits>
 #include <cerrno>
 #include <cstdio>
 #include <iostream>
@@ -113,9 +115,25 @@ std::optional<std::vector<std::string>> requestArguments(const nlohmann::json& r
   return arguments;
 }
 
-std::int64_t requestId(const nlohmann::json& request) {
+// The id its response must echo (0 when absent). Protobuf's JSON form writes an int32 as
+// a number or as a string of one; an id that is neither cannot be echoed.
+std::optional<std::int64_t> requestId(const nlohmann::json& request, std::string& error) {
   auto it = request.find("requestId");
-  return it != request.end() && it->is_number_integer() ? it->get<std::int64_t>() : 0;
+  if (it == request.end()) return 0;
+  std::optional<std::int64_t> id;
+  if (it->is_number_unsigned()) {
+    if (it->get<std::uint64_t>() <= INT32_MAX) id = it->get<std::int64_t>();
+  } else if (it->is_number_integer()) {
+    id = it->get<std::int64_t>();
+  } else if (it->is_string()) {
+    const std::string& text = it->get_ref<const std::string&>();
+    std::int64_t value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec == std::errc() && end == text.data() + text.size() && !text.empty()) id = value;
+  }
+  if (id && *id >= INT32_MIN && *id <= INT32_MAX) return id;
+  error = "the request's \"requestId\" must be an integer from -2147483648 to 2147483647 (a number or a string of one)";
+  return std::nullopt;
 }
 
 // The command, with an escaping exception reported as main() reports it.
@@ -168,18 +186,20 @@ int runPersistentWorker(const WorkerCommand& command) {
                    quoteUserText(error, 300).c_str());
       return kExitUsage;
     }
-    const std::int64_t id = requestId(request);
+    const std::optional<std::int64_t> id = requestId(request, error);
     std::string response;
-    if (auto arguments = requestArguments(request, error)) {
+    if (!id) {
+      response = responseLine(kExitUsage, "weathergen: error WG9001: " + error + "\n", 0);
+    } else if (auto arguments = requestArguments(request, error)) {
       if (!capture.begin()) {
         capture.end(log);
         std::perror("weathergen: error WG9900: internal error: the worker cannot capture a request's output");
         return kExitInternal;
       }
       const int exitCode = runGuarded(command, *arguments);
-      response = responseLine(exitCode, capture.end(log), id);
+      response = responseLine(exitCode, capture.end(log), *id);
     } else {
-      response = responseLine(kExitUsage, "weathergen: error WG9001: " + error + "\n", id);
+      response = responseLine(kExitUsage, "weathergen: error WG9001: " + error + "\n", *id);
     }
     if (!writeAll(protocol, response)) return kExitInternal;
   }

@@ -121,6 +121,32 @@ TEST(PersistentWorker, ABadRequestIsAnsweredAndTheWorkerGoesOn) {
   EXPECT_FALSE(fs::exists(out + "2"));
 }
 
+// Protobuf's JSON form may write an int32 as a string; an id that is no int32 cannot be
+// echoed, so its request is refused rather than answered as request 0.
+TEST(PersistentWorker, ARequestIdIsAnInt32AsANumberOrAString) {
+  TempDir dir("wg-worker");
+  const std::string out = (dir.path() / "out").string();
+  auto withId = [&](const std::string& id, const std::string& subdir) {
+    return R"({"arguments": [")" + graph("rock") + R"(", "-o", ")" + out + "/" + subdir +
+           R"(", "--target", "glsl", "--no-cache"], "requestId": )" + id + "}\n";
+  };
+  auto worker = runWorker(dir.path(), withId(R"("12")", "string") + withId("2.5", "fraction") +
+                                          withId("4294967296", "huge") + withId(R"("x")", "text") + withId("-3", "negative"));
+  ASSERT_EQ(worker.exitCode, 0) << worker.output;
+  auto answers = responses(dir.path() / "responses");
+  ASSERT_EQ(answers.size(), 5u);
+  EXPECT_EQ(answers[0]["requestId"], 12);
+  EXPECT_EQ(answers[0]["exitCode"], 0) << answers[0];
+  for (std::size_t i = 1; i < 4; ++i) {
+    EXPECT_EQ(answers[i]["exitCode"], 2) << answers[i];
+    EXPECT_NE(answers[i]["output"].get<std::string>().find("\"requestId\""), std::string::npos) << answers[i];
+  }
+  EXPECT_EQ(listFiles(out), (std::vector<std::string>{"negative/rock.frag.glsl", "negative/rock.reflect.json",
+                                                      "negative/rock.vert.glsl", "string/rock.frag.glsl",
+                                                      "string/rock.reflect.json", "string/rock.vert.glsl"}));
+  EXPECT_EQ(answers[4]["requestId"], -3);
+}
+
 TEST(PersistentWorker, StdinThatIsNotTheProtocolIsAUsageError) {
   TempDir dir("wg-worker");
   auto worker = runWorker(dir.path(), "graphs/rock.json -o out\n");
