@@ -176,14 +176,17 @@ int runPersistentWorker(const WorkerCommand& command) {
     std::perror("weathergen: error WG9900: internal error: the worker cannot set up its output");
     return kExitInternal;
   }
-  for (;;) {
+  for (std::size_t number = 1;; ++number) {
     nlohmann::json request;
     std::string error;
     const RequestRead read = readRequest(std::cin, request, error);
     if (read == RequestRead::End) return kExitOk;
     if (read == RequestRead::Malformed) {
-      std::fprintf(stderr, "weathergen: error WG9001: stdin is not Bazel's JSON worker protocol: %s\n",
-                   quoteUserText(error, 300).c_str());
+      std::fprintf(stderr,
+                   "weathergen: error WG9001: request %zu on stdin is not Bazel's JSON worker protocol: %s\n"
+                   "  hint: the action needs the execution requirement \"requires-worker-protocol\": \"json\" "
+                   "(Bazel's default is protobuf)\n",
+                   number, quoteUserText(error, 300).c_str());
       return kExitUsage;
     }
     const std::optional<std::int64_t> id = requestId(request, error);

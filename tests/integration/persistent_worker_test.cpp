@@ -156,6 +156,20 @@ TEST(PersistentWorker, StdinThatIsNotTheProtocolIsAUsageError) {
   EXPECT_EQ(readFile(dir.path() / "responses"), "");
 }
 
+// Bazel's default worker protocol is protobuf: the message says which request broke
+// and what the action must declare.
+TEST(PersistentWorker, ABrokenRequestIsNamedAndTheJsonProtocolHinted) {
+  TempDir dir("wg-worker");
+  auto truncated = runWorker(dir.path(), request({"--help"}, 1) + R"({"arguments": ["a.json", "-o")");
+  EXPECT_EQ(truncated.exitCode, 2) << truncated.output;
+  EXPECT_NE(truncated.output.find("request 2 on stdin"), std::string::npos) << truncated.output;
+  EXPECT_EQ(responses(dir.path() / "responses").size(), 1u);
+  auto protobuf = runWorker(dir.path(), std::string("\x0c\x0a\x06--help", 9));
+  EXPECT_EQ(protobuf.exitCode, 2) << protobuf.output;
+  EXPECT_NE(protobuf.output.find("request 1 on stdin"), std::string::npos) << protobuf.output;
+  EXPECT_NE(protobuf.output.find("requires-worker-protocol"), std::string::npos) << protobuf.output;
+}
+
 TEST(FlagFile, ItsLinesAreTheArguments) {
   TempDir dir("wg-flagfile");
   const fs::path flags = dir.path() / "rock.params";
