@@ -191,6 +191,9 @@ std::vector<Option> materialAndReportOptions(Options& o) {
 
 OptionTable compileOptionTable(Options& o) {
   OptionTable table{.operand = [&o](const std::string& graph) {
+    if (graph.empty())
+      return std::string(
+          "an empty argument where a graph file was expected (an empty line in a flag file, or an unset build variable?)");
     o.graphs.push_back(graph);
     return std::string();
   }};

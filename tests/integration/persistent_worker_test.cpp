@@ -206,6 +206,17 @@ TEST(FlagFile, AnEmptyNameOrAWorkerFlagInsideSaysWhatToChange) {
   EXPECT_NE(worker.output.find("not in a request or a flag file"), std::string::npos) << worker.output;
 }
 
+// Bazel writes an empty argument as an empty line; where a graph was expected, the
+// message says where an empty argument comes from.
+TEST(FlagFile, AnEmptyLineIsAnEmptyArgument) {
+  TempDir dir("wg-flagfile");
+  writeFile(dir.path() / "gap.params", graph("rock") + "\n\n-o\n" + (dir.path() / "out").string() + "\n--no-cache\n");
+  auto r = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "gap.params").string()));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("an empty argument where a graph file was expected"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
 TEST(FlagFile, AnUnreadableOrNestedOneIsAUsageErrorNamingIt) {
   TempDir dir("wg-flagfile");
   auto missing = runCommand(kCli + " compile --flagfile " + shellQuote((dir.path() / "none.params").string()));
