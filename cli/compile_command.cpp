@@ -181,7 +181,8 @@ std::vector<Option> materialAndReportOptions(Options& o) {
        [](const std::string&) { return std::string("--flagfile is not read inside a flag file"); }},
       {kPersistentWorkerFlag, "", "",
        "serve Bazel's persistent worker protocol (JSON) on stdin\n"
-       "and stdout: each request is one compile's arguments",
+       "and stdout: each request's arguments, after the others on\n"
+       "this command line, are one compile's",
        [](const std::string&) {
          return std::string(kPersistentWorkerFlag) + " belongs on the worker's own command line, not in a request or a flag file";
        }},
