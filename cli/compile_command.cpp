@@ -508,9 +508,9 @@ int compileWith(const std::vector<std::string>& arguments) {
 int runCompileCommand(int argc, char** argv) {
   std::vector<std::string> arguments(argv + 2, argv + argc);
   const auto operands = std::find(arguments.begin(), arguments.end(), "--");
-  const auto worker = std::find(arguments.begin(), operands, kPersistentWorkerFlag);
-  if (worker == operands) return compileWith(arguments);
-  arguments.erase(worker);
+  const auto kept = std::remove(arguments.begin(), operands, kPersistentWorkerFlag);  // each, if given twice
+  if (kept == operands) return compileWith(arguments);
+  arguments.erase(kept, operands);
   return runPersistentWorker([&arguments](const std::vector<std::string>& request) {
     std::vector<std::string> all = arguments;
     all.insert(all.end(), request.begin(), request.end());

@@ -147,6 +147,19 @@ TEST(PersistentWorker, ARequestIdIsAnInt32AsANumberOrAString) {
   EXPECT_EQ(answers[4]["requestId"], -3);
 }
 
+// A rule that names --persistent_worker itself gets it twice once Bazel adds its own.
+TEST(PersistentWorker, TheFlagTwiceOnTheWorkersCommandLineIsOneWorker) {
+  TempDir dir("wg-worker");
+  writeFile(dir.path() / "requests",
+            request({graph("rock"), "-o", (dir.path() / "out").string(), "--target", "glsl", "--no-cache"}, 1));
+  auto r = runCommand(kCli + " compile --persistent_worker -q --persistent_worker < " +
+                      shellQuote((dir.path() / "requests").string()) + " > " + shellQuote((dir.path() / "responses").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto answers = responses(dir.path() / "responses");
+  ASSERT_EQ(answers.size(), 1u);
+  EXPECT_EQ(answers[0]["exitCode"], 0) << answers[0];
+}
+
 TEST(PersistentWorker, StdinThatIsNotTheProtocolIsAUsageError) {
   TempDir dir("wg-worker");
   auto worker = runWorker(dir.path(), "graphs/rock.json -o out\n");
