@@ -56,27 +56,55 @@ std::string describeJsonKind(const nlohmann::json& json) {
   }
 }
 
+namespace {
+
+void appendHexEscape(std::string& out, const char* prefix, unsigned char c) {
+  static const char* hex = "0123456789abcdef";
+  out += prefix;
+  out += hex[c >> 4];
+  out += hex[c & 15];
+}
+
+// The length of the well-formed UTF-8 sequence at text[i] (RFC 3629: no overlong forms,
+// no surrogates, nothing above U+10FFFF), or 0.
+std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char c = byte(i);
+  std::size_t length = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+  if (length == 0 || i + length > text.size()) return 0;
+  const unsigned char second = byte(i + 1);
+  const unsigned char low = c == 0xE0 ? 0xA0 : c == 0xF0 ? 0x90 : 0x80;
+  const unsigned char high = c == 0xED ? 0x9F : c == 0xF4 ? 0x8F : 0xBF;
+  if (second < low || second > high) return 0;
+  for (std::size_t k = 2; k < length; ++k)
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+  return length;
+}
+
+}  // namespace
+
 std::string quoteUserText(std::string_view text, std::size_t maxShown) {
   std::string out;
-  for (std::size_t i = 0; i < text.size() && i < maxShown; ++i) {
-    unsigned char c = static_cast<unsigned char>(text[i]);
-    // U+0080..U+009F (UTF-8 C2 80..C2 9F) are C1 controls: U+009B is a CSI to terminals.
-    if (c == 0xC2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) <= 0x9F &&
-        static_cast<unsigned char>(text[i + 1]) >= 0x80) {
-      static const char* hex = "0123456789abcdef";
-      const unsigned char c1 = static_cast<unsigned char>(text[++i]);
-      out += "\\u00";
-      out += hex[c1 >> 4];
-      out += hex[c1 & 15];
+  for (std::size_t i = 0; i < text.size() && i < maxShown;) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      if (c < 0x20 || c == 0x7f) appendHexEscape(out, "\\x", c);
+      else out += static_cast<char>(c);
+      ++i;
       continue;
     }
-    if (c < 0x20 || c == 0x7f) {
-      static const char* hex = "0123456789abcdef";
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
+    const std::size_t length = utf8SequenceLength(text, i);
+    if (length == 0) {
+      // A byte outside UTF-8: raw, 0x9B is a CSI to an 8-bit terminal.
+      appendHexEscape(out, "\\x", c);
+      ++i;
+    } else if (c == 0xC2 && static_cast<unsigned char>(text[i + 1]) <= 0x9F) {
+      // U+0080..U+009F are C1 controls: U+009B is a CSI to terminals.
+      appendHexEscape(out, "\\u00", static_cast<unsigned char>(text[i + 1]));
+      i += 2;
     } else {
-      out += static_cast<char>(c);
+      out.append(text.substr(i, length));
+      i += length;
     }
   }
   if (text.size() > maxShown) out += "...";

@@ -20,8 +20,9 @@ LiteralResult parseLiteral(const nlohmann::json& json);
 // What kind of JSON value this is, for messages ("a string", "an array"...).
 std::string describeJsonKind(const nlohmann::json& json);
 
-// A user-supplied string made safe for a one-line message: control characters
-// escaped, long text shortened. User text never reaches emitted code.
+// A user-supplied string made safe for a one-line message: control characters (C0,
+// DEL, C1) and bytes that are not well-formed UTF-8 escaped, long text shortened.
+// User text never reaches emitted code.
 std::string quoteUserText(std::string_view text, std::size_t maxShown = 60);
 
 }  // namespace wg
