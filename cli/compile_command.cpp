@@ -12,6 +12,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "cli/atomic_file.hpp"
@@ -229,15 +230,6 @@ std::optional<int> parseCompileOptions(const std::vector<std::string>& arguments
   return std::nullopt;
 }
 
-// The same diagnostic from several variants of one graph is printed once.
-void appendUnique(std::vector<Diagnostic>& all, Diagnostic d) {
-  for (const auto& seen : all)
-    if (seen.code == d.code && seen.location.file == d.location.file && seen.location.pointer == d.location.pointer &&
-        seen.message == d.message)
-      return;
-  all.push_back(std::move(d));
-}
-
 // One graph's compiled variants: their files (shared by identical variants) and, with
 // --variants, the index NAME.variants.json.
 struct GraphOutput {
@@ -361,6 +353,16 @@ std::vector<CompileResult> compileJobs(const VariantPlan& plan, const CompileOpt
 struct BatchDiagnostics {
   std::vector<Diagnostic> items;
   bool internal = false;
+
+  // The same diagnostic from several variants of one graph is kept once; a set, so that
+  // a batch of many failing graphs costs n log n, not n squared.
+  void addUnique(Diagnostic d) {
+    if (!seen_.emplace(d.code, d.location.file, d.location.pointer, d.message).second) return;
+    items.push_back(std::move(d));
+  }
+
+ private:
+  std::set<std::tuple<DiagCode, std::string, std::string, std::string>> seen_;
 };
 
 // Each graph's compiled variants, in the order of the graphs.
@@ -371,7 +373,7 @@ std::vector<GraphOutput> groupByGraph(const VariantPlan& plan, std::vector<Compi
     CompileResult& r = results[j];
     for (auto& d : r.diagnostics.items()) {
       diagnostics.internal = diagnostics.internal || d.info().category == DiagCategory::Internal;
-      appendUnique(diagnostics.items, std::move(d));
+      diagnostics.addUnique(std::move(d));
     }
     if (!r.material) continue;
     GraphOutput& g = outputs[plan.graphOf[j]];

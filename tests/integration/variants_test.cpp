@@ -154,5 +154,24 @@ TEST(Variants, BadSelectionsAreUsageErrorsAndWriteNothing) {
   }
 }
 
+// Every variant of a graph reports its error; the batch prints each one once, and the
+// same error in another graph is that graph's own.
+TEST(Variants, AnErrorEveryVariantMeetsIsPrintedOncePerGraph) {
+  TempDir dir("variants-error");
+  nlohmann::json graph = nlohmann::json::parse(readFile(kRock));
+  graph["alphaCutoff"] = 2;
+  const fs::path a = dir.path() / "a.json", b = dir.path() / "b.json";
+  testing::writeFile(a, graph.dump());
+  testing::writeFile(b, graph.dump());
+  auto r = runCommand(shellQuote(WG_CLI_PATH) + " compile " + shellQuote(a.string()) + " " + shellQuote(b.string()) +
+                      " --variants all --target glsl -o " + shellQuote((dir.path() / "out").string()));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  std::size_t count = 0;
+  for (std::size_t at = r.output.find("WG2010"); at != std::string::npos; at = r.output.find("WG2010", at + 1)) ++count;
+  EXPECT_EQ(count, 2u) << r.output;
+  EXPECT_NE(r.output.find("a.json"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("b.json"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace wg
