@@ -1,7 +1,9 @@
 // Runs fn(0..count-1) on up to `threads` threads, the calling one among them. Each
 // thread takes the next index in turn, so indices given in order of cost (largest
-// first) balance the threads. The first exception thrown is rethrown to the caller
-// once every thread has stopped.
+// first) balance the threads. Once every thread has stopped, the exception of the
+// lowest index that threw is rethrown to the caller: the one a single thread would
+// throw, whatever the count. Threads that cannot be started leave their share to the
+// others.
 #pragma once
 #include <cstddef>
 #include <functional>
