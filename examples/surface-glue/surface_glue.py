@@ -92,7 +92,7 @@ def host_resources(language, surfaces):
 def preamble(language, stage, surfaces, defines, own_resources=False):
     lines = []
     if language == "glsl":
-        lines.append("#version 450")
+        lines.append("#version 440")  # the lowest the contract promises (docs/engine-api.md)
     elif language == "glsles":
         lines += ["#version 310 es", "precision highp float;", "precision highp int;"]
     lines.append(f"#define {surfaces[0]['stageMacros'][stage]}")

@@ -13,6 +13,7 @@ Prints 'N passed, M failed' and exits non-zero on any failure.
 """
 import argparse
 import json
+import re
 import subprocess
 import sys
 import tempfile
@@ -86,6 +87,11 @@ def main(argv):
         check("compile --target surface writes every bundled graph's surface", r.returncode == 0, r.stderr)
         if r.returncode:
             return 1
+        # The glue declares the lowest GLSL version the contract promises: the full stages'.
+        lowest = re.search(r"kGlslVersion = (\d+);", (source / "backends" / "shader_syntax.hpp").read_text()).group(1)
+        probe = surface_glue.write_glue("glsl", tmp / "probe", sorted(out.glob("*.reflect.json"))[:1])[0]
+        declared = probe.read_text().splitlines()[0]
+        check(f"the glsl glue declares #version {lowest}", declared == f"#version {lowest}", declared)
         reflections = sorted(out.glob("*.reflect.json"))
         for reflection in reflections:
             surface = json.loads(reflection.read_text())["surface"]
