@@ -42,14 +42,17 @@ std::string StagedDirectory::ensureStaging() {
 }
 
 namespace {
-// Whether `path` is a regular file (not followed through a link) holding exactly `bytes`.
-// Read a chunk at a time into one small buffer, so comparing allocates nothing and stops
-// at the first difference.
-bool holdsExactly(const std::filesystem::path& path, std::string_view bytes) {
+// Whether `path` is a regular file (not followed through a link) holding exactly `bytes`
+// that this process may touch: its owner's or root's (another user's file, even one in
+// our own folder, is replaced as a rewrite would). Read a chunk at a time into one small
+// buffer, so comparing allocates nothing and stops at the first difference.
+bool keepsExactly(const std::filesystem::path& path, std::string_view bytes) {
   int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return false;
   struct stat st {};
-  bool same = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) == bytes.size();
+  const uid_t self = ::geteuid();
+  bool same = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && (st.st_uid == self || self == 0) &&
+              static_cast<std::size_t>(st.st_size) == bytes.size();
   char chunk[64 * 1024];
   for (std::size_t done = 0; same && done < bytes.size();) {
     ssize_t n = ::read(fd, chunk, std::min(sizeof chunk, bytes.size() - done));
@@ -66,7 +69,7 @@ std::string StagedDirectory::stage(const std::string& name, std::string_view byt
   // An unchanged output is not written again, only touched on publishing: a warm
   // rebuild is its reads, not the disk's file creation (docs/BENCHMARKS.md, "Compile
   // speed").
-  if (holdsExactly(directory_ / name, bytes)) {
+  if (keepsExactly(directory_ / name, bytes)) {
     unchanged_.push_back(name);
     return "";
   }
@@ -110,13 +113,14 @@ std::string StagedDirectory::publish() {
     if (std::filesystem::is_directory(std::filesystem::symlink_status(target, ec)))
       return "cannot write '" + quoteUserText(target.string(), 300) + "': a directory has that name";
   }
-  published_ = true;  // from here on the folder holds output, whatever happens next
-  for (const auto& name : names_)
-    if (::rename((staging_ / name).c_str(), (directory_ / name).c_str()) != 0) return systemError("cannot write", directory_ / name);
-  // Now, as a rewrite would have, so that make and ninja see these outputs as fresh.
+  // Now, as a rewrite would have, so that make and ninja see these outputs as fresh;
+  // before any rename, so that a touch that fails leaves the folder's bytes as they were.
   for (const auto& name : unchanged_)
     if (::utimensat(AT_FDCWD, (directory_ / name).c_str(), nullptr, AT_SYMLINK_NOFOLLOW) != 0)
       return systemError("cannot write", directory_ / name);
+  published_ = true;  // from here on the folder holds output, whatever happens next
+  for (const auto& name : names_)
+    if (::rename((staging_ / name).c_str(), (directory_ / name).c_str()) != 0) return systemError("cannot write", directory_ / name);
   return "";
 }
 

@@ -2,7 +2,7 @@
 // output directory (created exclusively, so nothing planted there is followed), and
 // only when every one of them is written and synced to disk are they renamed into
 // place. A failed run leaves the output directory as it was. An output that already
-// holds the same bytes is not written again; publishing touches it.
+// holds the same bytes and is ours to touch is not written again; publishing touches it.
 #pragma once
 #include <filesystem>
 #include <string>

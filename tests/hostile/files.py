@@ -170,6 +170,33 @@ class InputsAreNeverOutputs(HostileCase):
     def test_output_dir_below_a_regular_file(self):
         self.failsUnchanged(["compile", self.graph, "-o", self.path("ok.png", "out")], 2)
 
+    # A rebuild keeps an output that already holds its bytes and only touches it; one the
+    # compiling user may not touch (another user's file in the user's own output folder)
+    # is replaced as it was before outputs were kept, not a "Permission denied".
+    @unittest.skipUnless(os.geteuid() == 0, "needs root to own a file the compiling user does not")
+    def test_an_unchanged_output_owned_by_another_user_is_replaced(self):
+        nobody = 65534
+        os.chmod(self.dir, 0o755)
+        out = self.path("out")
+        os.mkdir(out)
+        os.chown(out, nobody, nobody)
+        graph = self.write("f.json", hs.flat_graph("f"))
+
+        def as_nobody():
+            os.setgroups([])
+            os.setgid(nobody)
+            os.setuid(nobody)
+
+        args = ["compile", graph, "-o", out, "--target", "glsl", "-q"]
+        first = run_cli(args, preexec_fn=as_nobody)
+        self.assertSucceeds(first)
+        shader = os.path.join(out, "f.frag.glsl")
+        before = hs.read(shader)
+        os.chown(shader, 0, 0)
+        again = run_cli(args, preexec_fn=as_nobody)
+        self.assertSucceeds(again)
+        self.assertEqual(hs.read(shader), before)
+
     # Fixed (issue 16 item 5, "inputs are never outputs"), kept as a regression: `render --material G.json -o G.json`
     # and `render --timeline T.json -o T.json` exit 0 and replace the graph or the
     # timeline with the PNG; only compile checks its outputs against its inputs.
