@@ -47,7 +47,8 @@ struct Options {
   bool reflection = true;
   bool optimize = false;       // spirv-opt's performance passes
   // Threads that compile the four stages to SPIR-V at once (glslang, spirv-val), the
-  // calling thread among them; the result is the same for any count. 1 spawns none.
+  // calling thread among them; the result is the same for any count. 1 spawns none, 0
+  // or less counts as 1, and no more than one thread a stage is started.
   int threads = 1;
   std::string weatherPreset;   // "" keeps the graph's own preset
   // Quality tier: "low" (seed 000's terms), "medium" (plus sky exposure) or "high" (plus

@@ -372,6 +372,13 @@ TEST(PublicApi, ThreadsPerCompileGiveTheSameResult) {
     ASSERT_EQ(four.stages.size(), 4u) << g.file;
     EXPECT_EQ(fingerprint(four), fingerprint(one)) << g.file;
   }
+  // Counts out of range: none, negative, far more than the stages.
+  const auto& g = bundledGraphs().front();
+  const std::string one = fingerprint(weathergen::compile(g.file, g.text));
+  for (int count : {0, -5, 10000}) {
+    threaded.threads = count;
+    EXPECT_EQ(fingerprint(weathergen::compile(g.file, g.text, threaded)), one) << count << " threads";
+  }
 }
 
 }  // namespace
