@@ -373,7 +373,8 @@ TEST(PublicApi, ThreadsPerCompileGiveTheSameResult) {
     EXPECT_EQ(fingerprint(four), fingerprint(one)) << g.file;
   }
   // Counts out of range: none, negative, far more than the stages.
-  const auto& g = bundledGraphs().front();
+  const auto graphs = bundledGraphs();
+  const auto& g = graphs.front();
   const std::string one = fingerprint(weathergen::compile(g.file, g.text));
   for (int count : {0, -5, 10000}) {
     threaded.threads = count;
