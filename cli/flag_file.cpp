@@ -25,6 +25,8 @@ bool readFlagFile(const std::string& path, std::vector<std::string>& args, std::
     error = "--flagfile '" + quoteUserText(path) + "' holds a NUL character; it must be text, one argument a line";
     return false;
   }
+  // A byte-order mark some editors write: it would start the first argument.
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
   if (!text.empty() && text.back() == '\n') text.pop_back();  // the last line's end
   if (text.empty()) return true;
   std::size_t start = 0;

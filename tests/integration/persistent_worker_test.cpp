@@ -197,10 +197,12 @@ TEST(FlagFile, ItsLinesAreTheArguments) {
 
 // A flag file written by hand may have CRLF line ends: "-o\r" is not an unknown option
 // and "out\r" not the output directory.
-TEST(FlagFile, CrlfLineEndsAreLineEnds) {
+TEST(FlagFile, CrlfLineEndsAndAByteOrderMarkAreRead) {
   TempDir dir("wg-flagfile");
   const fs::path flags = dir.path() / "crlf.params";
-  writeFile(flags, graph("rock") + "\r\n-o\r\n" + (dir.path() / "out").string() + "\r\n--target\r\nglsl\r\n--no-cache");
+  // As a Windows editor saves it: a byte-order mark, then CRLF line ends.
+  writeFile(flags, "\xEF\xBB\xBF" + graph("rock") + "\r\n-o\r\n" + (dir.path() / "out").string() +
+                       "\r\n--target\r\nglsl\r\n--no-cache");
   auto r = runCommand(kCli + " compile -q --flagfile " + shellQuote(flags.string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(listFiles(dir.path() / "out"),
