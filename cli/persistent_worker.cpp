@@ -12,6 +12,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <streambuf>
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
@@ -23,6 +24,8 @@ namespace {
 
 // A response carries what its command printed, up to this much.
 constexpr std::size_t kMaxOutputBytes = 1u << 20;
+// One request may be this long; Bazel's are a command line, a few hundred bytes.
+constexpr std::size_t kMaxRequestBytes = 16u << 20;
 
 // Descriptors 1 and 2 point into a temporary file while a request runs, so that every
 // line its command prints, whatever prints it, reaches the response and not the protocol.
@@ -62,12 +65,39 @@ class OutputCapture {
       got += static_cast<std::size_t>(n);
     }
     text.resize(got);
-    if (size > got) text += "\n(" + std::to_string(size - got) + " more bytes of output left out)\n";
+    if (size > got) {
+      // Cut at a line's end, so no diagnostic is left half-said.
+      const std::size_t lineEnd = text.rfind('\n');
+      if (lineEnd != std::string::npos) text.resize(lineEnd + 1);
+      text += "(" + std::to_string(size - text.size()) + " more bytes of output left out)\n";
+    }
     return text;
   }
 
  private:
   std::FILE* file_;
+};
+
+// Stdin as the parser sees it: the end of input comes after `allow`'s bytes, so one
+// endless request cannot take unbounded memory.
+class BoundedInput : public std::streambuf {
+ public:
+  explicit BoundedInput(std::streambuf* source) : source_(source) {}
+  void allow(std::size_t bytes) { left_ = bytes; }
+  bool exhausted() const { return left_ == 0; }
+
+ protected:
+  int_type underflow() override { return left_ == 0 ? traits_type::eof() : source_->sgetc(); }
+  int_type uflow() override {
+    if (left_ == 0) return traits_type::eof();
+    const int_type c = source_->sbumpc();
+    if (c != traits_type::eof()) --left_;
+    return c;
+  }
+
+ private:
+  std::streambuf* source_;
+  std::size_t left_ = 0;
 };
 
 enum class RequestRead { Ok, End, Malformed };
@@ -80,10 +110,13 @@ RequestRead readRequest(std::istream& in, nlohmann::json& request, std::string& 
     c = in.peek();
   }
   if (c == std::char_traits<char>::eof()) return RequestRead::End;
+  BoundedInput bounded(in.rdbuf());
+  bounded.allow(kMaxRequestBytes);
+  std::istream boundedIn(&bounded);
   try {
-    in >> request;
+    boundedIn >> request;
   } catch (const nlohmann::json::exception& e) {
-    error = e.what();
+    error = bounded.exhausted() ? "it is longer than " + std::to_string(kMaxRequestBytes >> 20) + " MiB" : e.what();
     return RequestRead::Malformed;
   }
   if (request.is_object()) return RequestRead::Ok;

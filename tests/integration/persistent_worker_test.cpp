@@ -183,6 +183,41 @@ TEST(PersistentWorker, ABrokenRequestIsNamedAndTheJsonProtocolHinted) {
   EXPECT_NE(protobuf.output.find("requires-worker-protocol"), std::string::npos) << protobuf.output;
 }
 
+// One request may be at most 16 MiB: an endless one ends the worker with a message, not
+// with all of the machine's memory.
+TEST(PersistentWorker, ARequestLongerThan16MiBIsRefused) {
+  TempDir dir("wg-worker");
+  auto worker = runWorker(dir.path(), request({"--help"}, 1) + request({std::string(17u << 20, 'a')}, 2));
+  EXPECT_EQ(worker.exitCode, 2) << worker.output.substr(0, 2000);
+  EXPECT_NE(worker.output.find("request 2 on stdin"), std::string::npos) << worker.output.substr(0, 2000);
+  EXPECT_NE(worker.output.find("longer than 16 MiB"), std::string::npos) << worker.output.substr(0, 2000);
+  EXPECT_EQ(responses(dir.path() / "responses").size(), 1u);
+}
+
+// A response keeps the first MiB of what its command printed, cut at a line's end.
+TEST(PersistentWorker, LongOutputIsCutAtALinesEnd) {
+  TempDir dir("wg-worker");
+  std::vector<std::string> arguments;
+  for (int i = 0; i < 15000; ++i) arguments.push_back((dir.path() / ("missing" + std::to_string(i) + ".json")).string());
+  arguments.insert(arguments.end(), {"-o", (dir.path() / "out").string()});
+  auto worker = runWorker(dir.path(), request(arguments, 1));
+  EXPECT_EQ(worker.exitCode, 0) << worker.output;
+  auto answers = responses(dir.path() / "responses");
+  ASSERT_EQ(answers.size(), 1u);
+  EXPECT_EQ(answers[0]["exitCode"], 1);
+  const std::string output = answers[0]["output"];
+  EXPECT_LE(output.size(), (1u << 20) + 100);
+  const std::size_t note = output.rfind("more bytes of output left out)\n");
+  ASSERT_NE(note, std::string::npos) << output.substr(output.size() - 300);
+  const std::size_t noteLine = output.rfind('\n', note);
+  ASSERT_NE(noteLine, std::string::npos);
+  // The line before the note is a whole line of a diagnostic.
+  const std::size_t lastLine = output.rfind('\n', noteLine - 1) + 1;
+  const std::string line = output.substr(lastLine, noteLine - lastLine);
+  EXPECT_TRUE(line.find("WG1002") != std::string::npos || line.find("hint:") != std::string::npos) << line;
+  EXPECT_EQ(line.back(), line.find("hint:") != std::string::npos ? 'y' : ']') << line;
+}
+
 TEST(FlagFile, ItsLinesAreTheArguments) {
   TempDir dir("wg-flagfile");
   const fs::path flags = dir.path() / "rock.params";
