@@ -34,7 +34,7 @@ ALLOWED_INCLUDES = {
 }
 
 # A backend sees the IR and the material interface, nothing else of the compiler
-# (issue 13, section 3): backends/ is its own CMake target, weathergen_backends.
+# backends/ is its own CMake target, weathergen_backends.
 BACKEND_VISIBLE_COMPILER = {
     "compiler/ir.hpp",
     "compiler/material_interface.hpp",

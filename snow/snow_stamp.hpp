@@ -4,7 +4,7 @@
 // aligned to the heading, waisted at the arch: narrower and shallower there than at the
 // heel and toe (`waist`, `archDepth`; a waist of 0 is a plain capsule). A moving body or
 // a wheel is a capsule from its previous to its current position, so nothing it passed
-// over in one frame is skipped (issue 5, §2). The layout is std430 so the same records
+// over in one frame is skipped. The layout is std430 so the same records
 // go to the compute shader.
 #pragma once
 #include <glm/glm.hpp>

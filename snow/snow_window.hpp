@@ -1,7 +1,7 @@
 // The square of world the deformation height map covers: N x N texels of a fixed size,
 // slid with the camera in whole tiles. Storage is toroidal: world texel (x, z) always
 // lives at (x mod N, z mod N), so recentring moves no texel that stays in the window;
-// only the tiles that leave or enter are touched (issue 5, §2; seed 2.3 moves whole
+// only the tiles that leave or enter are touched (seed 2.3 moves whole
 // rows and columns of terrain patches the same way).
 #pragma once
 #include <glm/glm.hpp>

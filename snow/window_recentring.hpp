@@ -1,7 +1,7 @@
 // Slides the window to keep the camera in its central tile. Tiles that leave go to the
 // print store if they hold any deformation; tiles that enter come back from it, with
 // the refill they missed applied, or start untouched. Texels that stay are not moved
-// or re-uploaded: toroidal addressing keeps them where they are (issue 5, §1-3).
+// or re-uploaded: toroidal addressing keeps them where they are.
 #pragma once
 #include <glm/glm.hpp>
 

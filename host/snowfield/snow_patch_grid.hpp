@@ -1,4 +1,4 @@
-// The snow layer's mesh (issue 5, §1; seed 3.1): a square of patches, each a level
+// The snow layer's mesh (seed 3.1): a square of patches, each a level
 // grid of vertices, centred on the camera. The seed uses 8 x 8 patches of 8 m with 64
 // vertices per side (12.5 cm apart). Its prints are 9-11 cm wide, narrower than that
 // spacing, so a finer square around the camera puts a vertex on every texel of the 4 cm

@@ -1,4 +1,4 @@
-// Snow puffs (issue 5, §5; seed 3.3): small clouds of snow kicked up at every
+// Snow puffs (seed 3.3): small clouds of snow kicked up at every
 // footfall. Particles live in a GPU buffer; a compute pass moves them (gravity, air drag
 // towards the wind) and ages them; they are drawn as camera-facing billboards that fade
 // softly where they meet the scene (seed 3.3.2, soft particles). The scene depth is read

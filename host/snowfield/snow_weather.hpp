@@ -1,5 +1,5 @@
 // What the weather state means for the snow layer: how deep the snow lies and how fast
-// fresh snowfall and wind refill prints (issue 5, §3; the seed names refill as missing,
+// fresh snowfall and wind refill prints (the seed names refill as missing,
 // 5.1.2: "some snow would have fallen or ... the wind had filled the prints").
 #pragma once
 #include "weather/weather_simulation.hpp"

@@ -1,4 +1,4 @@
-// The `snowfield` scene of the interactive snow (issue 5, §6): snowy hills with a few
+// The `snowfield` scene of the interactive snow: snowy hills with a few
 // rocks running out to a hazy horizon, the camera-following snow layer on the terrain, two walkers and a vehicle on scripted paths,
 // and a camera that leaves the deformation window and comes back. SnowfieldAnimation
 // advances it in simulated time; the renderer draws it with the deformation map bound.

@@ -21,7 +21,7 @@ SPECIAL = {
 # A shorter list for the other places a name can come from.
 FEW = ["space", "dollar", "hash", "colon", "newline", "tab", "injection"]
 
-# Names that make or Ninja misread (issue 16 item 1, "escape or reject every character
+# Names that make or Ninja misread ("escape or reject every character
 # that Make or Ninja treat specially"). These were bugs, now refused before anything is
 # written; the cases stay as regressions:
 # * a backslash is written doubled (`a\b.png` as `a\\b.png`): GNU make stops with "No
@@ -109,7 +109,7 @@ class SpecialNames(DepfileCase):
                 self.texture_case(key)
                 self.clear()
 
-    # Fixed (issue 16 item 1), kept as a regression: the red team's newline injection is refused, but a ';' is
+    # Fixed, kept as a regression: the red team's newline injection is refused, but a ';' is
     # written raw. With the texture `g.json;touch${IFS}PWNED;.png`, the depfile's rule
     # line reads `OUTPUTS: g.json g.json;touch$${IFS}PWNED;.png`, and the next `make`
     # that finds the outputs out of date runs `touch ${IFS}PWNED` as their recipe.
@@ -172,7 +172,7 @@ class DepfilePlaces(HostileCase):
                 self.failsUnchanged(["compile", self.graph, "-o", self.path("out"), "--target", "glsl",
                                      "--depfile", depfile], 2)
 
-    # Fixed (issue 16 item 5), kept as a regression: `--depfile OUT/g.frag.glsl`, one of the run's own outputs,
+    # Fixed, kept as a regression: `--depfile OUT/g.frag.glsl`, one of the run's own outputs,
     # exits 0 and the depfile replaces the shader. The depfile must not be an output.
     def test_a_depfile_naming_one_of_the_outputs(self):
         self.failsUnchanged(["compile", self.graph, "-o", self.path("out"), "--target", "glsl",

@@ -83,7 +83,7 @@ class TextureKinds(Kinds):
                 r = self.compile_texture(path)
                 self.assertRegex(r.text, "WG300[23]|WG1007", str(r))
 
-    # Fixed (issue 16 item 7), kept as a regression: a directory or a device given as an image is reported as
+    # Fixed, kept as a regression: a directory or a device given as an image is reported as
     # "file ... not found" (WG3002), not as "not a regular file".
     def test_a_directory_or_device_texture_is_reported_as_not_a_regular_file(self):
         for kind in ("directory", "/dev/zero", "/dev/null"):
@@ -108,7 +108,7 @@ class LibraryKinds(Kinds):
                 # An error inside a library names the library; any other, the include.
                 self.assertRegex(r.text, r"/include/lib\]|^[^:]*%s:[0-9]+:[0-9]+:" % os.path.basename(path), str(r))
 
-    # Fixed (issue 16 item 7), kept as a regression: a directory or device given as a library is reported as
+    # Fixed, kept as a regression: a directory or device given as a library is reported as
     # "no such library file", not as "not a regular file".
     def test_a_directory_or_device_library_is_reported_as_not_a_regular_file(self):
         for kind in ("directory", "/dev/zero", "/dev/null"):
@@ -197,7 +197,7 @@ class InputsAreNeverOutputs(HostileCase):
         self.assertSucceeds(again)
         self.assertEqual(hs.read(shader), before)
 
-    # Fixed (issue 16 item 5, "inputs are never outputs"), kept as a regression: `render --material G.json -o G.json`
+    # Fixed ("inputs are never outputs"), kept as a regression: `render --material G.json -o G.json`
     # and `render --timeline T.json -o T.json` exit 0 and replace the graph or the
     # timeline with the PNG; only compile checks its outputs against its inputs.
     def test_render_output_naming_its_own_graph_or_timeline(self):

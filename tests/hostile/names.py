@@ -122,13 +122,13 @@ class TerminalEscapes(HostileCase):
             with self.subTest(args[-1][:4] + " " + args[0]):
                 self.failsUnchanged(args, 2, vulkan=args[0] == "render")
 
-    # Fixed (issue 16 item 3), kept as a regression: an unknown command is echoed raw: `weathergen $'\e[2J'`
+    # Fixed, kept as a regression: an unknown command is echoed raw: `weathergen $'\e[2J'`
     # prints "unknown command '<ESC>[2J'" (main's command dispatch does not use
     # quoteUserText like the option parsers do).
     def test_escapes_in_the_command_name(self):
         self.failsUnchanged(["\u001b[2J\u001b[31m"], 2, "unknown command")
 
-    # Fixed (issue 16 item 3), kept as a regression: the C1 control U+009B (an 8-bit CSI, which xterm-like
+    # Fixed, kept as a regression: the C1 control U+009B (an 8-bit CSI, which xterm-like
     # terminals may act on) passes raw through quoteUserText, in messages, pointers and
     # file names; only C0 controls and DEL are escaped.
     def test_the_c1_csi_in_names_never_reaches_stderr_raw(self):

@@ -1,6 +1,6 @@
 """Hostile class: absolute and escaping paths. Outputs hold no absolute path: an image
 or library given by absolute path, or outside the graph's folder, is recorded
-relative to the graph (issue 16 item 14), so outputs are the same wherever the tree
+relative to the graph, so outputs are the same wherever the tree
 is checked out."""
 
 import json
@@ -50,7 +50,7 @@ class AbsolutePaths(HostileCase):
         refl = self.reflection("g", self.path("out"))
         self.assertIn("../textures/ok.png", list(strings(refl)))
 
-    # Fixed (issue 16 item 14), kept as a regression: a library included by absolute path has its own image
+    # Fixed, kept as a regression: a library included by absolute path has its own image
     # (relative to the library) recorded as an absolute path in NAME.reflect.json;
     # docs/graph-format.md says a library's images are reported relative to the graph.
     def test_an_absolute_library_with_its_own_image(self):

@@ -31,14 +31,14 @@ class Images(HostileCase):
 
     # compile reads only an image's header, so a PNG cut inside its pixel data compiles;
     # the commands that decode the pixels must report it as an input error.
-    # Fixed (issue 16 item 10), kept as a regression: eval reported "WG3003: texture 't':
+    # Fixed, kept as a regression: eval reported "WG3003: texture 't':
     # cannot decode image: IDA [/]" with neither the image file nor a pointer.
     def test_eval_of_a_truncated_png_names_the_image_with_a_pointer(self):
         self.write("cut.png", hs.png_bytes(8, 8)[:40])
         graph = self.write("g.json", hs.texture_graph("cut.png"))
         self.failsUnchanged(["eval", graph], 1, "cut.png", "/textures/t/file")
 
-    # Fixed (issue 16 item 12), kept as a regression: `render --material` with a PNG cut inside its pixel data
+    # Fixed, kept as a regression: `render --material` with a PNG cut inside its pixel data
     # exits 3 ("weathergen: error: texture 't': cannot decode image: IDA"): the decode
     # failure is a user's input error, exit 1.
     def test_render_of_a_truncated_png_is_an_input_error(self):

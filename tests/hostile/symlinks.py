@@ -92,7 +92,7 @@ class LinkedInputs(HostileCase):
                     r = self.failsUnchanged(args, 1, name, "/textures/t/file", timeout=20)
                     self.assertLess(r.seconds, 10 * hs.time_scale())
 
-    # Fixed (issue 16 item 7), kept as a regression: a texture that is (a link to) a device or a FIFO is refused
+    # Fixed, kept as a regression: a texture that is (a link to) a device or a FIFO is refused
     # promptly, but reported as "file ... not found" (WG3002), not "not a regular file".
     def test_a_texture_linking_to_a_device_or_fifo_is_reported_as_not_a_regular_file(self):
         for name in ("zero.png", "fifo.png"):

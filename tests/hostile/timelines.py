@@ -73,7 +73,7 @@ class Timelines(HostileCase):
                 r = self.render(text, 2, "t.json")
                 self.assertRegex(r.text, r"t\.json(:\d+:\d+)?", str(r))
 
-    # Fixed (issue 16 item 13, "parse strictly"), kept as a regression: a NUL ends the document and whatever
+    # Fixed ("parse strictly"), kept as a regression: a NUL ends the document and whatever
     # follows it is ignored: `{...}<NUL> garbage {{{` is accepted as a timeline, and
     # graphs share the behaviour (`compile` accepts a graph followed by NUL and garbage).
     def test_bytes_after_a_nul_are_not_ignored(self):
@@ -102,7 +102,7 @@ class Frames(HostileCase):
                 self.failsUnchanged(["render", "--scene", "valley", "--size", "32x32", "--timeline", t, "--frames",
                                      frames, "-o", self.path("x.png")], 2, vulkan=True)
 
-    # Fixed (issue 16 item 12), kept as a regression: `--frames FILE/below` renders every stage, then exits 3
+    # Fixed, kept as a regression: `--frames FILE/below` renders every stage, then exits 3
     # ("filesystem error: cannot create directories: Not a directory"): the folder is
     # only checked when the first frame is written, and the exception is not turned
     # into a usage error. `--frames FILE` is checked before rendering.

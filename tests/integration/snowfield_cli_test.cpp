@@ -1,4 +1,4 @@
-// weathergen render --scene snowfield (issue 5, §6): the CLI animates the interactive
+// weathergen render --scene snowfield: the CLI animates the interactive
 // snow with the validation layers on and writes a labelled contact sheet, a frame
 // strip and the single frames.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The CPU model of the deformation map (issue 5, §2-3 and §7): prints where the
+// The CPU model of the deformation map: prints where the
 // scripted paths put them, continuous trails at any speed, the snow-depth limit,
 // refill at the configured rate, normals only where touched, and prints that survive
 // recentring and a round trip out of the window.

@@ -1,5 +1,5 @@
-// The deformation compute pass on lavapipe with the validation layers on (issue 5,
-// §7): the map read back from the GPU against the CPU model and the scripted paths,
+// The deformation compute pass on lavapipe with the validation layers on: the map read
+// back from the GPU against the CPU model and the scripted paths,
 // a footprint's boot-sole shape, no deformation without snow, continuous trails at any
 // speed, prints through recentring and a round trip, refill at the configured rate.
 #include "snow/gpu_deformation_map.hpp"

@@ -1,4 +1,4 @@
-// The snow layer's patch grid (issue 5, §1; seed 2.3, 3.1): the seed's dimensions, a
+// The snow layer's patch grid (seed 2.3, 3.1): the seed's dimensions, a
 // fine square on the print map's texels around the camera, the tangent frame
 // snow_deformation's normal assumes, and following the camera by whole steps.
 #include "host/snowfield/snow_patch_grid.hpp"

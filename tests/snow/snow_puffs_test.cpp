@@ -1,4 +1,4 @@
-// Snow puffs (issue 5, §5): the GPU particle step, and soft fading against the scene's
+// Snow puffs: the GPU particle step, and soft fading against the scene's
 // depth (seed 3.3.2), on lavapipe with validation on.
 #include "host/snowfield/snow_puffs.hpp"
 

@@ -1,4 +1,4 @@
-// Snow depth and refill rate from the weather state (issue 5, §3).
+// Snow depth and refill rate from the weather state.
 #include "host/snowfield/snow_weather.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The snowfield scene drawn by the runtime with the snow_layer graph and the
-// deformation map bound (issue 5, §4, §6, §7), on lavapipe with validation on: prints
+// deformation map bound, on lavapipe with validation on: prints
 // show as packed snow, nothing ghosts where the camera travels, the prints are back
 // after the round trip, no snow means no prints; puffs fade into the snow against its
 // depth (§5), lit no brighter than the snow, and bloom only adds light.

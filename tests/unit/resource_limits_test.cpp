@@ -1,4 +1,4 @@
-// Every resource limit (issue 6, hardening) stops the compile with WG1007 and nothing else.
+// Every resource limit stops the compile with WG1007 and nothing else.
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
 
