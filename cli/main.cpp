@@ -20,10 +20,10 @@ Usage:
   weathergen bench-render [--scene NAME]         GPU time of the weather, timestamp queries
   weathergen bench-snow                          GPU time and memory of the deformable snow
   weathergen list-ops [--json]                   every node op with its ports
-  weathergen list-passes                         the IR pass pipeline, in order
-  weathergen list-diagnostics                    every diagnostic code
-  weathergen list-generators                     built-in procedural textures
-  weathergen list-scenes                         the bundled validation scenes
+  weathergen list-passes [--json]                the IR pass pipeline, in order
+  weathergen list-diagnostics [--json]           every diagnostic code
+  weathergen list-generators [--json]            built-in procedural textures
+  weathergen list-scenes [--json]                the bundled validation scenes
   weathergen --help | --version
 
 Run 'weathergen COMMAND --help' for a command's options.

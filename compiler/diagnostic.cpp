@@ -65,9 +65,7 @@ bool DiagnosticList::contains(DiagCode code) const {
                      [code](const Diagnostic& d) { return d.code == code; });
 }
 
-namespace {
 std::string_view severityName(Severity s) { return s == Severity::Error ? "error" : "warning"; }
-}  // namespace
 
 // The file name and the pointer come from user text (paths, JSON keys): control
 // characters in them never reach the terminal raw.

@@ -49,6 +49,8 @@ class DiagnosticList {
   std::vector<Diagnostic> items_;
 };
 
+// "error" or "warning", as the text and JSON forms spell it.
+std::string_view severityName(Severity s);
 // "file:line:col: error WG2001: message [/json/pointer]\n  hint: ...\n"
 std::string formatDiagnosticText(const Diagnostic& d);
 // A JSON array of {code, severity, name, file, line, column, pointer, message, hint}.

@@ -1,5 +1,6 @@
 #include "compiler/diagnostics_doc.hpp"
 
+#include "compiler/diagnostic.hpp"
 #include "compiler/diagnostic_codes.hpp"
 
 namespace wg {
@@ -37,7 +38,7 @@ std::string diagnosticsMarkdown() {
       "|---|---|---|---|---|---|---|\n";
   for (const auto& d : allDiagnostics()) {
     out += "| " + std::string(d.id) + " | " + cell(d.name) + " | " +
-           (d.severity == Severity::Error ? "error" : "warning") + " | " + std::string(categoryName(d.category)) + " | " +
+           std::string(severityName(d.severity)) + " | " + std::string(categoryName(d.category)) + " | " +
            cell(d.messageTemplate) + " | " + cell(d.hintTemplate) + " | " + cell(d.arguments) + " |\n";
   }
   return out;
