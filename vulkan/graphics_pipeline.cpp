@@ -49,6 +49,7 @@ UniquePipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineSet
   dynamic.dynamicStateCount = 2;
   dynamic.pDynamicStates = dynamicStates;
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.flags = s.flags;
   info.stageCount = s.fragment ? 2 : 1;
   info.pStages = stages;
   info.pVertexInputState = &s.vertexInput;

@@ -21,6 +21,8 @@ struct GraphicsPipelineSettings {
   VkRenderPass pass = VK_NULL_HANDLE;
   // Must match the pass's attachments (the lit colour pass may be multisampled).
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  // VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR where a tool reads the driver's statistics.
+  VkPipelineCreateFlags flags = 0;
 };
 
 UniquePipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineSettings& settings);

@@ -83,6 +83,7 @@ MaterialPipeline::MaterialPipeline(Context& ctx, const MaterialReflection& refle
   VkPipelineLayout layout;
   check(vkCreatePipelineLayout(ctx.device(), &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
   layout_ = UniquePipelineLayout(ctx.device(), layout);
+  flags_ = passes.flags;
   colour_ = build(passes.lit, Kind::Colour, passes.litSamples);
   if (passes.aov != VK_NULL_HANDLE) aov_ = build(passes.aov, Kind::Aov);
   depth_ = build(passes.depth, Kind::Depth);
@@ -111,6 +112,7 @@ UniquePipeline MaterialPipeline::build(VkRenderPass pass, Kind kind, VkSampleCou
   settings.layout = layout_.get();
   settings.pass = pass;
   settings.samples = samples;
+  settings.flags = flags_;
   return createGraphicsPipeline(ctx_.device(), settings);
 }
 

@@ -28,6 +28,7 @@ struct PipelinePasses {
   VkSampleCountFlagBits litSamples = VK_SAMPLE_COUNT_1_BIT;
   VkRenderPass aov = VK_NULL_HANDLE;
   VkRenderPass depth = VK_NULL_HANDLE;
+  VkPipelineCreateFlags flags = 0;  // for every pipeline (GraphicsPipelineSettings::flags)
 };
 
 class MaterialPipeline {
@@ -58,6 +59,7 @@ class MaterialPipeline {
   UniquePipelineLayout layout_;
   UniquePipeline colour_, depth_;
   UniquePipeline aov_;  // for the AOV pass: its target is full-float, single-sampled
+  VkPipelineCreateFlags flags_ = 0;
 };
 
 // Formats of the renderer's attachments.
