@@ -10,12 +10,13 @@ namespace wg {
 namespace {
 // The variant's job: the tier moves from its switches to the job's own tier unless the
 // graph declares the switch (then it stays, and follows the tier: bindQualitySwitch).
-// Only the built-in axis has no place (pointer) in the graph's file.
+// Only the built-in axis has no place (pointer) in the graph's file. A value of a
+// declared "quality" that names no tier ("draft") picks none, as through the engine API.
 CompileJob jobFor(const std::string& graph, const SwitchValues& variant, const std::vector<SwitchDecl>& axes) {
   CompileJob job{graph, variant};
   auto tier = job.switches.find(std::string(kQualitySwitch));
   if (tier == job.switches.end()) return job;
-  job.quality = tier->second;
+  if (findQualityTier(tier->second)) job.quality = tier->second;
   if (std::none_of(axes.begin(), axes.end(), [](const SwitchDecl& s) { return s.name == kQualitySwitch && !s.pointer.empty(); }))
     job.switches.erase(tier);
   return job;

@@ -25,6 +25,16 @@ testing::CommandResult compileRock(const fs::path& out, const std::string& flags
 
 nlohmann::json readIndex(const fs::path& dir) { return nlohmann::json::parse(readFile(dir / "rock.variants.json")); }
 
+nlohmann::json bundledRoad() { return nlohmann::json::parse(readFile(std::string(WG_SOURCE_DIR) + "/graphs/road.json")); }
+
+// Writes `graph` as DIR/road.json and compiles its variants to DIR/out (GLSL).
+testing::CommandResult compileVariantsOf(const nlohmann::json& graph, const fs::path& dir, const std::string& selection) {
+  const fs::path file = dir / "road.json";
+  testing::writeFile(file, graph.dump());
+  return runCommand(shellQuote(WG_CLI_PATH) + " compile " + shellQuote(file.string()) + " -o " +
+                    shellQuote((dir / "out").string()) + " --variants " + selection + " --target glsl");
+}
+
 std::vector<std::string> variantNames(const nlohmann::json& index) {
   std::vector<std::string> names;
   for (const auto& v : index["variants"]) names.push_back(v["name"]);
@@ -92,12 +102,9 @@ TEST(Variants, ListSelectsSwitchesAndValues) {
 // cannot show, so they share one content hash; low drops sky exposure and differs.
 TEST(Variants, TiersWithIdenticalShadersShareOneHash) {
   TempDir dir("variants-tiers");
-  nlohmann::json road = nlohmann::json::parse(readFile(std::string(WG_SOURCE_DIR) + "/graphs/road.json"));
+  nlohmann::json road = bundledRoad();
   road["weather"] = {{"preset", "road"}, {"effects", {{"ripple", false}, {"specularAntiAliasing", false}}}};
-  const fs::path graph = dir.path() / "road.json";
-  testing::writeFile(graph, road.dump());
-  auto r = runCommand(shellQuote(WG_CLI_PATH) + " compile " + shellQuote(graph.string()) + " -o " +
-                      shellQuote((dir.path() / "out").string()) + " --variants all --target glsl");
+  auto r = compileVariantsOf(road, dir.path(), "all");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   nlohmann::json index = nlohmann::json::parse(readFile(dir.path() / "out" / "road.variants.json"));
   EXPECT_EQ(index["switches"]["quality"]["values"], (std::vector<std::string>{"low", "medium", "high"}));
@@ -171,6 +178,19 @@ TEST(Variants, AnErrorEveryVariantMeetsIsPrintedOncePerGraph) {
   EXPECT_EQ(count, 2u) << r.output;
   EXPECT_NE(r.output.find("a.json"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("b.json"), std::string::npos) << r.output;
+}
+
+// A graph's own "quality" may have values that are no tier: a variant with one keeps
+// the compile's tier instead of failing as an unknown tier.
+TEST(Variants, OwnQualityValuesThatNameNoTierAreVariants) {
+  TempDir dir("variants-own-quality");
+  nlohmann::json road = bundledRoad();
+  road["switches"] = {{"quality", {{"values", {"draft", "final"}}, {"default", "final"}}}};
+  auto r = compileVariantsOf(road, dir.path(), "quality");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  nlohmann::json index = nlohmann::json::parse(readFile(dir.path() / "out" / "road.variants.json"));
+  EXPECT_EQ(variantNames(index), (std::vector<std::string>{"quality=draft", "quality=final"}));
+  EXPECT_EQ(index["variants"][0]["contentHash"], index["variants"][1]["contentHash"]);
 }
 
 }  // namespace
