@@ -75,13 +75,12 @@ std::pair<std::size_t, std::size_t> interfaceSizes(const CompiledMaterial& m) {
   return {uniformBytes, reflection.at("varyings").size()};
 }
 
-// Every row of one graph; false when it does not compile.
-bool graphRows(const std::string& graph, const Options& o, std::vector<StatsRow>& rows) {
+// Every row of one graph, its diagnostics added to `diagnostics`; false when it does
+// not compile.
+bool graphRows(const std::string& graph, const Options& o, std::vector<StatsRow>& rows, DiagnosticList& diagnostics) {
   for (const QualityTier& tier : qualityTiers()) {
     if (o.quality && *o.quality != tier.name) continue;
-    DiagnosticList diagnostics;
     std::optional<WeatherCost> cost = weatherCostAtTier(graph, std::string(tier.name), o.weatherPreset, diagnostics);
-    printDiagnostics(diagnostics.items(), o.json);
     if (!cost) return false;
     const auto [uniformBytes, interpolants] = interfaceSizes(cost->material);
     for (const StageCost& s : cost->stages) {
@@ -94,11 +93,22 @@ bool graphRows(const std::string& graph, const Options& o, std::vector<StatsRow>
   return true;
 }
 
+// User text in a Markdown table cell: quoted, and a '|' escaped so that it cannot
+// start a cell of its own.
+std::string tableCell(const std::string& text) {
+  std::string cell;
+  for (char c : quoteUserText(text)) {
+    if (c == '|') cell += '\\';
+    cell += c;
+  }
+  return cell;
+}
+
 void printTable(const std::vector<StatsRow>& rows) {
   std::printf("| material | tier | stage | language | instructions | weather | budget | texture reads | branches | "
               "uniform bytes | interpolants |\n|---|---|---|---|---:|---:|---|---:|---:|---:|---:|\n");
   for (const StatsRow& r : rows)
-    std::printf("| %s | %s | %s | %s | %zu | %+ld | %d%s | %zu | %zu | %zu | %zu |\n", quoteUserText(r.material).c_str(),
+    std::printf("| %s | %s | %s | %s | %zu | %+ld | %d%s | %zu | %zu | %zu | %zu |\n", tableCell(r.material).c_str(),
                 r.tier.c_str(), r.stage.c_str(), r.language.c_str(), r.spirv.instructions, r.weather, r.budget,
                 r.weather > r.budget ? " over" : "", r.spirv.textureReads, r.spirv.branches, r.uniformBytes,
                 r.interpolants);
@@ -126,9 +136,14 @@ int runStatsCommand(int argc, char** argv) {
     return kExitOk;
   }
   if (o.graphs.empty()) return usageError("stats needs at least one GRAPH.json", o.json);
+  // Every graph's errors, not only the first graph's, and under --json one array on
+  // stderr for the whole run.
   std::vector<StatsRow> rows;
-  for (const std::string& graph : o.graphs)
-    if (!graphRows(graph, o, rows)) return kExitBadInput;
+  DiagnosticList diagnostics;
+  bool compiled = true;
+  for (const std::string& graph : o.graphs) compiled = graphRows(graph, o, rows, diagnostics) && compiled;
+  printDiagnostics(diagnostics.items(), o.json);
+  if (!compiled) return kExitBadInput;
   if (o.json) printJson(rows);
   else printTable(rows);
   return kExitOk;

@@ -147,5 +147,48 @@ TEST(QualityTiersCli, StatsOfABrokenGraphIsExitOneWithItsDiagnostic) {
   EXPECT_NE(r.output.find("WG1001"), std::string::npos) << r.output;
 }
 
+// Every broken graph is reported, not only the first, and none of the graphs' rows are
+// printed; under --json the diagnostics on stderr are one array for the whole run.
+TEST(QualityTiersCli, StatsReportsEveryBrokenGraphInOneJsonArray) {
+  TempDir dir("quality");
+  const std::string bad = (dir.path() / "bad.json").string(), missing = (dir.path() / "missing.json").string();
+  testing::writeFile(bad, "{\"name\": \"bad\", \"nodes\": [");
+  const std::string graphs = shellQuote(bad) + " " + shellQuote(graph("road")) + " " + shellQuote(missing);
+  auto r = runCommand("(" + shellQuote(kCli) + " stats " + graphs + " --quality low --json 2>&1 >" +
+                      shellQuote((dir.path() / "rows").string()) + ")");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_EQ(readFile(dir.path() / "rows"), "");
+  const json diagnostics = json::parse(r.output, nullptr, false);
+  ASSERT_TRUE(diagnostics.is_array()) << r.output;
+  ASSERT_EQ(diagnostics.size(), 2u) << r.output;
+  EXPECT_EQ(diagnostics[0]["code"], "WG1001");
+  EXPECT_EQ(diagnostics[0]["file"], bad);
+  EXPECT_EQ(diagnostics[1]["code"], "WG1002");
+  EXPECT_EQ(diagnostics[1]["file"], missing);
+}
+
+TEST(QualityTiersCli, StatsOfEveryTierWritesOneEmptyDiagnosticsArray) {
+  auto r = runCommand("(" + shellQuote(kCli) + " stats " + shellQuote(graph("road")) + " --json 2>&1 >/dev/null)");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(json::parse(r.output, nullptr, false), json::array()) << r.output;
+}
+
+// A '|' in a material's name is escaped in the table, so each row keeps its 11 cells.
+TEST(QualityTiersCli, StatsTableEscapesAPipeInTheName) {
+  TempDir dir("quality");
+  json road = json::parse(readFile(graph("road")));
+  road["name"] = "wet|road";
+  const std::string path = (dir.path() / "pipe.json").string();
+  testing::writeFile(path, road.dump());
+  auto r = runCommand(shellQuote(kCli) + " stats " + shellQuote(path) + " --quality low");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::size_t row = r.output.find("| wet\\|road |");
+  ASSERT_NE(row, std::string::npos) << r.output;
+  const std::string line = r.output.substr(row, r.output.find('\n', row) - row);
+  std::size_t separators = 0;
+  for (std::size_t i = 0; i < line.size(); ++i) separators += line[i] == '|' && (i == 0 || line[i - 1] != '\\');
+  EXPECT_EQ(separators, 12u) << line;
+}
+
 }  // namespace
 }  // namespace wg
