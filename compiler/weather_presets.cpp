@@ -309,12 +309,22 @@ void reportUnknownTier(DiagnosticList& diags, SourceLocation at, const std::stri
                {"quality tier", quoteUserText(name), unknownNameHint(name, names, "tiers")});
 }
 
+// The tier named `name`, or null after reporting it unknown at `at`.
+const QualityTier* knownTier(const std::string& name, SourceLocation at, SettingErrors& errors) {
+  const QualityTier* tier = findQualityTier(name);
+  if (!tier) {
+    reportUnknownTier(errors.diags, std::move(at), name);
+    errors.ok = false;
+  }
+  return tier;
+}
+
 // The tier the caller asks for, else the block's "quality", else the fallback, over the
-// preset's effects. False when a tier is unknown or the block's is not a string.
+// preset's effects. False when a tier is unknown or the block's is not a string; the
+// block's is checked even when the caller's replaces it, as its kind is.
 bool applyQuality(const QualityChoice& quality, const nlohmann::json* block, const std::string& pointer,
                   WeatherConfig& config, SettingErrors& errors) {
   std::string name = quality.fallback;
-  SourceLocation at;
   if (block && block->contains("quality")) {
     const std::string qualityAt = appendPointer(pointer, "quality");
     const nlohmann::json& value = block->at("quality");
@@ -323,18 +333,11 @@ bool applyQuality(const QualityChoice& quality, const nlohmann::json* block, con
       return false;
     }
     name = value.get<std::string>();
-    at = errors.doc.locate(qualityAt);
+    if (!knownTier(name, errors.doc.locate(qualityAt), errors)) return false;
   }
-  if (quality.requested) {
-    name = *quality.requested;
-    at = SourceLocation{};
-  }
-  const QualityTier* tier = findQualityTier(name);
-  if (!tier) {
-    reportUnknownTier(errors.diags, at, name);
-    errors.ok = false;
-    return false;
-  }
+  if (quality.requested) name = *quality.requested;
+  const QualityTier* tier = knownTier(name, SourceLocation{}, errors);
+  if (!tier) return false;
   config.quality = tier->name;
   applyQualityTier(*tier, config.effects);
   return true;

@@ -294,6 +294,20 @@ TEST(WeatherErrors, OutOfRangeMaxSnowHeightIsWG4002) {
   EXPECT_EQ(ok.exitCode, 0) << ok.raw;
 }
 
+// The block's tier is checked even where --quality replaces it, as its kind is: the
+// same file must not compile under one command line and fail under another.
+TEST(WeatherErrors, AnUnknownTierIsWG4006AndANonStringTierWG4007WhateverTheQualityOption) {
+  TempDir dir("weather-err");
+  for (const char* option : {"", "--quality low"}) {
+    expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "quality": "ultra"})"), option), "WG4006",
+               "/weather/quality");
+    expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "quality": 3})"), option), "WG4007",
+               "/weather/quality");
+  }
+  auto ok = compileText(dir, minimalGraph(R"({"preset": "rock", "quality": "medium"})"), "--quality low");
+  EXPECT_EQ(ok.exitCode, 0) << ok.raw;
+}
+
 TEST(WeatherErrors, UnknownEffectIsWG4006AndANonBooleanEffectWG4007) {
   TempDir dir("weather-err");
   expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "effects": {"glitter": true}})")), "WG4006",
