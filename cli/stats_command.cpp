@@ -2,15 +2,16 @@
 // stage and language: SPIR-V instructions after spirv-opt, what the weather adds to
 // them (against the same graph with preset none), texture reads, branches, uniform
 // bytes and interpolants. The budgets in docs/BENCHMARKS.md are read from it.
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
-#include "cli/effect_overrides_option.hpp"
 #include "cli/option_table.hpp"
 #include "compiler/literal.hpp"
 #include "compiler/quality_tiers.hpp"
@@ -38,7 +39,16 @@ struct Options {
   bool help = false;
 };
 
-std::string checkTierOrAll(const std::string& name) { return name == "all" ? "" : checkQualityTierName(name); }
+std::string checkTierOrAll(const std::string& name) {
+  if (name == "all" || findQualityTier(name)) return "";
+  return "--quality: unknown tier '" + quoteUserText(name) + "' (tiers: " + qualityTierList() + ", or all)";
+}
+
+// --json anywhere on the line, read before the options: a usage error in front of it
+// is JSON too.
+bool jsonRequested(int argc, char** argv) {
+  return std::any_of(argv + 2, argv + argc, [](const char* arg) { return std::string_view(arg) == "--json"; });
+}
 
 OptionTable statsOptionTable(Options& o) {
   return {.options = {
@@ -130,7 +140,7 @@ int runStatsCommand(int argc, char** argv) {
   Options o;
   const OptionTable table = statsOptionTable(o);
   const OptionParseResult parsed = parseOptions(table, argc, argv, 2);
-  if (parsed.status == OptionParse::Failed) return usageError(parsed.error, o.json);
+  if (parsed.status == OptionParse::Failed) return usageError(parsed.error, jsonRequested(argc, argv));
   if (o.help) {
     std::printf("%s%s", kStatsUsage, formatOptionList(table).c_str());
     return kExitOk;

@@ -173,6 +173,20 @@ TEST(QualityTiersCli, StatsOfEveryTierWritesOneEmptyDiagnosticsArray) {
   EXPECT_EQ(json::parse(r.output, nullptr, false), json::array()) << r.output;
 }
 
+// A usage error is JSON when --json comes after it, and names every --quality value.
+TEST(QualityTiersCli, StatsUsageErrorsBeforeJsonAreJson) {
+  for (const char* options : {"--weather-preset bogus --json", "--quality ultra --json"}) {
+    auto r = runCommand("(" + shellQuote(kCli) + " stats " + shellQuote(graph("road")) + " " + options +
+                        " 2>&1 >/dev/null)");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    const json diagnostics = json::parse(r.output, nullptr, false);
+    ASSERT_TRUE(diagnostics.is_array() && diagnostics.size() == 1u) << options << ": " << r.output;
+    EXPECT_EQ(diagnostics[0]["code"], "WG9001");
+  }
+  auto r = runCommand(shellQuote(kCli) + " stats " + shellQuote(graph("road")) + " --quality ultra");
+  EXPECT_NE(r.output.find("low, medium, high, or all"), std::string::npos) << r.output;
+}
+
 // A '|' in a material's name is escaped in the table, so each row keeps its 11 cells.
 TEST(QualityTiersCli, StatsTableEscapesAPipeInTheName) {
   TempDir dir("quality");
