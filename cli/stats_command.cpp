@@ -3,7 +3,9 @@
 // them (against the same graph with preset none), texture reads, branches, uniform
 // bytes and interpolants. The budgets in docs/BENCHMARKS.md are read from it.
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -134,6 +136,13 @@ void printJson(const std::vector<StatsRow>& rows) {
   std::printf("%s\n", out.dump(2).c_str());
 }
 
+// Rows that did not reach stdout (a full disk, a closed descriptor) fail the command,
+// as an output file that cannot be written fails compile.
+int finishOutput(bool json) {
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return kExitOk;
+  return usageError(std::string("cannot write the rows to standard output: ") + std::strerror(errno), json);
+}
+
 }  // namespace
 
 int runStatsCommand(int argc, char** argv) {
@@ -156,7 +165,7 @@ int runStatsCommand(int argc, char** argv) {
   if (!compiled) return kExitBadInput;
   if (o.json) printJson(rows);
   else printTable(rows);
-  return kExitOk;
+  return finishOutput(o.json);
 }
 
 }  // namespace wg

@@ -187,6 +187,15 @@ TEST(QualityTiersCli, StatsUsageErrorsBeforeJsonAreJson) {
   EXPECT_NE(r.output.find("low, medium, high, or all"), std::string::npos) << r.output;
 }
 
+// Rows lost on the way out are not a success: a full disk, a closed stdout.
+TEST(QualityTiersCli, StatsRowsThatCannotBeWrittenFailTheCommand) {
+  for (const char* stdoutTo : {">/dev/full", ">&-"}) {
+    auto r = runCommand("(" + shellQuote(kCli) + " stats " + shellQuote(graph("road")) + " --quality low " + stdoutTo + ")");
+    EXPECT_EQ(r.exitCode, 2) << stdoutTo << ": " << r.output;
+    EXPECT_NE(r.output.find("cannot write the rows to standard output"), std::string::npos) << r.output;
+  }
+}
+
 // A '|' in a material's name is escaped in the table, so each row keeps its 11 cells.
 TEST(QualityTiersCli, StatsTableEscapesAPipeInTheName) {
   TempDir dir("quality");
