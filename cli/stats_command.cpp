@@ -72,6 +72,7 @@ OptionTable statsOptionTable(Options& o) {
 }
 
 struct StatsRow {
+  std::string graph;  // the file, as given: two graphs may declare one material name
   std::string material, tier, stage, language;
   SpirvStatistics spirv;
   long weather = 0;  // instructions the weather adds
@@ -97,7 +98,7 @@ bool graphRows(const std::string& graph, const Options& o, std::vector<StatsRow>
     const auto [uniformBytes, interpolants] = interfaceSizes(cost->material);
     for (const StageCost& s : cost->stages) {
       const bool vertex = s.stage == ShaderStage::Vertex;
-      rows.push_back({cost->material.name, std::string(tier.name), vertex ? "vert" : "frag",
+      rows.push_back({graph, cost->material.name, std::string(tier.name), vertex ? "vert" : "frag",
                       std::string(languageName(s.language)), s.spirv, s.weather, weatherBudget(tier, s.stage),
                       uniformBytes, interpolants});
     }
@@ -129,11 +130,12 @@ void printTable(const std::vector<StatsRow>& rows) {
 void printJson(const std::vector<StatsRow>& rows) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const StatsRow& r : rows)
-    out.push_back({{"material", r.material}, {"tier", r.tier}, {"stage", r.stage}, {"language", r.language},
+    out.push_back({{"graph", r.graph}, {"material", r.material}, {"tier", r.tier}, {"stage", r.stage}, {"language", r.language},
                    {"instructions", r.spirv.instructions}, {"weatherInstructions", r.weather}, {"weatherBudget", r.budget},
                    {"textureReads", r.spirv.textureReads}, {"branches", r.spirv.branches},
                    {"uniformBytes", r.uniformBytes}, {"interpolants", r.interpolants}});
-  std::printf("%s\n", out.dump(2).c_str());
+  // A path need not be UTF-8: its stray bytes become U+FFFD, as in the diagnostics.
+  std::printf("%s\n", out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
 }
 
 // Rows that did not reach stdout (a full disk, a closed descriptor) fail the command,

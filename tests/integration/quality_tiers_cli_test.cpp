@@ -196,6 +196,20 @@ TEST(QualityTiersCli, StatsRowsThatCannotBeWrittenFailTheCommand) {
   }
 }
 
+// Two graphs may declare one material: each JSON row names its file, a name that is not
+// UTF-8 with U+FFFD for its stray byte.
+TEST(QualityTiersCli, StatsJsonRowsNameTheirGraphFile) {
+  TempDir dir("quality");
+  const std::string plain = (dir.path() / "road.json").string(), hostile = (dir.path() / "r\xff.json").string();
+  testing::writeFile(plain, readFile(graph("road")));
+  testing::writeFile(hostile, readFile(graph("road")));
+  const json rows = statsRows(shellQuote(plain) + " " + shellQuote(hostile) + " --quality low");
+  ASSERT_TRUE(rows.is_array() && rows.size() == 8u) << rows.dump();
+  EXPECT_EQ(rows[0]["graph"], plain);
+  EXPECT_EQ(rows[7]["graph"], (dir.path() / "r\xef\xbf\xbd.json").string());
+  EXPECT_EQ(rows[7]["material"], "road");
+}
+
 // A '|' in a material's name is escaped in the table, so each row keeps its 11 cells.
 TEST(QualityTiersCli, StatsTableEscapesAPipeInTheName) {
   TempDir dir("quality");
