@@ -8,10 +8,16 @@
 // would run; scripts/gpu-shader-stats.sh sets it up.
 //
 //   weathergen_gpu_shader_stats [--device NAME] [--quality TIER] [--effects NAME=on|off,...] GRAPH...
+//   --fragment-spirv FILE.spv  the weathered fragment stage read from FILE (a hand edit of
+//                              the emitted GLSL through glslangValidator -V), to try a change
+//                              of the shader library before making it
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <string>
@@ -31,6 +37,7 @@ struct Options {
   std::vector<std::string> tiers;
   wg::WeatherEffectOverrides effects;
   std::vector<std::string> graphs;
+  std::string fragmentSpirv;  // a hand-edited fragment stage in place of the weathered one
 };
 
 struct Gpu {
@@ -140,18 +147,25 @@ std::optional<StageStatistics> materialStatistics(const Gpu& gpu, wg::vk::Contex
   for (const auto& d : result.diagnostics.items()) std::fputs(wg::formatDiagnosticText(d).c_str(), stderr);
   if (!result.material) return std::nullopt;
   const wg::CompiledMaterial& m = *result.material;
+  wg::SpirvWords fragment = m.stage(wg::ShaderLanguage::Glsl, wg::ShaderStage::Fragment).spirv;
+  if (!o.fragmentSpirv.empty() && !preset) {
+    std::ifstream in(o.fragmentSpirv, std::ios::binary);
+    std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    fragment.assign(bytes.size() / 4, 0);
+    std::memcpy(fragment.data(), bytes.data(), fragment.size() * 4);
+  }
   wg::vk::UniqueRenderPass colour = wg::createColourPass(gpu.device, wg::vk::kColourFormat);
   wg::vk::UniqueRenderPass depth = wg::createDepthOnlyPass(gpu.device);
   wg::vk::PipelinePasses passes{.lit = colour.get(), .depth = depth.get(),
                                 .flags = VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR};
   wg::vk::MaterialPipeline pipeline(ctx, wg::vk::parseReflection(m.reflectionJson),
                                     m.stage(wg::ShaderLanguage::Glsl, wg::ShaderStage::Vertex).spirv,
-                                    m.stage(wg::ShaderLanguage::Glsl, wg::ShaderStage::Fragment).spirv, passes);
+                                    fragment, passes);
   return pipelineStatistics(gpu, pipeline.colourPipeline());
 }
 
 const char* const kColumns[] = {"VGPRs", "SGPRs", "Instructions", "Code size", "Subgroups per SIMD", "Latency",
-                                "Inverse Throughput", "Branches", "Spilled VGPRs"};
+                                "Inverse Throughput", "Branches", "Spilled VGPRs", "Pre-Sched VGPRs"};
 
 void printRow(const std::string& material, const std::string& tier, const std::string& stage, const char* weather,
               const std::map<std::string, double>& stats) {
@@ -167,9 +181,10 @@ void printRow(const std::string& material, const std::string& tier, const std::s
 bool parseArguments(int argc, char** argv, Options& o) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if ((a == "--device" || a == "--quality" || a == "--effects") && i + 1 < argc) {
+    if ((a == "--device" || a == "--quality" || a == "--effects" || a == "--fragment-spirv") && i + 1 < argc) {
       const std::string v = argv[++i];
       if (a == "--device") o.device = v;
+      if (a == "--fragment-spirv") o.fragmentSpirv = v;
       if (a == "--quality") o.tiers = {v};
       for (std::size_t at = 0; a == "--effects" && at < v.size();) {
         const std::size_t end = std::min(v.find(',', at), v.size());
@@ -195,7 +210,7 @@ bool parseArguments(int argc, char** argv, Options& o) {
 int main(int argc, char** argv) {
   Options o;
   if (!parseArguments(argc, argv, o)) {
-    std::fprintf(stderr, "usage: %s [--device NAME] [--quality TIER] [--effects NAME=on|off,...] GRAPH...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--device NAME] [--quality TIER] [--effects NAME=on|off,...] [--fragment-spirv FILE] GRAPH...\n", argv[0]);
     return 2;
   }
   Gpu gpu;
