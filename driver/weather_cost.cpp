@@ -21,15 +21,15 @@ std::optional<CompiledMaterial> compileAt(const std::string& graph, const std::s
 
 std::optional<WeatherCost> weatherCostAtTier(const std::string& graph, const std::string& tier,
                                              const std::optional<std::string>& preset, DiagnosticList& diagnostics) {
-  const std::optional<CompiledMaterial> none = compileAt(graph, tier, "none", diagnostics);
+  std::optional<CompiledMaterial> none = compileAt(graph, tier, "none", diagnostics);
   if (!none) return std::nullopt;
   std::optional<CompiledMaterial> weathered = compileAt(graph, tier, preset, diagnostics);
   if (!weathered) return std::nullopt;
-  WeatherCost cost{std::move(*weathered), {}};
+  WeatherCost cost{std::move(*weathered), std::move(*none), {}};
   for (ShaderStage stage : kStages)
     for (ShaderLanguage language : kLanguages) {
       StageCost s{stage, language, spirvStatistics(optimizeSpirv(cost.material.stage(language, stage).spirv))};
-      const std::size_t bare = countInstructions(optimizeSpirv(none->stage(language, stage).spirv));
+      const std::size_t bare = countInstructions(optimizeSpirv(cost.none.stage(language, stage).spirv));
       s.weather = static_cast<long>(s.spirv.instructions) - static_cast<long>(bare);
       cost.stages.push_back(s);
     }

@@ -22,6 +22,7 @@ struct StageCost {
 
 struct WeatherCost {
   CompiledMaterial material;      // weathered, at the tier
+  CompiledMaterial none;          // the same graph with preset none, at the tier
   std::vector<StageCost> stages;  // vertex then fragment; GLSL then HLSL
 };
 

@@ -227,5 +227,42 @@ TEST(QualityTiersCli, StatsTableEscapesAPipeInTheName) {
   EXPECT_EQ(separators, 12u) << line;
 }
 
+// --gpu: what AMD's own shader compiler (RADV's null device, no GPU needed) makes of each
+// GLSL stage: registers, waves, ISA instructions and what the weather adds to them.
+TEST(QualityTiersCli, StatsGpuShowsWhatAnAmdCompilerMakesOfEachGlslStage) {
+  const json rows = statsRows(shellQuote(graph("rock")) + " --quality high --gpu navi21");
+  ASSERT_EQ(rows.size(), 4u) << rows;
+  for (const json& r : rows) {
+    if (r["language"] == "hlsl") {
+      EXPECT_FALSE(r.contains("gpu")) << r;
+      continue;
+    }
+    const json& gpu = r.at("gpu");
+    EXPECT_GE(gpu.at("vgprs").get<int>(), 8) << r;
+    EXPECT_GE(gpu.at("wavesPerSimd").get<int>(), 1) << r;
+    EXPECT_GE(gpu.at("codeBytes").get<int>(), 4 * gpu.at("instructions").get<int>()) << r;  // 4 or 8 bytes each
+    // Rock's high tier displaces snow and shades it: both stages run more than without.
+    EXPECT_GT(gpu.at("weatherInstructions").get<int>(), 20) << r;
+    EXPECT_GT(gpu.at("instructions").get<int>(), gpu.at("weatherInstructions").get<int>()) << r;
+  }
+  // Against itself (preset none), the weather adds nothing on the GPU either.
+  for (const json& r : statsRows(shellQuote(graph("rock")) + " --quality low --gpu navi21 --weather-preset none"))
+    if (r["language"] == "glsl") EXPECT_EQ(r.at("gpu").at("weatherInstructions"), 0) << r;
+  auto table = runCommand(shellQuote(kCli) + " stats " + shellQuote(graph("rock")) + " --quality low --gpu navi21");
+  ASSERT_EQ(table.exitCode, 0) << table.output;
+  EXPECT_NE(table.output.find("| VGPRs | waves per SIMD | ISA instructions | weather ISA |"), std::string::npos)
+      << table.output;
+  EXPECT_NE(table.output.find("| - | - | - | - |"), std::string::npos) << table.output;  // the HLSL rows
+}
+
+// RADV ends the process on a family it does not know, so none reaches it.
+TEST(QualityTiersCli, StatsGpuRefusesAFamilyItDoesNotKnow) {
+  for (const std::string family : {"nosuch", "arcturus", ""}) {
+    auto r = runCommand(shellQuote(kCli) + " stats " + shellQuote(graph("rock")) + " --gpu " + shellQuote(family) + " 2>&1");
+    EXPECT_EQ(r.exitCode, 2) << family << ": " << r.output;
+    EXPECT_NE(r.output.find("navi21"), std::string::npos) << r.output;
+  }
+}
+
 }  // namespace
 }  // namespace wg
