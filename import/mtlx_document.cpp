@@ -1,6 +1,7 @@
 #include "import/mtlx_document.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <set>
 
 #include "compiler/literal.hpp"
@@ -94,6 +95,7 @@ class Loader {
     SourceFile& f = *file;
     doc_.files.push_back(std::move(file));
     if (!parse(f) || !withinLimits(f, elementCount_, diags_)) return false;
+    doc_.indexChildren(f);
     chain_.push_back(fs::weakly_canonical(path));
     loaded_.insert(chain_.back());
     bool ok = readTopLevel(f, path.parent_path());
@@ -146,7 +148,7 @@ class Loader {
                       {"two top-level elements are named '" + quoteUserText(name) + "'", "give every element a unique name"});
         return false;
       }
-      if (name.empty() || !doc_.topLevel(name)) doc_.elements.push_back(e);
+      doc_.addTopLevel(e);
     }
     return true;
   }
@@ -228,9 +230,44 @@ SourceLocation Document::locate(pugi::xml_node node) const {
 }
 
 pugi::xml_node Document::topLevel(std::string_view name) const {
-  for (pugi::xml_node e : elements)
-    if (name == e.attribute("name").value()) return e;
-  return {};
+  auto it = byName_.find(std::string(name));
+  return it == byName_.end() ? pugi::xml_node() : it->second;
+}
+
+namespace {
+std::string childKey(pugi::xml_node parent, std::string_view name) {
+  std::string key(sizeof(void*), '\0');
+  const void* address = parent.internal_object();
+  std::memcpy(key.data(), &address, sizeof address);
+  return key.append(name);
+}
+}  // namespace
+
+pugi::xml_node Document::childIn(const ChildIndex& index, pugi::xml_node parent, std::string_view name) {
+  auto it = index.find(childKey(parent, name));
+  return it == index.end() ? pugi::xml_node() : it->second;
+}
+
+void Document::indexChildren(const SourceFile& file) {
+  std::vector<pugi::xml_node> stack{file.xml.document_element()};
+  while (!stack.empty()) {
+    pugi::xml_node parent = stack.back();
+    stack.pop_back();
+    for (pugi::xml_node child : parent.children()) {
+      if (child.type() != pugi::node_element) continue;
+      std::string_view kind = child.name();
+      ChildIndex& index = kind == "input" ? inputs_ : kind == "output" ? outputs_ : nodes_;
+      index.emplace(childKey(parent, child.attribute("name").value()), child);  // the first of a name wins
+      stack.push_back(child);
+    }
+  }
+}
+
+bool Document::addTopLevel(pugi::xml_node element) {
+  std::string name = element.attribute("name").value();
+  if (!name.empty() && !byName_.emplace(name, element).second) return false;
+  elements.push_back(element);
+  return true;
 }
 
 fs::path Document::find(const std::string& relative) const {

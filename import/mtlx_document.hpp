@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "compiler/diagnostic.hpp"
@@ -38,11 +39,27 @@ class Document {
   SourceLocation locate(pugi::xml_node node) const;
   // The top-level element named `name`, or an empty node.
   pugi::xml_node topLevel(std::string_view name) const;
+  // Appends `element` to `elements` unless its name came earlier; false when it did.
+  bool addTopLevel(pugi::xml_node element);
+  // The first <input> (or <output>, or other element: a node) of `parent` named `name`.
+  pugi::xml_node input(pugi::xml_node parent, std::string_view name) const { return childIn(inputs_, parent, name); }
+  pugi::xml_node output(pugi::xml_node parent, std::string_view name) const { return childIn(outputs_, parent, name); }
+  pugi::xml_node childNode(pugi::xml_node parent, std::string_view name) const { return childIn(nodes_, parent, name); }
+  // Indexes the children of every element of `file` for the three look-ups above.
+  void indexChildren(const SourceFile& file);
   // `relative` (a path as a document writes it) resolved inside the roots: the first root
   // holding it; "" when none does or it would leave every root.
   std::filesystem::path find(const std::string& relative) const;
   // The document and every file it includes, for the check that no output replaces them.
   std::vector<std::filesystem::path> inputFiles() const;
+
+ private:
+  // Elements by name: a document of 200 000 elements is looked up once per reference,
+  // and a scan per look-up would take minutes.
+  using ChildIndex = std::unordered_map<std::string, pugi::xml_node>;  // key: parent address, then the name
+  static pugi::xml_node childIn(const ChildIndex& index, pugi::xml_node parent, std::string_view name);
+  std::unordered_map<std::string, pugi::xml_node> byName_;
+  ChildIndex inputs_, outputs_, nodes_;
 };
 
 // "/materialx/nodegraph[NG]/input[file]": where an element is, as a JSON-pointer-like path.

@@ -102,8 +102,9 @@ std::string plainName(std::string name) {
 
 class GraphWriter {
  public:
-  GraphWriter(const Document& doc, const GraphNaming& naming, const ImageFiles& images, DiagnosticList& diags)
-      : doc_(doc), naming_(naming), images_(images), diags_(diags) {}
+  GraphWriter(const Document& doc, const GraphNaming& naming, const ImageFiles& images, std::size_t& nodesLeft,
+              DiagnosticList& diags)
+      : doc_(doc), naming_(naming), images_(images), nodesLeft_(nodesLeft), diags_(diags) {}
 
   std::optional<Json> build(pugi::xml_node material) {
     pugi::xml_node shader = surfaceShader(doc_, material);
@@ -123,6 +124,7 @@ class GraphWriter {
     shader_ = shader;
     model_ = model;
     Json output = shaderOutput();
+    nodesLeft_ = overLimit_ ? 0 : nodesLeft_ - std::min(nodesLeft_, nodes_.size());
     if (failed_) return std::nullopt;
     dropUnreadParameters(output);
     Json graph;
@@ -165,17 +167,24 @@ class GraphWriter {
   std::string uniqueId(std::string id) {
     for (char& c : id)
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.') c = '_';
-    std::string base = id;
-    for (int n = 2; !ids_.insert(id).second; ++n) id = base + "_" + std::to_string(n);
+    if (ids_.insert(id).second) return id;
+    // Suffixes below the one tried last for this base are all taken: ids are never freed.
+    // Starting there keeps ten thousand names that sanitise alike from taking minutes.
+    const std::string base = id;
+    int& n = nextSuffix_.try_emplace(base, 2).first->second;
+    while (!ids_.insert(id = base + "_" + std::to_string(n)).second) ++n;
     return id;
   }
 
   // Adds a node and returns the value of its output.
   Value node(const std::string& id, const char* op, Json inputs, const std::string& type, const char* output = "out") {
-    if (nodes_.size() == kMaxGraphNodes) {
+    if (!overLimit_ && (nodes_.size() >= kMaxGraphNodes || nodes_.size() >= nodesLeft_)) {
+      bool own = nodes_.size() >= kMaxGraphNodes;
+      std::size_t limit = own ? kMaxGraphNodes : kMaxImportGraphNodes;
       diags_.report(DiagCode::ResourceLimit, doc_.locate(shader_),
-                    {"the graph node count", "over " + std::to_string(kMaxGraphNodes), std::to_string(kMaxGraphNodes)});
-      failed_ = true;
+                    {own ? "the graph node count" : "the graph node count of all materials together", "over " + std::to_string(limit),
+                     std::to_string(limit)});
+      failed_ = overLimit_ = true;
     }
     std::string unique = uniqueId(id);
     Json n{{"id", unique}, {"op", op}};
@@ -350,11 +359,7 @@ class GraphWriter {
 
   // --- inputs and connections ---
 
-  static pugi::xml_node childInput(pugi::xml_node node, std::string_view name) {
-    for (pugi::xml_node input : node.children("input"))
-      if (name == input.attribute("name").value()) return input;
-    return {};
-  }
+  pugi::xml_node childInput(pugi::xml_node node, std::string_view name) const { return doc_.input(node, name); }
 
   // The value an <input> gives, in `scope` (a nodegraph, or empty for the document).
   Value inputValue(pugi::xml_node input, pugi::xml_node scope, const std::string& expected) {
@@ -440,21 +445,10 @@ class GraphWriter {
     return failedValue(type);
   }
 
-  static pugi::xml_node childNode(pugi::xml_node scope, std::string_view name) {
-    for (pugi::xml_node n : scope.children())
-      if (n.type() == pugi::node_element && name == n.attribute("name").value() && std::string_view(n.name()) != "input" &&
-          std::string_view(n.name()) != "output")
-        return n;
-    return {};
-  }
+  pugi::xml_node childNode(pugi::xml_node scope, std::string_view name) const { return doc_.childNode(scope, name); }
 
   Value graphOutput(pugi::xml_node from, pugi::xml_node graph, std::string_view outputName, const std::string& type) {
-    pugi::xml_node output;
-    for (pugi::xml_node o : graph.children("output"))
-      if (outputName.empty() || outputName == o.attribute("name").value()) {
-        output = o;
-        break;
-      }
+    pugi::xml_node output = outputName.empty() ? graph.child("output") : doc_.output(graph, outputName);
     if (!output) return missingReference(from, "output '" + quoteUserText(std::string(outputName)) + "' of its node graph", type);
     pugi::xml_node upstream = childNode(graph, output.attribute("nodename").value());
     if (!upstream) return missingReference(output, "node '" + quoteUserText(output.attribute("nodename").value()) + "'", type);
@@ -472,7 +466,7 @@ class GraphWriter {
                                                                  std::to_string(kMaxChainDepth)});
       return failedValue(node.attribute("type").value());
     }
-    if (failedNodes_.count(node.internal_object())) return failedValue(node.attribute("type").value());
+    if (failedNodes_.count(node.internal_object()) || overLimit_) return failedValue(node.attribute("type").value());
     path_.push_back(node);
     std::size_t errorsBefore = diags_.items().size();
     Value v = translate(node, scope, output);
@@ -988,17 +982,20 @@ class GraphWriter {
   const Document& doc_;
   const GraphNaming& naming_;
   const ImageFiles& images_;
+  std::size_t& nodesLeft_;  // for all materials together
   DiagnosticList& diags_;
   pugi::xml_node shader_;
   const ShadingModel* model_ = nullptr;
   Json nodes_ = Json::array(), textures_ = Json::object(), parameters_ = Json::object();
   std::set<std::string> ids_;
+  std::map<std::string, int> nextSuffix_;  // per id base, the suffix to try next
   std::map<std::pair<const void*, std::string>, Value> done_;
   std::vector<pugi::xml_node> path_;
   std::set<const void*> failedNodes_;
   std::string alphaMode_ = "opaque";
   double alphaCutoff_ = 0.5;
   bool failed_ = false;
+  bool overLimit_ = false;  // a node limit was reached: nothing more is translated
 };
 
 }  // namespace
@@ -1012,8 +1009,8 @@ pugi::xml_node surfaceShader(const Document& document, pugi::xml_node material) 
 
 std::optional<nlohmann::ordered_json> materialGraph(const Document& document, pugi::xml_node material,
                                                     const GraphNaming& naming, const ImageFiles& images,
-                                                    DiagnosticList& diagnostics) {
-  return GraphWriter(document, naming, images, diagnostics).build(material);
+                                                    std::size_t& nodesLeft, DiagnosticList& diagnostics) {
+  return GraphWriter(document, naming, images, nodesLeft, diagnostics).build(material);
 }
 
 }  // namespace wg::mtlx

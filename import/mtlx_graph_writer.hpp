@@ -29,10 +29,15 @@ struct GraphNaming {
   bool snowDisplacement = false;  // off, as glTF import has it, unless asked for
 };
 
+// Graph nodes one import may write, all materials together: materials sharing one large
+// node graph each get their own copy of it, so a small document could ask for gigabytes.
+constexpr std::size_t kMaxImportGraphNodes = 400000;
+
 // The graph of `material` (a <surfacematerial>), or nullopt after reporting its errors.
+// `nodesLeft` (of kMaxImportGraphNodes) goes down by the graph's nodes; 0 once a limit is reached.
 std::optional<nlohmann::ordered_json> materialGraph(const Document& document, pugi::xml_node material,
                                                     const GraphNaming& naming, const ImageFiles& images,
-                                                    DiagnosticList& diagnostics);
+                                                    std::size_t& nodesLeft, DiagnosticList& diagnostics);
 
 // The shader node a <surfacematerial> uses, or an empty node.
 pugi::xml_node surfaceShader(const Document& document, pugi::xml_node material);

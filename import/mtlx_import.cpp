@@ -169,10 +169,12 @@ std::optional<ImportedDocument> importDocument(const Document& document, const I
   index["generator"] = std::string("weathergen ") + WEATHERGEN_VERSION;
   index["materials"] = Json::array();
   std::map<std::string, std::string> graphOf;
+  std::size_t nodesLeft = kMaxImportGraphNodes;
   for (std::size_t i = 0; i < materials.size(); ++i) {
     GraphNaming naming{stems[i], "MaterialX material '" + names[i] + "' of " + index["document"].get<std::string>(),
                        settings.presets.presetFor(names[i]), settings.snowDisplacement};
-    auto graph = materialGraph(document, materials[i], naming, imageFiles, diagnostics);
+    auto graph = materialGraph(document, materials[i], naming, imageFiles, nodesLeft, diagnostics);
+    if (!graph && nodesLeft == 0) return std::nullopt;  // every later material would be over the limit too
     if (!graph) continue;
     std::string file = stems[i] + ".json";
     out.files.push_back({file, asText(*graph)});

@@ -109,6 +109,63 @@ class Graphs(HostileCase):
 
 
 
+def materialx(body, shader_input):
+    """A MaterialX document of `body` whose standard_surface reads its base from `shader_input`."""
+    return ('<?xml version="1.0"?>\n<materialx version="1.39">\n' + body +
+            '<standard_surface name="S" type="surfaceshader"><input name="base" type="float" %s/></standard_surface>\n'
+            '<surfacematerial name="M" type="material"><input name="surfaceshader" type="surfaceshader" nodename="S"/>'
+            '</surfacematerial>\n</materialx>\n' % shader_input)
+
+
+class MaterialXDocuments(HostileCase):
+    """Documents within every limit on which the import's work grew with the square of
+    their size, or multiplied: each imports, or stops with WG1007, within the timeout."""
+
+    def imports(self, text):
+        doc = self.write("big.mtlx", text)
+        r = run_cli(["import", doc, "-o", self.path("out")])
+        self.assertSucceeds(r)
+        return r
+
+    # Every reference scanned all top-level elements: over 10 minutes.
+    def test_190000_top_level_nodes(self):
+        body = "".join('<constant name="c%d" type="float" value="1"/>\n' % i for i in range(190000))
+        self.imports(materialx(body, 'nodename="c189999"'))
+
+    # Node ids that sanitise alike each tried _2, _3... from the start, and every
+    # reference scanned the node graph's children: minutes.
+    def test_60000_node_names_that_sanitise_alike(self):
+        punct = "-+!#$%()*,;=@[]^`{|}~"
+        names = ["n" + a + b + c + d for a in punct for b in punct for c in punct for d in punct][:60000]
+        nodes = []
+        for i, name in enumerate(names):  # a binary tree of adds, so every node is read
+            ins = ['nodename="%s"' % names[k] if k < len(names) else 'value="1"' for k in (2 * i + 1, 2 * i + 2)]
+            nodes.append('<add name="%s" type="float"><input name="in1" type="float" %s/>'
+                         '<input name="in2" type="float" %s/></add>\n' % (name, ins[0], ins[1]))
+        body = '<nodegraph name="NG">\n%s<output name="out" type="float" nodename="%s"/>\n</nodegraph>\n' % (
+            "".join(nodes), names[0])
+        self.imports(materialx(body, 'nodegraph="NG" output="out"'))
+
+    # Each material got its own copy of the node graph it reads: a 600 KB document asked
+    # for 2000 copies of 32,500 nodes, tens of gigabytes, and ran for half an hour.
+    def test_materials_sharing_one_large_node_graph(self):
+        graph = ['<nodegraph name="NG">\n']
+        for i in range(250):
+            previous = 'nodename="a%d"' % (i - 1) if i else 'value="0"'
+            graph.append('<fractal3d name="f%d" type="float"><input name="octaves" type="integer" value="8"/></fractal3d>\n'
+                         '<add name="a%d" type="float"><input name="in1" type="float" %s/>'
+                         '<input name="in2" type="float" nodename="f%d"/></add>\n' % (i, i, previous, i))
+        graph.append('<output name="out" type="float" nodename="a249"/>\n</nodegraph>\n')
+        materials = "".join(
+            '<standard_surface name="S%d" type="surfaceshader"><input name="base" type="float" nodegraph="NG" output="out"/>'
+            '</standard_surface>\n<surfacematerial name="M%d" type="material">'
+            '<input name="surfaceshader" type="surfaceshader" nodename="S%d"/></surfacematerial>\n' % (m, m, m)
+            for m in range(2000))
+        doc = self.write("shared.mtlx", materialx("".join(graph) + materials, 'value="1"'))
+        self.failsUnchanged(["import", doc, "-o", self.path("out")], 1, "WG1007", "shared.mtlx:",
+                            "all materials together", "400000")
+
+
 class Frames(HostileCase):
     # A frame whose targets exceed the device's limits exited 3 ("vkAllocateMemory
     # failed") in under a second. It now falls back to fewer MSAA samples, with a note;
