@@ -62,6 +62,9 @@ std::optional<Json> parseLiteral(const std::string& text, const std::string& typ
     std::string part = text.substr(at, comma - at);
     part.erase(0, part.find_first_not_of(" \t\n\r"));
     part.erase(part.find_last_not_of(" \t\n\r") + 1);
+    // Decimal only, as MaterialX writes and reads numbers: strtod alone would take
+    // "0x10" as 16 and "infinity", where MaterialX's own stream parsing reads 0 or fails.
+    if (part.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
     char* end = nullptr;
     double v = std::strtod(part.c_str(), &end);
     if (part.empty() || *end != '\0' || !std::isfinite(v) || std::fabs(v) > 3.4e38) return std::nullopt;
@@ -86,6 +89,16 @@ const char* parameterType(std::string_view type) {
 Json splat(double v, int width) { return width == 1 ? Json(v) : Json(std::vector<double>(width, v)); }
 
 // A short decimal: 0.04 / 0.08 is 0.5, not 0.5000000000000001.
+// A number the document gave where an integer is meant, held within int range: the
+// literal may be anything up to 3.4e38, and converting that to int would be undefined.
+int clampedInt(double v) { return static_cast<int>(std::clamp(v, -2147483648.0, 2147483647.0)); }
+
+// A number as the document gave it, for a message: integers without a fraction.
+std::string shownNumber(double v) {
+  if (v == std::floor(v) && std::fabs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+  return Json(v).dump();
+}
+
 double rounded(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.7g", v);
@@ -311,7 +324,7 @@ class GraphWriter {
       alphaMode_ = "opaque";
       return;
     }
-    int value = mode.literal.is_number() ? static_cast<int>(mode.literal.get<double>()) : 0;
+    int value = mode.literal.is_number() ? clampedInt(mode.literal.get<double>()) : 0;
     alphaMode_ = value == 1 ? "mask" : value == 2 ? "blend" : "opaque";
     alphaCutoff_ = std::clamp(cutoff.isLiteral() && cutoff.literal.is_number() ? cutoff.literal.get<double>() : 0.5, 0.0, 1.0);
   }
@@ -639,7 +652,7 @@ class GraphWriter {
     Value x = declared(c, "in", "vector3");
     const std::string& from = x.type;
     Value index = in(c, "index", "integer", 0.0);
-    int i = index.constant() ? static_cast<int>(*index.constant()) : -1;
+    int i = index.constant() ? clampedInt(*index.constant()) : -1;
     if (i < 0 || i >= widthOf(from))
       return schemaError(c.node, "the index of extract '" + quoteUserText(nameOf(c.node)) + "'",
                          "a value from 0 to " + std::to_string(widthOf(from) - 1), index.constant() ? index.literal.dump() : "a connection", "float");
@@ -668,8 +681,8 @@ class GraphWriter {
 
   Value texcoord(const Context& c) {
     Value index = in(c, "index", "integer", 0.0);
-    int set = index.constant() ? static_cast<int>(*index.constant()) : 0;
-    if (set > 1) warnAdjusted(c.node, "texcoord '" + quoteUserText(nameOf(c.node)) + "' reads set " + std::to_string(set) + "; set 0 is read",
+    int set = index.constant() ? clampedInt(*index.constant()) : 0;
+    if (set != 0 && set != 1) warnAdjusted(c.node, "texcoord '" + quoteUserText(nameOf(c.node)) + "' reads set " + shownNumber(*index.constant()) + "; set 0 is read",
                               "the graph has texture coordinate sets 0 and 1");
     Value uv = flippedV(c.id, node(c.id + "_mesh", set == 1 ? "texcoord1" : "texcoord", Json::object(), "vector2"));
     if (c.type == "vector3") return node(c.id + "_3", "combine3", {{"x", swizzle(c.id + "_x", uv, "x", "float").input()},
@@ -918,7 +931,7 @@ class GraphWriter {
     if (!octaves || !lacunarity || !diminish) return failedValue("float");
     if (*octaves < 1 || *octaves > 8)
       return schemaError(childInput(c.node, "octaves"), "the octaves of fractal3d '" + quoteUserText(nameOf(c.node)) + "'",
-                         "1 to 8", std::to_string(static_cast<int>(*octaves)), "float");
+                         "1 to 8", shownNumber(*octaves), "float");
     Value p = position(c);
     Json sum;
     for (int i = 0; i < static_cast<int>(*octaves); ++i) {

@@ -123,6 +123,41 @@ TEST_F(MaterialXHostile, UnknownTypeIsASchemaError) {
                  "WG5202");
 }
 
+// strtod read "0x10" as 16 and "infinity" as a number; MaterialX reads decimal only
+// (its stream parsing gives 0 for "0x10"), so a value meant one thing here and another there.
+TEST_F(MaterialXHostile, HexAndNamedNumbersAreNoValues) {
+  for (std::string value : {"0x10", "0x1p3", "infinity", "nan", "1e999"}) {
+    SCOPED_TRACE(value);
+    auto d = expectRejected(write("number.mtlx", document(material("value=\"" + value + ", 0.5, 0.5\""))), "WG5202");
+    EXPECT_NE(d[0]["message"].get<std::string>().find(value), std::string::npos) << d.dump();
+  }
+  fs::path decimal = write("decimal.mtlx", document(material("value=\"+1.5e-1, .5, 5.\"")));
+  EXPECT_EQ(importDocument(decimal, dir_.path() / "decimal").exitCode, 0);
+}
+
+// Integer inputs beyond int range were converted to int as they were (undefined; on x86
+// INT_MIN): octaves of 1e20 were reported as -2147483648, and a texcoord index of 2^32 + 1
+// read set 0 without the warning every other set above 1 gets.
+TEST_F(MaterialXHostile, IntegersBeyondIntRangeAreReportedAsWritten) {
+  auto d = expectRejected(write("octaves.mtlx", document("  <fractal3d name=\"f\" type=\"float\"><input name=\"octaves\" type=\"integer\" "
+                                                         "value=\"100000000000000000000\" /></fractal3d>\n"
+                                                         "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"float\" nodename=\"f\" /></convert>\n" +
+                                                         material("nodename=\"c\""))),
+                          "WG5202");
+  EXPECT_NE(d[0]["message"].get<std::string>().find("1e+20"), std::string::npos) << d.dump();
+  for (std::string index : {"4294967297", "-1"}) {
+    SCOPED_TRACE(index);
+    fs::path doc = write("set.mtlx", document("  <texcoord name=\"t\" type=\"vector2\"><input name=\"index\" type=\"integer\" value=\"" + index +
+                                              "\" /></texcoord>\n"
+                                              "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"vector2\" nodename=\"t\" /></convert>\n" +
+                                              material("nodename=\"c\"")));
+    ImportResult run = importDocument(doc, dir_.path() / ("set" + index));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    ASSERT_EQ(codesOf(run.diagnostics), std::vector<std::string>{"WG5302"}) << run.output;
+    EXPECT_NE(run.diagnostics[0]["message"].get<std::string>().find("reads set " + index), std::string::npos) << run.output;
+  }
+}
+
 TEST_F(MaterialXHostile, NodeGraphCycleIsNamed) {
   auto d = expectRejected(write("cycle.mtlx", document("  <nodegraph name=\"NG\">\n"
                                                        "    <add name=\"a\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"b\" /></add>\n"
