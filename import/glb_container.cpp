@@ -19,6 +19,8 @@ std::uint32_t readU32(std::span<const std::uint8_t> bytes, std::size_t offset) {
 
 bool looksLikeGlb(std::span<const std::uint8_t> bytes) { return bytes.size() >= 4 && readU32(bytes, 0) == kMagic; }
 
+std::uint32_t glbVersion(std::span<const std::uint8_t> bytes) { return bytes.size() >= 8 ? readU32(bytes, 4) : 0; }
+
 std::optional<GlbChunks> splitGlb(std::span<const std::uint8_t> bytes, std::string& error) {
   if (bytes.size() < kHeaderSize + kChunkHeaderSize) {
     error = "the GLB file is " + std::to_string(bytes.size()) + " bytes, shorter than its header";

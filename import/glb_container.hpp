@@ -21,6 +21,9 @@ struct GlbChunks {
 // True when the bytes start with the GLB magic "glTF".
 bool looksLikeGlb(std::span<const std::uint8_t> bytes);
 
+// The version in the GLB header (2 for glTF 2.0, 1 for binary glTF 1.0); 0 when too short.
+std::uint32_t glbVersion(std::span<const std::uint8_t> bytes);
+
 // Splits a GLB file; on failure returns nullopt and says why in `error` (one line).
 std::optional<GlbChunks> splitGlb(std::span<const std::uint8_t> bytes, std::string& error);
 

@@ -57,6 +57,11 @@ bool headerSize(const unsigned char* bytes, int size, const std::string& extensi
   return true;
 }
 
+std::string stbReason() {
+  const char* reason = stbi_failure_reason();
+  return reason ? reason : "unknown error";
+}
+
 // Keeps the encoded bytes; reads only the header (the graph loader decodes later, with
 // its own limits), so a header claiming 60000x60000 pixels allocates nothing.
 bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
@@ -82,6 +87,8 @@ bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std:
                "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) + " pixels; the limit is " +
                    std::to_string(kMaxImageFileDimension) + " on each side",
                "resize the image to at most 8192 pixels on each side"};
+  else if (int w, h, n; !stbi_info_from_memory(bytes, size, &w, &h, &n))  // as compile probes it: a paletted PNG needs its PLTE
+    problem = {kUnreadable, "its header cannot be read (" + stbReason() + ")", "re-save the image"};
   else if (ctx.imageBytes + static_cast<std::size_t>(size) > kMaxImageBytes)
     problem = {kInvalidData, "the model's images together exceed the limit of 1 GiB", "make the images smaller or fewer"};
   if (!problem.message.empty()) {
@@ -255,7 +262,10 @@ std::optional<Asset> loadAsset(const std::string& path, DiagnosticList& diags) {
     std::string error;
     auto chunks = splitGlb(bytes, error);
     if (!chunks) {
-      diags.report(DiagCode::GltfContainer, {path, "", 0, 0}, {error, "the .glb file is truncated or corrupt; re-export it"});
+      diags.report(DiagCode::GltfContainer, {path, "", 0, 0},
+                   {error, glbVersion(bytes) == 1 ? "a binary glTF 1.0 file: convert it to glTF 2.0 (re-export it, or run it through "
+                                                    "a glTF 1.0 to 2.0 converter such as gltf-pipeline)"
+                                                  : "the .glb file is truncated or corrupt; re-export it"});
       return std::nullopt;
     }
     text = std::string(chunks->json);

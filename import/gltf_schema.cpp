@@ -215,8 +215,9 @@ class SchemaChecker {
       diags_.report(DiagCode::GltfSchema, doc_.locate(""), {"the document", "an object", describeJsonKind(doc_.root())});
       return false;
     }
+    // Checked first: a glTF 1.0 file breaks a dozen rules of 2.0, and the version says why.
+    if (!checkVersion()) return false;
     checkObject(doc_.root(), Root, "");
-    if (ok_) checkVersion();
     return ok_;
   }
 
@@ -246,12 +247,22 @@ class SchemaChecker {
   }
 
   // glTF 1.0 and any later major version differ in layout; only 2.x ("2.0", "2.1") is read.
-  void checkVersion() {
-    const std::string version = doc_.root()["asset"]["version"].get<std::string>();
-    const bool digitsAfter = version.size() > 2 && std::all_of(version.begin() + 2, version.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (version.starts_with("2.") && digitsAfter) return;
+  // A missing asset or version is left to the schema rules.
+  bool checkVersion() {
+    const nlohmann::json& root = doc_.root();
+    auto asset = root.find("asset");
+    if (asset == root.end() || !asset->is_object() || !asset->contains("version")) return true;
+    const nlohmann::json& version = (*asset)["version"];
+    std::string text = version.is_string() ? version.get<std::string>() : version.dump();
+    const bool digitsAfter = text.size() > 2 && std::all_of(text.begin() + 2, text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (version.is_string() && text.starts_with("2.") && digitsAfter) return true;
+    const bool gltf1 = text == "1" || text.starts_with("1.");  // glTF 1.0 wrote "1.0"; early exporters the number 1
+    std::string shown = version.is_string() ? "'" + quoteUserText(text, 40) + "'" : quoteUserText(text, 40);
     fail(DiagCode::GltfContainer, "/asset/version",
-         {"'/asset/version' is '" + quoteUserText(version, 40) + "'", "re-export the model as glTF 2.0"});
+         {"'/asset/version' is " + shown + (gltf1 ? ": a glTF 1.0 model" : ""),
+          gltf1 ? "convert it to glTF 2.0 (re-export it, or run it through a glTF 1.0 to 2.0 converter such as gltf-pipeline)"
+                : "re-export the model as glTF 2.0"});
+    return false;
   }
 
   // Every glTF object but the root may carry a user-facing name.

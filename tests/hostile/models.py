@@ -4,8 +4,10 @@ file render --model made for itself; output names avoid the names Windows reserv
 
 import json
 import os
+import struct
 import time
 import unittest
+import zlib
 
 import hostile_support as hs
 from hostile_support import HostileCase, run_cli
@@ -78,6 +80,44 @@ class ImportRefusesWhatCompileRefuses(HostileCase):
     def test_a_plus_written_as_percent_2b_is_read(self):
         gltf = hs.triangle_model(self.dir, buffer_uri="a%2Bb.bin", image_uri="c%2Bd.png")
         self.assertSucceeds(run_cli(["import", gltf, "-o", self.path("out")]))
+
+
+class Gltf1Models(HostileCase):
+    # assimp's glTF 1.0 test models got a dozen WG5002 errors about their layout, the
+    # first about /scene, and none about the version, which is what to change.
+    def test_a_gltf_1_0_model_is_one_error_naming_the_version(self):
+        for version in ("1.0", 1):
+            with self.subTest(version=version):
+                self.clear()
+                gltf = self.write("old.gltf", {"asset": {"version": version}, "scene": "defaultScene",
+                                               "scenes": {"defaultScene": {"nodes": ["n"]}}, "nodes": {"n": {}},
+                                               "materials": {"m": {}}})
+                r = self.failsUnchanged(["import", gltf, "-o", self.path("out")], 1, "WG5001", "old.gltf:",
+                                        "/asset/version", "glTF 1.0", "convert it to glTF 2.0")
+                self.assertEqual(r.text.count("error"), 1, r.text)
+
+    # A binary glTF 1.0 file was "truncated or corrupt; re-export it".
+    def test_a_binary_gltf_1_0_names_the_version(self):
+        content = b'{"asset":{"version":"1.0"}}'
+        glb = self.write("old.glb", b"glTF" + struct.pack("<IIII", 1, 20 + len(content), len(content), 0) + content)
+        r = self.failsUnchanged(["import", glb, "-o", self.path("out")], 1, "WG5001", "old.glb", "glTF 1.0",
+                                "convert it to glTF 2.0")
+        self.assertNotIn("truncated", r.text)
+
+
+class PalettedImages(HostileCase):
+    # Import read only the IHDR, so a paletted PNG cut inside its palette imported, and
+    # the compile of the imported graph then refused it (WG3003 "cannot read PNG header"),
+    # naming the imported graph rather than the model.
+    def test_a_paletted_png_cut_inside_its_palette_is_refused_at_import(self):
+        def chunk(tag, data):
+            return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF)
+
+        header = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 3, 0, 0, 0))
+        png = header + struct.pack(">I", 768) + b"PLTE" + bytes(30)  # the file ends inside the palette
+        gltf = hs.triangle_model(self.dir, image=png)
+        self.failsUnchanged(["import", gltf, "-o", self.path("out")], 1, "WG5004", "box.gltf:", "/images/0",
+                            "header cannot be read")
 
 
 class ReservedNames(HostileCase):
