@@ -1,7 +1,5 @@
 #include "import/gltf_asset.hpp"
 
-#include <stb_image.h>
-
 #include <array>
 #include <cstring>
 
@@ -10,8 +8,6 @@
 #include "import/gltf_resources.hpp"
 #include "import/gltf_schema.hpp"
 #include "import/node_hierarchy.hpp"
-#include "nodes/image_file.hpp"
-#include "nodes/png_header.hpp"
 #include "nodes/regular_file.hpp"
 
 namespace wg::gltf {
@@ -44,24 +40,6 @@ std::string imageExtension(const unsigned char* bytes, int size) {
   return "";
 }
 
-// Width and height from the header alone. PNG's IHDR is read directly: stb refuses to
-// even report sizes it would not decode, and the limit's message should name the size.
-bool headerSize(const unsigned char* bytes, int size, const std::string& extension, int& width, int& height, int& components) {
-  if (extension != ".png") return stbi_info_from_memory(bytes, size, &width, &height, &components) != 0;
-  const auto declared = pngDeclaredSize(bytes, static_cast<std::size_t>(size));
-  constexpr std::uint32_t kLargest = 1u << 30;
-  if (!declared || declared->width > kLargest || declared->height > kLargest) return false;
-  width = static_cast<int>(declared->width);
-  height = static_cast<int>(declared->height);
-  components = 4;
-  return true;
-}
-
-std::string stbReason() {
-  const char* reason = stbi_failure_reason();
-  return reason ? reason : "unknown error";
-}
-
 // Keeps the encoded bytes; reads only the header (the graph loader decodes later, with
 // its own limits), so a header claiming 60000x60000 pixels allocates nothing.
 bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
@@ -72,25 +50,16 @@ bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std:
   if (ctx.images.size() <= slot) ctx.images.resize(slot + 1), ctx.imageErrors.resize(slot + 1);
   EncodedImage& out = ctx.images[slot];
   out.extension = imageExtension(bytes, size);
-  int components = 0;
   ImageProblem& problem = ctx.imageErrors[slot];
   constexpr auto kUnreadable = DiagCode::GltfResource, kInvalidData = DiagCode::GltfInvalidData;
+  ImageHeader header;
   if (out.extension.empty()) problem = {kUnreadable, "it is neither PNG nor JPEG", "store images as PNG or JPEG"};
-  else if (!headerSize(bytes, size, out.extension, out.width, out.height, components))
-    problem = {kUnreadable, "its header cannot be read", "re-save the image"};
-  else if (out.width < 1 || out.height < 1)
-    problem = {kInvalidData, "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) +
-                                 " pixels; an image has at least 1x1",
-               "re-save the image"};
-  else if (out.width > kMaxImageFileDimension || out.height > kMaxImageFileDimension)
-    problem = {kInvalidData,
-               "its header claims " + std::to_string(out.width) + "x" + std::to_string(out.height) + " pixels; the limit is " +
-                   std::to_string(kMaxImageFileDimension) + " on each side",
-               "resize the image to at most 8192 pixels on each side"};
-  else if (int w, h, n; !stbi_info_from_memory(bytes, size, &w, &h, &n))  // as compile probes it: a paletted PNG needs its PLTE
-    problem = {kUnreadable, "its header cannot be read (" + stbReason() + ")", "re-save the image"};
+  else if (auto bad = imageHeaderProblem(bytes, static_cast<std::size_t>(size), out.extension == ".png", header))
+    problem = {bad->overLimit ? kInvalidData : kUnreadable, bad->message, bad->hint};
   else if (ctx.imageBytes + static_cast<std::size_t>(size) > kMaxImageBytes)
     problem = {kInvalidData, "the model's images together exceed the limit of 1 GiB", "make the images smaller or fewer"};
+  out.width = header.width;
+  out.height = header.height;
   if (!problem.message.empty()) {
     *err += "image " + std::to_string(index) + ": " + problem.message;
     return false;
@@ -99,7 +68,7 @@ bool acceptImage(tinygltf::Image* image, const int index, std::string* err, std:
   out.bytes.assign(bytes, bytes + size);
   image->width = out.width;
   image->height = out.height;
-  image->component = components;
+  image->component = header.components;
   return true;
 }
 

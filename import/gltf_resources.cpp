@@ -1,16 +1,37 @@
 #include "import/gltf_resources.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <string_view>
 
+#include <stb_image.h>
+
 #include "compiler/literal.hpp"
+#include "nodes/image_file.hpp"
+#include "nodes/png_header.hpp"
 #include "nodes/regular_file.hpp"
 
 namespace wg::gltf {
 
 namespace {
+
+std::string stbReason() {
+  const char* reason = stbi_failure_reason();
+  return reason ? reason : "unknown error";
+}
+
+// Width and height from the header alone. PNG's IHDR is read directly: stb refuses to
+// even report sizes it would not decode, and the limit's message should name the size.
+bool headerSize(const unsigned char* bytes, int size, bool png, ImageHeader& header) {
+  if (!png) return stbi_info_from_memory(bytes, size, &header.width, &header.height, &header.components) != 0;
+  const auto declared = pngDeclaredSize(bytes, static_cast<std::size_t>(size));
+  constexpr std::uint32_t kLargest = 1u << 30;
+  if (!declared || declared->width > kLargest || declared->height > kLargest) return false;
+  header = {static_cast<int>(declared->width), static_cast<int>(declared->height), 4};
+  return true;
+}
 
 bool isBase64Char(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '+' || c == '/';
@@ -125,6 +146,20 @@ void checkUris(const JsonDocument& doc, const char* collection, bool image, cons
 }
 
 }  // namespace
+
+std::optional<ImageHeaderProblem> imageHeaderProblem(const unsigned char* bytes, std::size_t size, bool png, ImageHeader& header) {
+  const int shown = static_cast<int>(std::min<std::size_t>(size, INT32_MAX));  // stb takes an int; a header is near the start
+  if (!headerSize(bytes, shown, png, header)) return ImageHeaderProblem{false, "its header cannot be read", "re-save the image"};
+  const std::string size_text = "its header claims " + std::to_string(header.width) + "x" + std::to_string(header.height) + " pixels";
+  if (header.width < 1 || header.height < 1) return ImageHeaderProblem{true, size_text + "; an image has at least 1x1", "re-save the image"};
+  if (header.width > kMaxImageFileDimension || header.height > kMaxImageFileDimension)
+    return ImageHeaderProblem{true, size_text + "; the limit is " + std::to_string(kMaxImageFileDimension) + " on each side",
+                              "resize the image to at most 8192 pixels on each side"};
+  // As compile probes it: for a paletted PNG stb reads on to the palette.
+  if (int w, h, n; !stbi_info_from_memory(bytes, shown, &w, &h, &n))
+    return ImageHeaderProblem{false, "its header cannot be read (" + stbReason() + ")", "re-save the image"};
+  return std::nullopt;
+}
 
 std::filesystem::path confinedPath(const std::filesystem::path& folder, const std::string& path) {
   std::filesystem::path relative(path);

@@ -31,6 +31,19 @@ std::vector<std::filesystem::path> externalFiles(const JsonDocument& document, c
 // path or a symbolic link).
 std::filesystem::path confinedPath(const std::filesystem::path& folder, const std::string& path);
 
+// What keeps an encoded PNG or JPEG from being read as compile reads it, from its header
+// alone (at least 1x1, at most kMaxImageFileDimension a side, and a header stb_image
+// reads: a paletted PNG's includes its palette); nullopt when it can be read.
+// `overLimit`: the size is the problem (WG5007 in glTF) rather than the bytes.
+struct ImageHeaderProblem {
+  bool overLimit = false;
+  std::string message, hint;
+};
+struct ImageHeader {
+  int width = 0, height = 0, components = 0;
+};
+std::optional<ImageHeaderProblem> imageHeaderProblem(const unsigned char* bytes, std::size_t size, bool png, ImageHeader& header);
+
 // Reads a whole regular file of at most kMaxResourceBytes; "" or the reason it failed.
 std::string readWholeFile(const std::filesystem::path& path, std::vector<std::uint8_t>& out);
 

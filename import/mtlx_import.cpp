@@ -4,6 +4,7 @@
 #include <map>
 
 #include "compiler/literal.hpp"
+#include "import/gltf_resources.hpp"
 #include "import/mtlx_graph_writer.hpp"
 #include "nodes/regular_file.hpp"
 
@@ -51,8 +52,13 @@ class ImageCollector {
                           : extension.empty()                    ? "neither PNG nor JPEG"
                           : (totalBytes_ += bytes.size()) > kMaxImagesTotalBytes ? "the images together exceed 1 GiB"
                                                                                  : "";
+    std::string fix = "convert it to PNG or JPEG";
+    gltf::ImageHeader header;
+    if (problem.empty())  // as compile will read it, so that the imported graph compiles
+      if (auto bad = gltf::imageHeaderProblem(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), extension == ".png", header))
+        problem = bad->message, fix = bad->hint;
     if (!problem.empty()) {
-      diags_.report(DiagCode::MtlxResource, at, {"image '" + quoteUserText(path) + "'", problem, "convert it to PNG or JPEG"});
+      diags_.report(DiagCode::MtlxResource, at, {"image '" + quoteUserText(path) + "'", problem, fix});
       return std::nullopt;
     }
     std::string name = stem_ + "_image" + std::to_string(files_.size()) + extension;

@@ -2,8 +2,10 @@
 with WG1007 naming the file, line and pointer, quickly, and write nothing."""
 
 import os
+import struct
 import time
 import unittest
+import zlib
 
 import hostile_support as hs
 from hostile_support import HostileCase, run_cli
@@ -164,6 +166,26 @@ class MaterialXDocuments(HostileCase):
         doc = self.write("shared.mtlx", materialx("".join(graph) + materials, 'value="1"'))
         self.failsUnchanged(["import", doc, "-o", self.path("out")], 1, "WG1007", "shared.mtlx:",
                             "all materials together", "400000")
+
+
+class MaterialXImages(HostileCase):
+    # Import read the image's bytes but not its header: a PNG claiming 100000x100000, or a
+    # paletted PNG cut inside its palette, imported, and the compile of the imported graph
+    # then refused it (WG1007, WG3003), naming the imported graph, not the document.
+    def test_images_compile_would_refuse_are_refused_at_import(self):
+        cut = hs.png_bytes(2, 2)[:8] + struct.pack(">I", 13) + b"IHDR" + struct.pack(">IIBBBBB", 2, 2, 8, 3, 0, 0, 0)
+        cut += struct.pack(">I", zlib.crc32(cut[12:]) & 0xFFFFFFFF) + struct.pack(">I", 768) + b"PLTE" + bytes(30)
+        cases = {"huge": (hs.png_bytes(1, 1, claimed=(100000, 100000)), "100000x100000"),
+                 "paletted": (cut, "header cannot be read")}
+        for what, (png, mention) in cases.items():
+            with self.subTest(what):
+                self.clear()
+                self.write("tex.png", png)
+                doc = self.write("m.mtlx", materialx(
+                    '<image name="img" type="float"><input name="file" type="filename" value="tex.png"/></image>\n',
+                    'nodename="img"'))
+                self.failsUnchanged(["import", doc, "-o", self.path("out")], 1, "WG5205", "m.mtlx:", "tex.png",
+                                    "/materialx/image[img]/input[file]", mention)
 
 
 class Frames(HostileCase):
