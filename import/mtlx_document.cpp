@@ -163,8 +163,10 @@ class Loader {
     if (href.empty()) return refuse("no href", "name the document to include in href");
     if (href.find("://") != std::string::npos || fs::path(href).is_absolute())
       return refuse("only relative paths inside the search path are read", "copy the document into a --search-path folder");
-    bool outside = false;
-    fs::path resolved = confinedInRoots(folder, href, outside);
+    bool outside = false, notRegular = false;
+    fs::path resolved = confinedInRoots(folder, href, outside, notRegular);
+    if (resolved.empty() && notRegular)
+      return refuse("it is a folder, FIFO or device, not a file", "name a MaterialX document in href");
     if (resolved.empty() && outside)
       return refuse("it leaves the document's folder and every --search-path folder; it is not read",
                     "copy the document into a --search-path folder");
@@ -184,19 +186,30 @@ class Loader {
   }
 
   // The include resolved beside the including file, else in each root; it must exist
-  // and stay inside a root. `outside`: a candidate exists, but outside every root.
-  fs::path confinedInRoots(const fs::path& folder, const std::string& href, bool& outside) const {
+  // and stay inside a root. `outside`: a candidate exists, but outside every root;
+  // `notRegular`: one exists inside a root, but is not a regular file.
+  fs::path confinedInRoots(const fs::path& folder, const std::string& href, bool& outside, bool& notRegular) const {
     std::vector<fs::path> bases{folder};
     bases.insert(bases.end(), doc_.roots.begin(), doc_.roots.end());
     for (const auto& base : bases) {
       std::error_code ec;
       fs::path candidate = fs::weakly_canonical(base / href, ec);
-      if (ec || !fs::is_regular_file(candidate, ec)) continue;
-      for (const auto& root : doc_.roots)
-        if (!gltf::confinedPath(root, fs::relative(candidate, root, ec).string()).empty()) return candidate;
+      if (ec || !fs::exists(candidate, ec)) continue;
+      if (!fs::is_regular_file(candidate, ec)) {
+        notRegular = notRegular || insideARoot(candidate);
+        continue;
+      }
+      if (insideARoot(candidate)) return candidate;
       outside = true;
     }
     return {};
+  }
+
+  bool insideARoot(const fs::path& candidate) const {
+    std::error_code ec;
+    for (const auto& root : doc_.roots)
+      if (!gltf::confinedPath(root, fs::relative(candidate, root, ec).string()).empty()) return true;
+    return false;
   }
 
   Document& doc_;
@@ -270,12 +283,14 @@ bool Document::addTopLevel(pugi::xml_node element) {
   return true;
 }
 
-fs::path Document::find(const std::string& relative) const {
+fs::path Document::find(const std::string& relative, bool* notRegular) const {
   if (relative.empty() || relative.find("://") != std::string::npos) return {};
   for (const auto& root : roots) {
     fs::path resolved = gltf::confinedPath(root, relative);
     std::error_code ec;
-    if (!resolved.empty() && fs::is_regular_file(resolved, ec)) return resolved;
+    if (resolved.empty()) continue;
+    if (fs::is_regular_file(resolved, ec)) return resolved;
+    if (notRegular && fs::exists(resolved, ec)) *notRegular = true;
   }
   return {};
 }

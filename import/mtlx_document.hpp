@@ -48,8 +48,9 @@ class Document {
   // Indexes the children of every element of `file` for the three look-ups above.
   void indexChildren(const SourceFile& file);
   // `relative` (a path as a document writes it) resolved inside the roots: the first root
-  // holding it; "" when none does or it would leave every root.
-  std::filesystem::path find(const std::string& relative) const;
+  // holding it; "" when none does or it would leave every root. `notRegular` (when given)
+  // is set when a root holds it, but as a folder, FIFO or device rather than a file.
+  std::filesystem::path find(const std::string& relative, bool* notRegular = nullptr) const;
   // The document and every file it includes, for the check that no output replaces them.
   std::vector<std::filesystem::path> inputFiles() const;
 

@@ -40,8 +40,14 @@ class ImageCollector {
                                                  "write the path relative to a --search-path folder"});
       return std::nullopt;
     }
-    fs::path found = doc_.find(path);
-    if (found.empty()) found = doc_.find(written);  // the name alone, for stand-ins beside the document
+    bool notRegular = false;
+    fs::path found = doc_.find(path, &notRegular);
+    if (found.empty()) found = doc_.find(written, &notRegular);  // the name alone, for stand-ins beside the document
+    if (found.empty() && notRegular) {  // "not found" would send the user looking for a file that is there
+      diags_.report(DiagCode::MtlxResource, at, {"image '" + quoteUserText(path) + "'", "it is a folder, FIFO or device, not a file",
+                                                 "point the input at a PNG or JPEG file"});
+      return std::nullopt;
+    }
     if (found.empty()) return missing(at, path);
     if (auto known = names_.find(found); known != names_.end()) return known->second;
     std::string bytes;

@@ -200,6 +200,22 @@ TEST_F(MaterialXHostile, MissingImageIsAnErrorOrThePlaceholder) {
   EXPECT_NEAR(got["baseColor"][2].get<double>(), 1.0, 1e-4);
 }
 
+// A folder where an image or include should be was "not found in DIR", which sent the
+// user looking for a file that is there; with --missing-images placeholder it even
+// stood in for the image.
+TEST_F(MaterialXHostile, ImageOrIncludeThatIsAFolderSaysSo) {
+  fs::create_directory(dir_.path() / "albedo.png");
+  fs::path image = write("image.mtlx", document("  <image name=\"img\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"albedo.png\" /></image>\n" +
+                                                material("nodename=\"img\"")));
+  for (std::string extra : {"", "--missing-images placeholder"}) {
+    SCOPED_TRACE(extra);
+    auto d = expectRejected(image, "WG5205", extra);
+    EXPECT_NE(d[0]["message"].get<std::string>().find("a folder, FIFO or device, not a file"), std::string::npos) << d.dump();
+  }
+  auto d = expectRejected(write("include.mtlx", document("  <xi:include href=\"albedo.png\" />\n" + material("value=\"1, 1, 1\""))), "WG5205");
+  EXPECT_NE(d[0]["message"].get<std::string>().find("a folder, FIFO or device, not a file"), std::string::npos) << d.dump();
+}
+
 TEST_F(MaterialXHostile, ImagePathLeavingTheSearchPathIsNotRead) {
   write("secret.png", "not read");
   fs::create_directories(dir_.path() / "docs");
