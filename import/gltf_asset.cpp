@@ -1,5 +1,6 @@
 #include "import/gltf_asset.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -32,6 +33,8 @@ struct LoadContext {
 
 // Every image is kept encoded; many images may share one large buffer view.
 constexpr std::size_t kMaxImageBytes = 1ull << 30;
+// The buffers together, as they declare them.
+constexpr std::uint64_t kMaxBufferBytes = 1ull << 30;
 
 std::string imageExtension(const unsigned char* bytes, int size) {
   static constexpr std::array<unsigned char, 8> kPng = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
@@ -142,6 +145,24 @@ bool checkDeclaredRanges(const JsonDocument& doc, DiagnosticList& diags) {
   return ok;
 }
 
+// tinygltf holds every buffer in memory, each as large as it declares (it refuses a file
+// of another size), and forty buffers may name one 500 MiB file: their total is bounded
+// before anything is read.
+bool checkBufferTotal(const JsonDocument& doc, DiagnosticList& diags) {
+  const auto& root = doc.root();
+  if (!root.contains("buffers")) return true;
+  const auto& buffers = root["buffers"];
+  std::uint64_t total = 0;
+  for (std::size_t i = 0; i < buffers.size(); ++i) {
+    total += std::min(buffers[i]["byteLength"].get<std::uint64_t>(), kMaxBufferBytes + 1);  // the schema made it an integer
+    if (total <= kMaxBufferBytes) continue;
+    diags.report(DiagCode::ResourceLimit, doc.locate(appendPointer("/buffers", i)),
+                 {"the size the buffers declare (buffers 0 to " + std::to_string(i) + ")", std::to_string(total) + " bytes", "1 GiB"});
+    return false;
+  }
+  return true;
+}
+
 // tinygltf reports everything as text; images we refused have a better message already.
 void reportParseFailure(const Asset& asset, const LoadContext& ctx, const std::string& err, DiagnosticList& diags) {
   bool reported = false;
@@ -247,7 +268,7 @@ std::optional<Asset> loadAsset(const std::string& path, DiagnosticList& diags) {
   Asset asset;
   asset.file = path;
   asset.document = std::make_shared<const JsonDocument>(std::move(*document));
-  if (!checkSchema(*asset.document, diags) || !checkDeclaredRanges(*asset.document, diags) ||
+  if (!checkSchema(*asset.document, diags) || !checkDeclaredRanges(*asset.document, diags) || !checkBufferTotal(*asset.document, diags) ||
       !checkRequiredExtensions(*asset.document, diags) || !checkResourceUris(*asset.document, folder, glbBin, diags))
     return std::nullopt;
   if (!parseWithTinygltf(asset, bytes, glb, folder, diags) || !checkBufferRanges(asset, diags) || !checkNodeHierarchy(asset, diags))

@@ -120,6 +120,21 @@ class PalettedImages(HostileCase):
                             "header cannot be read")
 
 
+class BufferTotal(HostileCase):
+    # tinygltf reads every buffer whole, and many buffers may name one large file: 40
+    # buffers over one 100 MB file asked for 4 GB and ended in std::bad_alloc (exit 3)
+    # under a 3 GB limit. Their declared total is now bounded before anything is read.
+    def test_buffers_naming_one_large_file_are_wg1007(self):
+        gltf = hs.triangle_model(self.dir)
+        size = 400 << 20
+        with open(self.path("big.bin"), "wb") as f:
+            f.truncate(size)  # sparse: no disk is used
+        model = json.loads(hs.read(gltf))
+        model["buffers"] += [{"uri": "big.bin", "byteLength": size} for _ in range(3)]
+        hs.write(gltf, model)
+        self.failsUnchanged(["import", gltf, "-o", self.path("out")], 1, "WG1007", "box.gltf:", "/buffers/3", "1 GiB")
+
+
 class ReservedNames(HostileCase):
     def test_a_model_named_like_a_windows_device_is_marked(self):
         for name in ("CON", "prn", "Aux", "NUL", "COM1", "lpt9"):
