@@ -452,8 +452,10 @@ class GraphWriter {
     nodes_ = std::move(kept);
   }
 
+  // `input`: the <input> or <output> that names `what`.
   Value missingReference(pugi::xml_node input, const std::string& what, const std::string& type) {
-    problem(DiagCode::MtlxBadReference, input, "input '" + quoteUserText(nameOf(input)) + "' names " + what + ", which does not exist",
+    problem(DiagCode::MtlxBadReference, input,
+            quoteUserText(input.name()) + " '" + quoteUserText(nameOf(input)) + "' names " + what + ", which does not exist",
             "connect it to an element of the document");
     return failedValue(type);
   }

@@ -168,6 +168,15 @@ TEST_F(MaterialXHostile, NodeGraphCycleIsNamed) {
   EXPECT_NE(d[0]["message"].get<std::string>().find("a -> b -> a"), std::string::npos) << d.dump();
 }
 
+// An <output> naming no node was "input 'out' names node 'x', which does not exist".
+TEST_F(MaterialXHostile, OutputNamingNoNodeIsCalledAnOutput) {
+  auto d = expectRejected(write("output.mtlx", document("  <nodegraph name=\"NG\">\n"
+                                                        "    <output name=\"out\" type=\"color3\" nodename=\"out\" />\n  </nodegraph>\n" +
+                                                        material("nodegraph=\"NG\" output=\"out\""))),
+                          "WG5203");
+  EXPECT_NE(d[0]["message"].get<std::string>().find("output 'out' names node 'out'"), std::string::npos) << d.dump();
+}
+
 TEST_F(MaterialXHostile, WrongTypeConnectionIsASchemaError) {
   expectNodeRejected("wrong.mtlx", R"(<constant name="f" type="float"><input name="value" type="float" value="0.5" /></constant>)", "f",
                      "WG5202");
