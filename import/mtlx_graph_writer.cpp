@@ -422,11 +422,17 @@ class GraphWriter {
     auto key = std::make_pair(declared.internal_object(), std::string("parameter"));
     if (auto done = done_.find(key); done != done_.end()) return done->second;
     std::string name = plainName(nameOf(declared));
-    if (parameters_.contains(name)) name = plainName(nameOf(graph)) + "_" + name;
-    for (int n = 2; parameters_.contains(name); ++n) name = plainName(nameOf(graph) + "_" + nameOf(declared)) + "_" + std::to_string(n);
+    if (parameterNames_.count(name)) name = plainName(nameOf(graph)) + "_" + name;
+    if (parameterNames_.count(name)) {  // suffixes below the last one tried for this base are taken, as for ids
+      const std::string base = plainName(nameOf(graph) + "_" + nameOf(declared));
+      int& n = nextParameterSuffix_.try_emplace(base, 2).first->second;
+      while (parameterNames_.count(name = base + "_" + std::to_string(n))) ++n;
+    }
+    parameterNames_.insert(name);
     Json declaration{{"type", parameterType(value.type)}, {"default", value.literal}};
     if (pugi::xml_attribute label = declared.attribute("uiname")) declaration["label"] = label.value();
-    parameters_[name] = declaration;
+    // New by parameterNames_: appended without ordered_map's search through every key.
+    static_cast<Json::object_t::Container&>(parameters_.get_ref<Json::object_t&>()).emplace_back(name, std::move(declaration));
     std::string id = uniqueId(name);
     nodes_.push_back(Json{{"id", id}, {"op", "parameter"}, {"param", name}});
     return done_[key] = Value{value.literal, id + ".out", value.type};
@@ -444,12 +450,17 @@ class GraphWriter {
     for (const auto& n : nodes_)
       if (n.contains("inputs")) collect(n["inputs"]);
     Json kept = Json::array();
+    std::set<std::string> unread;
     for (auto& n : nodes_) {
-      bool unread = n["op"] == "parameter" && !read.count(n["id"].get<std::string>() + ".out");
-      if (unread) parameters_.erase(n["param"].get<std::string>());
+      if (n["op"] == "parameter" && !read.count(n["id"].get<std::string>() + ".out")) unread.insert(n["param"].get<std::string>());
       else kept.push_back(std::move(n));
     }
     nodes_ = std::move(kept);
+    Json declared = Json::object();  // in one pass: erasing key by key searches every key each time
+    auto& entries = static_cast<Json::object_t::Container&>(declared.get_ref<Json::object_t&>());
+    for (auto& [name, declaration] : parameters_.items())
+      if (!unread.count(name)) entries.emplace_back(name, std::move(declaration));
+    parameters_ = std::move(declared);
   }
 
   // `input`: the <input> or <output> that names `what`.
@@ -1004,6 +1015,8 @@ class GraphWriter {
   Json nodes_ = Json::array(), textures_ = Json::object(), parameters_ = Json::object();
   std::set<std::string> ids_;
   std::map<std::string, int> nextSuffix_;  // per id base, the suffix to try next
+  std::set<std::string> parameterNames_;  // the keys of parameters_, which looks them up one by one
+  std::map<std::string, int> nextParameterSuffix_;
   std::map<std::pair<const void*, std::string>, Value> done_;
   std::vector<pugi::xml_node> path_;
   std::set<const void*> failedNodes_;

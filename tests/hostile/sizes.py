@@ -148,6 +148,28 @@ class MaterialXDocuments(HostileCase):
             "".join(nodes), names[0])
         self.imports(materialx(body, 'nodegraph="NG" output="out"'))
 
+    # Parameters named alike (40,000 interface inputs that sanitise to one name) each
+    # tried _2, _3... from the start, and every one was looked up and inserted key by
+    # key in an ordered map: over 5 minutes.
+    def test_40000_interface_inputs_that_sanitise_alike(self):
+        punct = "-+!#$%()*,;=@[]^`{|}~"
+        names = ["n" + a + b + c + d for a in punct for b in punct for c in punct for d in punct][:40000]
+        inputs = ['<input name="%s" type="float" value="1"/>\n' % name for name in names]
+        nodes, leaf = [], 0
+        for i in range(40000):  # a binary tree of adds whose leaves read the interface inputs
+            ins = []
+            for k in (2 * i + 1, 2 * i + 2):
+                if k < 40000:
+                    ins.append('nodename="a%d"' % k)
+                else:
+                    ins.append('interfacename="%s"' % names[leaf % len(names)])
+                    leaf += 1
+            nodes.append('<add name="a%d" type="float"><input name="in1" type="float" %s/>'
+                         '<input name="in2" type="float" %s/></add>\n' % (i, ins[0], ins[1]))
+        body = '<nodegraph name="NG">\n%s%s<output name="out" type="float" nodename="a0"/>\n</nodegraph>\n' % (
+            "".join(inputs), "".join(nodes))
+        self.imports(materialx(body, 'nodegraph="NG" output="out"'))
+
     # Each material got its own copy of the node graph it reads: a 600 KB document asked
     # for 2000 copies of 32,500 nodes, tens of gigabytes, and ran for half an hour.
     def test_materials_sharing_one_large_node_graph(self):
