@@ -135,11 +135,11 @@ const std::vector<std::string_view>& amdGpuFamilies() {
   // Mesa 22.3's names with graphics (ARCTURUS and ALDEBARAN compute only); RADV aborts
   // the process on a name it does not know, so nothing else reaches it.
   static const std::vector<std::string_view> kFamilies = {
-      "tahiti",   "pitcairn", "verde",    "oland",     "hainan",    "bonaire",   "kabini", "kaveri",
-      "hawaii",   "tonga",    "iceland",  "carrizo",   "fiji",      "stoney",    "polaris10", "polaris11",
-      "polaris12", "vegam",   "vega10",   "vega12",    "vega20",    "raven",     "raven2", "renoir",
-      "navi10",   "navi12",   "navi14",   "navi21",    "navi22",    "navi23",    "navi24", "vangogh",
-      "rembrandt", "gfx1036", "gfx1100",  "gfx1101",   "gfx1102"};
+      "tahiti",    "pitcairn", "verde",   "oland",   "hainan",  "bonaire", "kabini",    "kaveri",    "hawaii",
+      "tonga",     "iceland",  "carrizo", "fiji",    "stoney",  "polaris10", "polaris11", "polaris12", "vegam",
+      "vega10",    "vega12",   "vega20",  "raven",   "raven2",  "renoir",  "navi10",    "navi12",    "navi14",
+      "navi21",    "navi22",   "navi23",  "navi24",  "vangogh", "rembrandt", "gfx1036", "gfx1100",   "gfx1101",
+      "gfx1102"};
   return kFamilies;
 }
 
