@@ -367,11 +367,20 @@ std::optional<WeatherConfig> resolveWeatherConfig(const std::optional<nlohmann::
                                                   const JsonDocument& doc, DiagnosticList& diags) {
   SettingErrors errors{doc, diags};
   NamedPreset named = namedPreset(block, pointer, errors);
+  auto reportUnknown = [&](const std::string& name, SourceLocation at) {
+    diags.report(DiagCode::UnknownWeatherPreset, std::move(at),
+                 {quoteUserText(name), unknownNameHint(name, weatherPresetNames(), "presets")});
+  };
+  // The graph's own preset is checked even when --weather-preset replaces it, as its
+  // tier is: a file plain compile rejects is rejected whatever replaces its preset.
+  if (presetOverride && block && !weatherPreset(named.name)) {
+    reportUnknown(named.name, doc.locate(named.pointer));
+    return std::nullopt;
+  }
   if (presetOverride) named.name = *presetOverride;
   auto config = weatherPreset(named.name);
   if (!config) {
-    diags.report(DiagCode::UnknownWeatherPreset, presetOverride ? SourceLocation{} : doc.locate(named.pointer),
-                 {quoteUserText(named.name), unknownNameHint(named.name, weatherPresetNames(), "presets")});
+    reportUnknown(named.name, presetOverride ? SourceLocation{} : doc.locate(named.pointer));
     return std::nullopt;
   }
   // The blend belongs to the graph's own preset: --weather-preset replaces both.

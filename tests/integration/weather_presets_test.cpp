@@ -308,6 +308,18 @@ TEST(WeatherErrors, AnUnknownTierIsWG4006AndANonStringTierWG4007WhateverTheQuali
   EXPECT_EQ(ok.exitCode, 0) << ok.raw;
 }
 
+// As with the tier: a graph's unknown preset is reported where it is written, whatever
+// --weather-preset puts in its place; a known one is simply replaced.
+TEST(WeatherErrors, AnUnknownPresetIsReportedWhateverReplacesIt) {
+  TempDir dir("weather-err");
+  for (const char* option : {"", "--weather-preset rock", "--weather-preset none"}) {
+    expectOnly(compileText(dir, minimalGraph(R"("blizzard")"), option), "WG4001", "/weather");
+    expectOnly(compileText(dir, minimalGraph(R"({"preset": "blizzard"})"), option), "WG4001", "/weather/preset");
+  }
+  auto ok = compileText(dir, minimalGraph(R"({"preset": "road"})"), "--weather-preset rock");
+  EXPECT_EQ(ok.exitCode, 0) << ok.raw;
+}
+
 TEST(WeatherErrors, UnknownEffectIsWG4006AndANonBooleanEffectWG4007) {
   TempDir dir("weather-err");
   expectOnly(compileText(dir, minimalGraph(R"({"preset": "rock", "effects": {"glitter": true}})")), "WG4006",
