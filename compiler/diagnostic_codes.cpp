@@ -26,6 +26,8 @@ constexpr std::array<DiagnosticInfo, static_cast<std::size_t>(kCount)> kTable = 
      "remove or rename one of the two entries", "key"},
     {ResourceLimit, "WG1007", E, In, "resource-limit", "{what} is {value}; the limit is {limit}",
      "bring it within the limit: split or simplify the input, or shrink the file or image", "what value limit"},
+    {ImportIndex, "WG1008", E, In, "import-index", "this is the index 'weathergen import' writes, not a material graph",
+     "compile the graphs it lists instead: {graphs}", "graphs"},
     {UnknownOp, "WG2001", E, In, "unknown-op", "unknown op '{op}'", "{suggestion}", "op suggestion"},
     {DuplicateId, "WG2002", E, In, "duplicate-id", "node id '{id}' is already used by {other}",
      "give every node a unique id", "id other"},

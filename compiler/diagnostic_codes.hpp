@@ -23,6 +23,7 @@ enum class DiagCode : std::uint16_t {
   UnknownField,
   DuplicateKey,
   ResourceLimit,
+  ImportIndex,
   UnknownOp,
   DuplicateId,
   UnknownNode,

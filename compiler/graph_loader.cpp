@@ -80,6 +80,7 @@ class Loader {
   bool runGraph() {
     const auto& root = doc_.root();
     if (!expectKind(root, "", nlohmann::json::value_t::object, "the document", "an object")) return false;
+    if (isImportIndex(root)) return false;
     checkFields(root, "", {"$schema", "name", "description", "include", "parameters", "textures", "switches", "nodes",
                            "output", "weather", "alphaCutoff", "alphaMode", "doubleSided"});
     graph_.sourceFile = doc_.file();
@@ -291,6 +292,27 @@ class Loader {
   }
   const nlohmann::json* optionalString(const nlohmann::json& object, const std::string& pointer, const char* key) {
     return member(object, pointer, key, nlohmann::json::value_t::string, "a string", false);
+  }
+
+  // MODEL.import.json, which `compile out/*.json` meets beside the graphs: one error
+  // naming the graphs it lists, not a dozen about its fields.
+  bool isImportIndex(const nlohmann::json& root) {
+    const auto generator = root.find("generator");
+    const auto materials = root.find("materials");
+    if (root.contains("nodes") || generator == root.end() || !generator->is_string() ||
+        !generator->get_ref<const std::string&>().starts_with("weathergen ") || materials == root.end() ||
+        !materials->is_array())
+      return false;
+    std::string graphs;
+    std::size_t listed = 0;
+    for (const auto& material : *materials) {
+      const auto graph = material.is_object() ? material.find("graph") : material.end();
+      if (!material.is_object() || graph == material.end() || !graph->is_string()) continue;
+      if (++listed <= 3) graphs += (graphs.empty() ? "'" : ", '") + quoteUserText(graph->get<std::string>()) + "'";
+    }
+    if (listed > 3) graphs += " and " + std::to_string(listed - 3) + " more";
+    report(DiagCode::ImportIndex, "", {graphs.empty() ? std::string("(none)") : graphs});
+    return true;
   }
 
   void checkFields(const nlohmann::json& object, const std::string& pointer, std::initializer_list<std::string_view> known) {
