@@ -78,12 +78,11 @@ class OutputCapture {
   std::FILE* file_;
 };
 
-// Stdin as the parser sees it: the end of input comes after `allow`'s bytes, so one
+// Stdin as the parser sees it: the end of input comes after `limit` bytes, so one
 // endless request cannot take unbounded memory.
 class BoundedInput : public std::streambuf {
  public:
-  explicit BoundedInput(std::streambuf* source) : source_(source) {}
-  void allow(std::size_t bytes) { left_ = bytes; }
+  BoundedInput(std::streambuf* source, std::size_t limit) : source_(source), left_(limit) {}
   bool exhausted() const { return left_ == 0; }
 
  protected:
@@ -97,7 +96,7 @@ class BoundedInput : public std::streambuf {
 
  private:
   std::streambuf* source_;
-  std::size_t left_ = 0;
+  std::size_t left_;
 };
 
 enum class RequestRead { Ok, End, Malformed };
@@ -110,8 +109,7 @@ RequestRead readRequest(std::istream& in, nlohmann::json& request, std::string& 
     c = in.peek();
   }
   if (c == std::char_traits<char>::eof()) return RequestRead::End;
-  BoundedInput bounded(in.rdbuf());
-  bounded.allow(kMaxRequestBytes);
+  BoundedInput bounded(in.rdbuf(), kMaxRequestBytes);
   std::istream boundedIn(&bounded);
   try {
     boundedIn >> request;

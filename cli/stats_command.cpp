@@ -104,7 +104,9 @@ long long count(const ExecutableStatistics& s, const char* name) { return std::l
 
 // The GPU's figures for each GLSL row of one tier's cost.
 void addGpuStatistics(GpuShaderCompiler& gpu, const WeatherCost& cost, std::vector<StatsRow>& rows, std::size_t first) {
-  auto glsl = [](const CompiledMaterial& m, ShaderStage stage) { return m.stage(ShaderLanguage::Glsl, stage).spirv; };
+  auto glsl = [](const CompiledMaterial& m, ShaderStage stage) -> const SpirvWords& {
+    return m.stage(ShaderLanguage::Glsl, stage).spirv;
+  };
   const StageGpuStatistics weathered = gpu.litPipeline(cost.material.reflectionJson, glsl(cost.material, ShaderStage::Vertex),
                                                        glsl(cost.material, ShaderStage::Fragment));
   const StageGpuStatistics none =
