@@ -141,11 +141,16 @@ struct Series {
   std::vector<double> ms, overNone, aboveNone;
 };
 
-// Measures one scene and prints its row; returns its device allocations in bytes.
-// The configurations take turns frame by frame: on shared cores whose speed drifts,
+// One scene's row of the table, and its device allocations in bytes.
+struct SceneMeasurement {
+  std::string row;
+  std::size_t gpuBytes = 0;
+};
+
+// Measures one scene. The configurations take turns frame by frame: on shared cores whose speed drifts,
 // measuring them one after another made "none" alone vary by a fifth between runs.
-std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string& graphsDir, unsigned width,
-                         unsigned height, const BenchRenderOptions& o) {
+SceneMeasurement measureScene(vk::Context& ctx, scene::Scene scene, const std::string& graphsDir, unsigned width,
+                              unsigned height, const BenchRenderOptions& o) {
   const BenchRequests requests = benchRequests(scene.towardsSun, width, height, o);
   const RenderRequest* order[] = {&requests.none, &requests.neutral, &requests.branchOnly, &requests.active};
   std::string name = scene.name;
@@ -162,12 +167,12 @@ std::size_t measureScene(vk::Context& ctx, scene::Scene scene, const std::string
     }
   }
   // The stand's and a model's names carry the file's stem: user text, escaped.
-  std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f | %.2f |\n", quoteUserText(name, 200).c_str(),
-              median(series[0].ms), median(series[1].ms), median(series[2].ms), median(series[3].ms),
-              median(series[1].overNone), median(series[2].overNone), median(series[3].overNone),
-              median(series[3].aboveNone));
-  std::fflush(stdout);
-  return renderer.gpuMemoryBytes();
+  char numbers[256];
+  std::snprintf(numbers, sizeof numbers, " | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f | %.2f |\n",
+                median(series[0].ms), median(series[1].ms), median(series[2].ms), median(series[3].ms),
+                median(series[1].overNone), median(series[2].overNone), median(series[3].overNone),
+                median(series[3].aboveNone));
+  return {"| " + quoteUserText(name, 200) + numbers, renderer.gpuMemoryBytes()};
 }
 
 int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& asked, unsigned width, unsigned height,
@@ -178,19 +183,27 @@ int measureScenes(std::vector<scene::Scene>& scenes, const BenchRenderOptions& a
   BenchRenderOptions o = asked;  // with the samples the frame fits at
   o.samples = samplesThatFit(*ctx, width, height, asked.samples);
   if (o.samples == 0) return kExitBadInput;
-  std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
-              "warm-up rounds), colour pass only.\n\n",
-              ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpRounds);
-  if (o.quality) std::printf("Quality tier of every weathered configuration: %s.\n\n", o.quality->c_str());
-  if (!o.effects.empty())
-    std::printf("Effects switched in every weathered configuration: %s.\n\n", effectOverridesText(o.effects).c_str());
-  std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | "
-              "active / none | active - none (ms) |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  // The header comes with the first row, so a graph that does not compile prints only its errors.
+  const auto printHeader = [&] {
+    std::printf("Device: %s. %ux%u, up to %ux MSAA, median of %d frames per configuration, the four in turn (after %d "
+                "warm-up rounds), colour pass only.\n\n",
+                ctx->deviceName().c_str(), width, height, o.samples, o.frames, kWarmUpRounds);
+    if (o.quality) std::printf("Quality tier of every weathered configuration: %s.\n\n", o.quality->c_str());
+    if (!o.effects.empty())
+      std::printf("Effects switched in every weathered configuration: %s.\n\n", effectOverridesText(o.effects).c_str());
+    std::printf("| scene | none (ms) | neutral (ms) | neutral* (ms) | active (ms) | neutral / none | neutral* / none | "
+                "active / none | active - none (ms) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  };
   std::size_t gpuBytes = 0;
   try {
-    for (auto& scene : scenes)
-      gpuBytes = std::max(gpuBytes, measureScene(*ctx, std::move(scene), graphsDir, width, height, o));
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+      const SceneMeasurement measured = measureScene(*ctx, std::move(scenes[i]), graphsDir, width, height, o);
+      if (i == 0) printHeader();
+      std::fputs(measured.row.c_str(), stdout);
+      std::fflush(stdout);
+      gpuBytes = std::max(gpuBytes, measured.gpuBytes);
+    }
   } catch (const MaterialCompileError& e) {  // a user's graph (--material, --model) that does not compile
     printDiagnostics(inModelTerms(e.diagnostics(), modelOrigins), false);
     return kExitBadInput;

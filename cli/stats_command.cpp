@@ -7,8 +7,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -170,12 +173,36 @@ std::string gpuCells(const StatsRow& r) {
   return cells;
 }
 
+// Each file once: a graph given twice, under any spelling of its path, adds no rows.
+std::vector<std::string> distinctGraphs(const std::vector<std::string>& graphs) {
+  std::vector<std::string> distinct;
+  for (const std::string& graph : graphs) {
+    const auto sameFile = [&](const std::string& earlier) {
+      std::error_code ec;
+      return earlier == graph || std::filesystem::equivalent(earlier, graph, ec);
+    };
+    if (std::none_of(distinct.begin(), distinct.end(), sameFile)) distinct.push_back(graph);
+  }
+  return distinct;
+}
+
+// Material names that more than one graph declares: their rows name the file as well.
+std::set<std::string> sharedMaterialNames(const std::vector<StatsRow>& rows) {
+  std::map<std::string, std::string> firstGraph;
+  std::set<std::string> shared;
+  for (const StatsRow& r : rows)
+    if (auto [at, added] = firstGraph.emplace(r.material, r.graph); !added && at->second != r.graph) shared.insert(r.material);
+  return shared;
+}
+
 void printTable(const std::vector<StatsRow>& rows, bool gpu) {
   std::printf("| material | tier | stage | language | instructions | weather | budget | texture reads | branches | "
               "uniform bytes | interpolants |%s\n|---|---|---|---|---:|---:|---|---:|---:|---:|---:|%s\n",
               gpu ? " VGPRs | waves per SIMD | ISA instructions | weather ISA |" : "", gpu ? "---:|---:|---:|---:|" : "");
+  const std::set<std::string> shared = sharedMaterialNames(rows);
   for (const StatsRow& r : rows)
-    std::printf("| %s | %s | %s | %s | %zu | %+ld | %d%s | %zu | %zu | %zu | %zu |%s\n", tableCell(r.material).c_str(),
+    std::printf("| %s | %s | %s | %s | %zu | %+ld | %d%s | %zu | %zu | %zu | %zu |%s\n",
+                tableCell(shared.count(r.material) ? r.material + " (" + r.graph + ")" : r.material).c_str(),
                 r.tier.c_str(), r.stage.c_str(), r.language.c_str(), r.spirv.instructions, r.weather, r.budget,
                 r.weather > r.budget ? " over" : "", r.spirv.textureReads, r.spirv.branches, r.uniformBytes,
                 r.interpolants, gpu ? gpuCells(r).c_str() : "");
@@ -228,7 +255,7 @@ int runStatsCommand(int argc, char** argv) {
   std::vector<StatsRow> rows;
   DiagnosticList diagnostics;
   bool compiled = true;
-  for (const std::string& graph : o.graphs) compiled = graphRows(graph, o, gpu.get(), rows, diagnostics) && compiled;
+  for (const std::string& graph : distinctGraphs(o.graphs)) compiled = graphRows(graph, o, gpu.get(), rows, diagnostics) && compiled;
   printDiagnostics(diagnostics.items(), o.json);
   if (!compiled) return kExitBadInput;
   if (o.json) printJson(rows);

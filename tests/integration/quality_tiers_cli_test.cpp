@@ -210,6 +210,23 @@ TEST(QualityTiersCli, StatsJsonRowsNameTheirGraphFile) {
   EXPECT_EQ(rows[7]["material"], "road");
 }
 
+// A graph given twice, under another spelling of its path, adds no rows; in the table,
+// two files declaring one material name each name their file beside it.
+TEST(QualityTiersCli, StatsRowsOfEachFileOnceAndSharedNamesShowTheirFile) {
+  TempDir dir("quality");
+  const std::string plain = (dir.path() / "road.json").string(), copy = (dir.path() / "copy.json").string();
+  testing::writeFile(plain, readFile(graph("road")));
+  testing::writeFile(copy, readFile(graph("road")));
+  const std::string respelt = (dir.path() / "." / "road.json").string();
+  EXPECT_EQ(statsRows(shellQuote(plain) + " " + shellQuote(respelt) + " --quality low").size(), 4u);
+  auto r = runCommand(shellQuote(kCli) + " stats " + shellQuote(plain) + " " + shellQuote(copy) + " --quality low");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("| road (" + plain + ") | low | frag | glsl |"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("| road (" + copy + ") | low | frag | glsl |"), std::string::npos) << r.output;
+  r = runCommand(shellQuote(kCli) + " stats " + shellQuote(plain) + " --quality low");
+  EXPECT_NE(r.output.find("| road | low | frag | glsl |"), std::string::npos) << r.output;
+}
+
 // A '|' in a material's name is escaped in the table, so each row keeps its 11 cells.
 TEST(QualityTiersCli, StatsTableEscapesAPipeInTheName) {
   TempDir dir("quality");

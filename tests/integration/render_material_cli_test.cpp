@@ -279,6 +279,8 @@ TEST(RenderMaterialCli, BenchRenderMeasuresAUserGraphOnTheStand) {
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("user.json:6:"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("error WG2001"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("Device:"), std::string::npos) << r.output;  // no table without a row
+  EXPECT_EQ(r.output.find("| scene |"), std::string::npos) << r.output;
 
   fs::path oddName = dir.path() / "us\x1b[31mer.json";  // the row names the file: escaped
   fs::copy_file(graph, oddName);
