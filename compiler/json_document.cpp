@@ -349,6 +349,19 @@ SourceLocation locateInJsonFile(const std::string& path, const std::string& poin
   return document ? document->locate(pointer) : SourceLocation{path, pointer, 0, 0};
 }
 
+// The pointer of the value that starts at line:column ("" for none): the text is
+// well-formed JSON up to there, as its parser has read that far.
+std::string pointerOfValueAt(const std::string& text, int line, int column) {
+  std::string found;
+  TextScanner scanner{text};
+  scanner.scan(
+      [&](const std::string& pointer, int l, int c) {
+        if (l == line && c == column && found.empty()) found = pointer;
+      },
+      [](const std::string&, int, int) {}, [](const std::string&, int, int, const std::string&) {});
+  return found;
+}
+
 // The raw text's limits: nesting depth, and no NUL.
 bool withinRawLimits(const std::string& file, const std::string& text, DiagnosticList& diagnostics,
                      const JsonLimits& limits) {
@@ -372,22 +385,19 @@ bool withinRawLimits(const std::string& file, const std::string& text, Diagnosti
 bool readSlowly(const std::string& file, const std::string& text, nlohmann::json& root, std::size_t& keysRead,
                 DiagnosticList& diagnostics, const JsonLimits& limits) {
   if (!withinRawLimits(file, text, diagnostics, limits)) return false;
+  JsonDomBuilder builder(root);
   try {
-    JsonDomBuilder builder(root);
     nlohmann::json::sax_parse(text, &builder);
     keysRead = builder.keysRead();
   } catch (const nlohmann::json::parse_error& e) {
     auto [line, column] = lineColumnOfByte(text, e.byte > 0 ? e.byte - 1 : 0);
     diagnostics.report(DiagCode::JsonSyntax, {file, "", line, column}, {plainParseMessage(e.what())});
     return false;
-  } catch (const nlohmann::json::out_of_range& e) {
+  } catch (const nlohmann::json::out_of_range&) {
     // A number too large for a double ("1e999"): point at it and call it non-finite.
-    std::string what = e.what();
-    auto open = what.find('\''), close = what.rfind('\'');
-    std::string number = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
-    std::size_t at = number.empty() ? std::string::npos : text.find(number);
-    auto [line, column] = lineColumnOfByte(text, at == std::string::npos ? 0 : at);
-    diagnostics.report(DiagCode::LiteralNotFinite, {file, "", line, column}, {"the number " + number});
+    auto [line, column] = lineColumnOfByte(text, builder.errorTokenStart());
+    diagnostics.report(DiagCode::LiteralNotFinite, {file, pointerOfValueAt(text, line, column), line, column},
+                       {"the number " + builder.errorToken()});
     return false;
   } catch (const std::exception& e) {
     diagnostics.report(DiagCode::JsonSyntax, {file, "", 1, 1}, {plainParseMessage(e.what())});

@@ -76,7 +76,9 @@ class EventForwarder : public rapidjson::BaseReaderHandler<rapidjson::UTF8<>, Ev
 
 }  // namespace
 
-bool JsonDomBuilder::parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) {
+bool JsonDomBuilder::parse_error(std::size_t position, const std::string& token, const nlohmann::detail::exception& e) {
+  errorEnd_ = position;
+  errorToken_ = token;
   if (const auto* syntax = dynamic_cast<const nlohmann::json::parse_error*>(&e)) throw *syntax;
   if (const auto* range = dynamic_cast<const nlohmann::json::out_of_range*>(&e)) throw *range;
   throw std::runtime_error(e.what());

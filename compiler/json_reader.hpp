@@ -30,12 +30,17 @@ class JsonDomBuilder final : public nlohmann::json::json_sax_t {
   bool start_array(std::size_t size) override { return dom_.start_array(size); }
   bool end_array() override { return dom_.end_array(); }
   // Throws nlohmann's error as its own type (it arrives by its base class).
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override;
+  bool parse_error(std::size_t position, const std::string& token, const nlohmann::detail::exception& e) override;
   std::size_t keysRead() const { return keys_; }
+  // After an error: the byte where its token starts, and the token.
+  std::size_t errorTokenStart() const { return errorEnd_ > errorToken_.size() ? errorEnd_ - errorToken_.size() : 0; }
+  const std::string& errorToken() const { return errorToken_; }
 
  private:
   nlohmann::detail::json_sax_dom_parser<nlohmann::json> dom_;
   std::size_t keys_ = 0;
+  std::size_t errorEnd_ = 0;
+  std::string errorToken_;
 };
 
 // True when the whole text was read and every event sent. False on anything it does

@@ -32,6 +32,18 @@ TEST(GraphValidation, OverflowingNumbersAreNotFiniteLiterals) {
   EXPECT_EQ(codes, std::vector<DiagCode>{DiagCode::LiteralNotFinite});
 }
 
+// The error points at the number itself, by line, column and pointer, even where a
+// string before it spells the same digits.
+TEST(GraphValidation, AnOverflowingNumberIsLocatedWhereItIs) {
+  DiagnosticList d;
+  (void)buildOptimizedIr("t.json", "{\"name\": \"1e999\",\n \"nodes\": [], \"output\": {\"roughness\": 1e999}}", d);
+  ASSERT_EQ(d.items().size(), 1u);
+  EXPECT_EQ(d.items()[0].code, DiagCode::LiteralNotFinite);
+  EXPECT_EQ(d.items()[0].location.pointer, "/output/roughness");
+  EXPECT_EQ(d.items()[0].location.line, 2);
+  EXPECT_EQ(d.items()[0].location.column, 39);
+}
+
 TEST(GraphValidation, BoolParametersHaveNoRange) {
   auto codes = codesFor(R"({"name": "t", "parameters": {"b": {"type": "bool", "default": true, "min": 0}},
                             "nodes": [], "output": {}})");
