@@ -1,6 +1,7 @@
 #include "cli/diagnostic_output.hpp"
 
 #include <cstdio>
+#include <map>
 
 #include "cli/commands.hpp"
 #include "compiler/literal.hpp"
@@ -8,12 +9,26 @@
 
 namespace wg {
 
+namespace {
+// Text shows this many warnings of one code; the rest are counted in one line, so a
+// document with 60,000 ignored inputs does not bury its errors. JSON lists every one.
+constexpr std::size_t kWarningsShownPerCode = 20;
+}  // namespace
+
 void printDiagnostics(const std::vector<Diagnostic>& list, bool json) {
   if (json) {
     std::fputs(formatDiagnosticsJson(list).c_str(), stderr);
     return;
   }
-  for (const auto& d : list) std::fputs(formatDiagnosticText(d).c_str(), stderr);
+  std::map<DiagCode, std::size_t> warnings;
+  for (const auto& d : list) {
+    if (d.info().severity == Severity::Warning && ++warnings[d.code] > kWarningsShownPerCode) continue;
+    std::fputs(formatDiagnosticText(d).c_str(), stderr);
+  }
+  for (const auto& [code, count] : warnings)
+    if (count > kWarningsShownPerCode)
+      std::fprintf(stderr, "weathergen: note: %zu more %s warnings are not shown; the JSON diagnostics list every one\n",
+                   count - kWarningsShownPerCode, std::string(diagnosticInfo(code).id).c_str());
 }
 
 int usageError(const std::string& message, bool json) {

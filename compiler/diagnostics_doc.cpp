@@ -32,8 +32,9 @@ std::string diagnosticsMarkdown() {
       "code), a message and a one-line hint. Placeholders such as `{texture}` are filled in\n"
       "from the input; the arguments column lists them in the order the reporter passes them.\n"
       "Text output reads `file:line:col: error WG2001: message [/json/pointer]` and then\n"
-      "`  hint: ...`. `--diagnostics json` prints the same fields as a JSON array. Each input\n"
-      "code has an example graph in `tests/bad/`.\n\n"
+      "`  hint: ...`. `--diagnostics json` prints the same fields as a JSON array. Text shows\n"
+      "the first 20 warnings of each code and counts the rest in one `note:` line; JSON lists\n"
+      "every one. Each input code has an example graph in `tests/bad/`.\n\n"
       "| code | name | severity | category | message | hint | arguments |\n"
       "|---|---|---|---|---|---|---|\n";
   for (const auto& d : allDiagnostics()) {

@@ -57,6 +57,35 @@ class MaterialXHostile : public ::testing::Test {
   }
 };
 
+// Thirty shaders that set two inputs the model cannot hold: sixty warnings of one code.
+// The text shows the first twenty and counts the rest in one line; JSON lists all sixty.
+TEST_F(MaterialXHostile, RepeatedWarningsAreCountedNotAllPrinted) {
+  std::string body;
+  for (int i = 0; i < 30; ++i) {
+    const std::string n = std::to_string(i);
+    body += "  <standard_surface name=\"S" + n + "\" type=\"surfaceshader\">\n"
+            "    <input name=\"transmission\" type=\"float\" value=\"1\" />\n"
+            "    <input name=\"coat\" type=\"float\" value=\"1\" />\n"
+            "  </standard_surface>\n"
+            "  <surfacematerial name=\"M" + n + "\" type=\"material\">\n"
+            "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"S" + n + "\" />\n"
+            "  </surfacematerial>\n";
+  }
+  const fs::path doc = write("many.mtlx", document(body));
+  ImportResult json = importDocument(doc, dir_.path() / "json");
+  ASSERT_EQ(json.exitCode, 0) << json.output;
+  EXPECT_EQ(json.diagnostics.size(), 60u);
+  CommandResult text = runCommand(shellQuote(WG_CLI_PATH) + " import -q " + shellQuote(doc.string()) + " -o " +
+                                  shellQuote((dir_.path() / "text").string()) + " 2>&1");
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  std::size_t shown = 0;
+  for (std::size_t at = text.output.find("warning WG5301"); at != std::string::npos;
+       at = text.output.find("warning WG5301", at + 1))
+    ++shown;
+  EXPECT_EQ(shown, 20u) << text.output;
+  EXPECT_NE(text.output.find("note: 40 more WG5301 warnings are not shown"), std::string::npos) << text.output;
+}
+
 TEST_F(MaterialXHostile, MalformedXmlNamesLineAndColumn) {
   auto d = expectRejected(write("broken.mtlx", document("  <standard_surface name=\"SR\" type=\"surfaceshader\">\n"
                                                          "    <input name=\"base\" type=\"float\" value=\"1\">\n"
