@@ -16,6 +16,7 @@
 #include "cli/option_table.hpp"
 #include "compiler/content_hash.hpp"
 #include "compiler/graph_loader.hpp"
+#include "compiler/json_text.hpp"
 #include "compiler/literal.hpp"
 #include "driver/material_compiler.hpp"
 #include "compiler/texture_loading.hpp"
@@ -159,7 +160,7 @@ std::optional<int> parseEvalOptions(int argc, char** argv, Options& o) {
 // Objects one member a line and arrays on one line ("baseColor": [0.5, 0.4, 0.3]), so
 // vectors read as vectors.
 void writeJson(std::string& out, const Json& value, int depth) {
-  auto dump = [](const Json& j) { return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); };
+  auto dump = [](const Json& j) { return jsonText(j); };
   if (value.is_object() && !value.empty()) {
     out += "{";
     const char* separator = "\n";

@@ -16,6 +16,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "compiler/json_text.hpp"
 #include "compiler/literal.hpp"
 
 namespace wg {
@@ -192,7 +193,7 @@ bool writeAll(int fd, const std::string& text) {
 std::string responseLine(int exitCode, const std::string& output, std::int64_t id) {
   nlohmann::json response = {{"exitCode", exitCode}, {"output", output}, {"requestId", id}};
   // Output is bytes the command printed: invalid UTF-8 is replaced, not an exception.
-  return response.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  return jsonText(response) + "\n";
 }
 
 }  // namespace

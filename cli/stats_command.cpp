@@ -19,6 +19,7 @@
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
 #include "cli/option_table.hpp"
+#include "compiler/json_text.hpp"
 #include "compiler/literal.hpp"
 #include "compiler/quality_tiers.hpp"
 #include "driver/weather_cost.hpp"
@@ -222,7 +223,7 @@ void printJson(const std::vector<StatsRow>& rows) {
                        {"instructions", count(*r.gpu, "Instructions")},
                        {"weatherInstructions", r.gpuWeatherInstructions}, {"codeBytes", count(*r.gpu, "Code size")}};
   // A path need not be UTF-8: its stray bytes become U+FFFD, as in the diagnostics.
-  std::printf("%s\n", out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+  std::printf("%s\n", jsonText(out, 2).c_str());
 }
 
 // Rows that did not reach stdout (a full disk, a closed descriptor) fail the command,

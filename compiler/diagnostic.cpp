@@ -1,5 +1,6 @@
 #include "compiler/diagnostic.hpp"
 
+#include "compiler/json_text.hpp"
 #include "compiler/literal.hpp"
 
 #include <algorithm>
@@ -116,7 +117,7 @@ std::string formatDiagnosticsJson(const std::vector<Diagnostic>& list) {
                      {"hint", d.hint}});
   }
   // Replace invalid UTF-8 from hostile input rather than throwing.
-  return array.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  return jsonText(array, 2) + "\n";
 }
 
 namespace {

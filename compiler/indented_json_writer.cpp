@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compiler/json_text.hpp"
+
 namespace wg {
 
 namespace {
@@ -20,7 +22,7 @@ void appendString(std::string& out, std::string_view value) {
     out += '"';
     return;
   }
-  out += nlohmann::json(std::string(value)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  out += jsonText(nlohmann::json(std::string(value)));
 }
 
 }  // namespace
@@ -101,7 +103,7 @@ void IndentedJsonWriter::json(const nlohmann::json& value) {
     text(value.get_ref<const std::string&>());
   } else {
     beforeValue();
-    out_ += value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    out_ += jsonText(value);
   }
 }
 

@@ -1,6 +1,6 @@
-// JSON text written as it is built, laid out exactly as nlohmann's dump(2) lays out a
+// JSON text written as it is built, laid out exactly as jsonText(value, 2) lays out a
 // document (two-space indent, "key": value, [] and {} when empty, strings escaped
-// without ensure_ascii and invalid UTF-8 replaced): the reflection is written this way
+// without ensure_ascii, invalid UTF-8 replaced, C1 controls escaped): the reflection is written this way
 // because building nlohmann's tree first was two thirds of a compile without SPIR-V.
 #pragma once
 #include <cstdint>

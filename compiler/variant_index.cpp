@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "compiler/json_text.hpp"
+
 namespace wg {
 
 std::string buildVariantIndexJson(const std::string& material, const std::vector<SwitchDecl>& switches,
@@ -27,7 +29,7 @@ std::string buildVariantIndexJson(const std::string& material, const std::vector
                {"variantCount", variants.size()},
                {"shaderSetCount", shaders.size()},
                {"variants", std::move(list)}};
-  return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  return jsonText(root, 2) + "\n";
 }
 
 }  // namespace wg

@@ -8,6 +8,7 @@
 #include <map>
 #include <tuple>
 
+#include "compiler/json_text.hpp"
 #include "compiler/name_mark.hpp"
 #include "import/material_graph_writer.hpp"
 
@@ -56,7 +57,7 @@ std::vector<std::string> materialStems(const std::vector<std::string>& names, co
 namespace {
 
 // File names are bytes, not always UTF-8; they reach the JSON as replacement characters.
-std::string asText(const Json& json) { return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; }
+std::string asText(const Json& json) { return jsonText(json, 2) + "\n"; }
 
 // One file per material and per image: bound what a small hostile file can make us write.
 constexpr std::size_t kMaxFilesPerKind = 16384;

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <map>
 
+#include "compiler/json_text.hpp"
 #include "compiler/literal.hpp"
 #include "import/gltf_resources.hpp"
 #include "import/mtlx_graph_writer.hpp"
@@ -18,7 +19,7 @@ using Json = nlohmann::ordered_json;
 constexpr std::uintmax_t kMaxImageBytes = 512ull << 20, kMaxImagesTotalBytes = 1ull << 30;
 constexpr std::size_t kMaxMaterials = 16384;
 
-std::string asText(const Json& json) { return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; }
+std::string asText(const Json& json) { return jsonText(json, 2) + "\n"; }
 
 std::string imageExtension(std::string_view bytes) {
   if (bytes.starts_with("\x89PNG\r\n\x1a\n")) return ".png";

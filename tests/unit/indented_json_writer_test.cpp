@@ -6,13 +6,12 @@
 #include <nlohmann/json.hpp>
 
 #include "compiler/indented_json_writer.hpp"
+#include "compiler/json_text.hpp"
 
 namespace wg {
 namespace {
 
-std::string nlohmannText(const nlohmann::ordered_json& document) {
-  return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-}
+std::string nlohmannText(const nlohmann::ordered_json& document) { return jsonText(document, 2) + "\n"; }
 
 TEST(IndentedJsonWriter, WritesWhatNlohmannDumps) {
   IndentedJsonWriter w;
@@ -20,6 +19,7 @@ TEST(IndentedJsonWriter, WritesWhatNlohmannDumps) {
   w.key("plain").text("rock_01");
   w.key("escaped \"key\"").text("quote \" backslash \\ tab \t newline \n bell \x07 del \x7f");
   w.key("utf8").text("雪 é \u2028");
+  w.key("c1").text("csi \u009b2J nel \u0085 next \u00a0");
   w.key("invalid").text("a\xff" "b\xc3");
   w.key("empty object").beginObject();
   w.endObject();
@@ -44,6 +44,7 @@ TEST(IndentedJsonWriter, WritesWhatNlohmannDumps) {
       {"plain", "rock_01"},
       {"escaped \"key\"", "quote \" backslash \\ tab \t newline \n bell \x07 del \x7f"},
       {"utf8", "雪 é \u2028"},
+      {"c1", "csi \u009b2J nel \u0085 next \u00a0"},
       {"invalid", "a\xff" "b\xc3"},
       {"empty object", nlohmann::ordered_json::object()},
       {"empty array", nlohmann::ordered_json::array()},
@@ -51,6 +52,14 @@ TEST(IndentedJsonWriter, WritesWhatNlohmannDumps) {
       {"nested", {{{"flag", true}, {"off", false}}, nlohmann::ordered_json::array()}},
   };
   EXPECT_EQ(w.finish(), nlohmannText(expected));
+}
+
+// U+0080..U+009F are escaped (U+009B is a CSI to a terminal), everything else is as
+// nlohmann dumps it: U+00A0 and other text stay as they are.
+TEST(JsonText, EscapesTheC1ControlsAlone) {
+  EXPECT_EQ(jsonText(nlohmann::json("a\u009bb\u0080\u009f\u00a0\u00c2")), "\"a\\u009bb\\u0080\\u009f\u00a0\u00c2\"");
+  EXPECT_EQ(jsonText(nlohmann::json("\xc2")), "\"\xef\xbf\xbd\"");  // a cut sequence: U+FFFD
+  EXPECT_EQ(escapeC1Controls("plain"), "plain");
 }
 
 TEST(IndentedJsonWriter, WritesAnNlohmannValueInItsKeyOrder) {
