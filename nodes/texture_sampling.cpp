@@ -92,11 +92,13 @@ Value sampleImage(const Image& image, float u, float v, TextureWrap wrap, Textur
 
 Value sampleImage(const Image& image, float u, float v, const SamplerState& state) {
   if (!image.valid()) return transparentBlack();
-  if (!std::isfinite(u)) u = 0.f;
-  if (!std::isfinite(v)) v = 0.f;
-  // Unnormalized coordinates, computed in float as the sampler does.
-  const float x = u * static_cast<float>(image.width);
-  const float y = v * static_cast<float>(image.height);
+  // Unnormalized coordinates, computed in float as the sampler does. A coordinate that
+  // is not finite, or overflows when scaled (u = 1e38 on a 256-texel image), reads as 0:
+  // wrapping infinity gives NaN, and NaN is no texel index.
+  float x = u * static_cast<float>(image.width);
+  float y = v * static_cast<float>(image.height);
+  if (!std::isfinite(x)) x = 0.f;
+  if (!std::isfinite(y)) y = 0.f;
 
   if (state.magFilter == TextureFilter::Nearest) {
     const int i = wrapTexel(std::floor(x), image.width, state.wrapU);

@@ -117,6 +117,19 @@ TEST(EvalCli, DegenerateInputsGiveFiniteOutputs) {
   }
 }
 
+// Far from the origin a texture coordinate (the weather noise's, or road's own image's)
+// overflows when scaled to texels; it used to wrap to a NaN index and read outside the
+// image (SIGSEGV).
+TEST(EvalCli, PositionsAndTexcoordsNearTheLargestFloatDoNotCrash) {
+  const std::string road = std::string(WG_SOURCE_DIR) + "/graphs/road.json";
+  for (const std::string& graph : {kRock, road})
+    for (const char* inputs : {"--at worldPosition=1e38:0:0", "--at worldPosition=0:0:-3e38",
+                               "--at texcoord=3e38:-3e38,texcoord1=3e38:3e38"}) {
+      const json out = evalJson(shellQuote(graph) + " " + inputs);
+      EXPECT_TRUE(out.contains("coverage")) << graph << " " << inputs;
+    }
+}
+
 TEST(EvalCli, HelpListsEveryInputWithItsDefault) {
   auto plain = eval("--help");
   EXPECT_EQ(plain.exitCode, 0) << plain.output;
