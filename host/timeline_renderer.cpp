@@ -1,8 +1,8 @@
 #include "host/timeline_renderer.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
+#include <iterator>
 
 namespace wg {
 
@@ -22,6 +22,16 @@ std::string slugOf(const std::string& label) {
   }
   while (!out.empty() && out.back() == '-') out.pop_back();
   return out;
+}
+
+// The simulated state nearest time t. Found by time, not by step count: simulateTimeline
+// enlarges a step too small for its step limit, so states[i] need not be at i * step.
+std::size_t stateNearest(const std::vector<WeatherState>& states, double t) {
+  auto after = std::lower_bound(states.begin(), states.end(), t,
+                                [](const WeatherState& s, double time) { return s.time < time; });
+  if (after == states.end()) return states.size() - 1;
+  if (after != states.begin() && t - std::prev(after)->time < after->time - t) --after;
+  return static_cast<std::size_t>(after - states.begin());
 }
 }  // namespace
 
@@ -47,8 +57,7 @@ std::vector<TimelineFrame> planTimeline(const WeatherTimeline& timeline, const R
     std::snprintf(index, sizeof index, "%02zu", r + 1);
     out.slug = std::string(index) + "-" + slugOf(out.label);
     double stageEnd = last > first ? keys[last].time : (r + 1 < runs.size() ? keys[runs[r + 1].first].time : end);
-    std::size_t at = std::min(states.size() - 1, static_cast<std::size_t>(std::llround((stageEnd - start) / step)));
-    out.state = states[at];
+    out.state = states[stateNearest(states, stageEnd)];
     // The sun is the scene's; the conditions shown are the stage's own (a single
     // keyframe's stage already blends towards the next one by its end).
     out.state.conditions.sunDirection = base.weather.conditions.sunDirection;
