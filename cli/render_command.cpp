@@ -91,7 +91,9 @@ int prepareRender(const RenderOptions& o, PreparedRender& prepared) {
   if (std::string e = makeRenderPlan(o, prepared.source.scene, plan); !e.empty()) return usageError(e);
   plan.inputs.add(prepared.source.inputFiles);
   plan.modelOrigins = prepared.source.origins;
-  if (std::string e = plan.inputs.checkOutputs(plannedOutputs(plan, prepared.source.scene.name)); !e.empty()) return usageError(e);
+  const auto outputs = plannedOutputs(plan, prepared.source.scene.name);
+  if (std::string e = plan.inputs.checkOutputs(outputs); !e.empty()) return usageError(e);
+  if (std::string e = checkNoSpecialFiles(outputs); !e.empty()) return usageError(e);
   return kExitOk;
 }
 

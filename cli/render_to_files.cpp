@@ -39,7 +39,9 @@ std::string outputsReplaceInputs(const SceneRenderer& renderer, const RenderPlan
                                  const std::vector<std::string>& stageSlugs = {}) {
   RunInputs inputs = plan.inputs;
   inputs.add(renderer.materialInputFiles());
-  return inputs.checkOutputs(plannedOutputs(plan, renderer.scene().name, stageSlugs));
+  const auto outputs = plannedOutputs(plan, renderer.scene().name, stageSlugs);
+  if (std::string e = inputs.checkOutputs(outputs); !e.empty()) return e;
+  return checkNoSpecialFiles(outputs);
 }
 
 int renderOneFrame(SceneRenderer& renderer, vk::Context& ctx, const RenderPlan& plan) {

@@ -38,4 +38,11 @@ class RunInputs {
   std::vector<Identity> inputs_;
 };
 
+// "" when no output is a device, a FIFO or a socket (followed through links); otherwise
+// one line naming the first and what it is. For the files a user names (render's
+// pictures, compile's depfile): they are renamed into place, which would replace the
+// node itself, so -o /dev/null run as root would leave a PNG where the device was.
+// Files inside an output directory are the run's own and are replaced.
+std::string checkNoSpecialFiles(const std::vector<PlannedOutput>& outputs);
+
 }  // namespace wg

@@ -33,7 +33,8 @@ std::string outputsReplaceInputs(const SceneRenderer& renderer, const SnowfieldR
   inputs.add(renderer.materialInputFiles());
   std::vector<PlannedOutput> outputs{{"-o", o.output}, {"-o", stripPath(o)}};
   for (std::size_t i = 0; i < frameCount && !o.framesDir.empty(); ++i) outputs.push_back({"--frames", framePath(o, i)});
-  return inputs.checkOutputs(outputs);
+  if (std::string e = inputs.checkOutputs(outputs); !e.empty()) return e;
+  return checkNoSpecialFiles(outputs);
 }
 
 }  // namespace
