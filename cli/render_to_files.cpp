@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/picture_files.hpp"
 #include "compiler/literal.hpp"
 #include "host/display_image.hpp"
 #include "host/frame_target_plan.hpp"
@@ -91,18 +92,17 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
   const std::string& sceneName = renderer.scene().name;
   std::vector<image::LabelledFrame> frames;
   std::vector<Image> strip;
+  std::vector<PictureFile> pictures;
   for (const auto& stage : stages) {
     Image img = toDisplayImage(stage.frame);
-    if (!plan.framesDir.empty()) {
-      std::filesystem::create_directories(plan.framesDir);
-      if (int e = writePicture(framePath(plan, sceneName, stage.slug).string(), img)) return e;
-    }
+    if (!plan.framesDir.empty()) pictures.push_back({framePath(plan, sceneName, stage.slug), img, true});
     frames.push_back({img, stage.lines});
     strip.push_back(std::move(img));
   }
-  if (int e = writePicture(plan.output, image::contactSheet(title, frames, kSheetColumns))) return e;
   const std::string stripFile = stripPath(plan).string();
-  if (int e = writePicture(stripFile, image::frameStrip(strip))) return e;
+  pictures.push_back({plan.output, image::contactSheet(title, frames, kSheetColumns)});
+  pictures.push_back({stripFile, image::frameStrip(strip)});
+  if (std::string e = writePicturesTogether(pictures); !e.empty()) return usageError(e);
   if (plan.progress) std::fprintf(stderr, "render: wrote %s and %s\n", plan.output.c_str(), stripFile.c_str());
   return kExitOk;
 }

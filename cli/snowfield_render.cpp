@@ -5,11 +5,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/diagnostic_output.hpp"
+#include "cli/picture_files.hpp"
 #include "cli/render_to_files.hpp"
 #include "cli/run_inputs.hpp"
 #include "host/display_image.hpp"
 #include "host/image/contact_sheet.hpp"
-#include "host/image/png_file.hpp"
 #include "host/snowfield/snowfield_scene.hpp"
 
 namespace wg {
@@ -51,6 +51,7 @@ int renderSnowfield(const SnowfieldRenderOptions& o) {
   renderer.setSnowDeformation(&animation.deformationImage());
   std::vector<image::LabelledFrame> frames;
   std::vector<Image> strip;
+  std::vector<PictureFile> pictures;
   auto times = snow::SnowfieldAnimation::keyTimes();
   for (std::size_t i = 0; i < times.size(); ++i) {
     if (o.progress) std::fprintf(stderr, "render: [%zu/%zu] snowfield t = %.0f s\n", i + 1, times.size(), times[i]);
@@ -68,25 +69,16 @@ int renderSnowfield(const SnowfieldRenderOptions& o) {
     if (i == 0)
       if (std::string e = outputsReplaceInputs(renderer, o, times.size()); !e.empty()) return usageError(e);
     Image img = toDisplayImage(frame);
-    if (!o.framesDir.empty()) {
-      std::filesystem::create_directories(o.framesDir);
-      if (std::string e = image::writePng(framePath(o, i).string(), img); !e.empty()) {
-        std::fprintf(stderr, "weathergen: error: %s\n", e.c_str());
-        return kExitBadInput;
-      }
-    }
+    if (!o.framesDir.empty()) pictures.push_back({framePath(o, i), img, true});
     frames.push_back({img, moment.caption});
     strip.push_back(std::move(img));
   }
   const std::string title = "weathergen  snowfield: prints that leave the window come back";
   constexpr int kSheetColumns = 3;
   const std::string stripFile = stripPath(o).string();
-  for (auto [path, picture] : {std::pair{o.output, image::contactSheet(title, frames, kSheetColumns)},
-                               std::pair{stripFile, image::frameStrip(strip)}})
-    if (std::string e = image::writePng(path, picture); !e.empty()) {
-      std::fprintf(stderr, "weathergen: error: %s\n", e.c_str());
-      return kExitBadInput;
-    }
+  pictures.push_back({o.output, image::contactSheet(title, frames, kSheetColumns)});
+  pictures.push_back({stripFile, image::frameStrip(strip)});
+  if (std::string e = writePicturesTogether(pictures); !e.empty()) return usageError(e);
   if (o.progress) std::fprintf(stderr, "render: wrote %s and %s\n", o.output.c_str(), stripFile.c_str());
   return kExitOk;
 }

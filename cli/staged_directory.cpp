@@ -105,7 +105,8 @@ std::string StagedDirectory::syncStaged() {
   return error;
 }
 
-std::string StagedDirectory::publish() {
+std::string StagedDirectory::readyToPublish() {
+  if (ready_) return "";
   if (std::string e = syncStaged(); !e.empty()) return e;
   for (const auto& name : names_) {
     std::filesystem::path target = directory_ / name;
@@ -113,6 +114,12 @@ std::string StagedDirectory::publish() {
     if (std::filesystem::is_directory(std::filesystem::symlink_status(target, ec)))
       return "cannot write '" + quoteUserText(target.string(), 300) + "': a directory has that name";
   }
+  ready_ = true;
+  return "";
+}
+
+std::string StagedDirectory::publish() {
+  if (std::string e = readyToPublish(); !e.empty()) return e;
   // Now, as a rewrite would have, so that make and ninja see these outputs as fresh;
   // before any rename, so that a touch that fails leaves the folder's bytes as they were.
   for (const auto& name : unchanged_)

@@ -20,6 +20,10 @@ class StagedDirectory {
 
   // Each returns "" or a one-line error with the system's reason.
   std::string stage(const std::string& name, std::string_view bytes);
+  // Syncs the staged files and checks that no directory holds an output's name: what can
+  // fail before the first rename. publish() does it too; a run publishing several
+  // folders together asks each first, so a failure in one leaves all as they were.
+  std::string readyToPublish();
   std::string publish();
 
  private:
@@ -29,6 +33,7 @@ class StagedDirectory {
   std::vector<std::string> names_;
   std::vector<std::string> unchanged_;  // already hold their bytes: touched on publishing
   std::vector<std::filesystem::path> created_;  // folders this run made, deepest last
+  bool ready_ = false;
   bool published_ = false;
 };
 

@@ -35,15 +35,13 @@ fs::path temporaryPathFor(const fs::path& target) {
 }
 
 void appendBytes(void* context, void* data, int size) {
-  auto* out = static_cast<std::vector<unsigned char>*>(context);
-  const auto* bytes = static_cast<const unsigned char*>(data);
-  out->insert(out->end(), bytes, bytes + size);
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 
 std::string errnoText() { return std::strerror(errno); }
 
 // Writes `bytes` to a new file at `path`; "" or an error (the file may be left behind).
-std::string writeNewFile(const fs::path& path, const std::vector<unsigned char>& bytes) {
+std::string writeNewFile(const fs::path& path, const std::string& bytes) {
   // "x": fail rather than clobber if the name is somehow taken.
   File file(std::fopen(path.c_str(), "wbx"), &std::fclose);
   if (!file) return errnoText();
@@ -55,19 +53,24 @@ std::string writeNewFile(const fs::path& path, const std::vector<unsigned char>&
 
 }  // namespace
 
+std::string encodePng(const Image& image, std::string& bytes) {
+  if (!image.valid()) return "the image is empty or its buffer has the wrong size";
+  if (image.width > kMaxPngDimension || image.height > kMaxPngDimension)
+    return "the image is larger than " + std::to_string(kMaxPngDimension) + " pixels";
+  bytes.clear();
+  const int stride = image.width * kImageChannels;
+  if (!stbi_write_png_to_func(&appendBytes, &bytes, image.width, image.height, kImageChannels, image.rgba.data(), stride))
+    return "PNG encoding failed";
+  return "";
+}
+
 std::string writePng(const std::string& path, const Image& image) {
   const std::string prefix = "cannot write " + path + ": ";
-  if (!image.valid()) return prefix + "the image is empty or its buffer has the wrong size";
-  if (image.width > kMaxPngDimension || image.height > kMaxPngDimension)
-    return prefix + "the image is larger than " + std::to_string(kMaxPngDimension) + " pixels";
   const fs::path target(path);
   if (target.filename().empty()) return prefix + "not a file name";
 
-  std::vector<unsigned char> encoded;
-  const int stride = image.width * kImageChannels;
-  if (!stbi_write_png_to_func(&appendBytes, &encoded, image.width, image.height, kImageChannels,
-                              image.rgba.data(), stride))
-    return prefix + "PNG encoding failed";
+  std::string encoded;
+  if (std::string error = encodePng(image, encoded); !error.empty()) return prefix + error;
 
   const fs::path temporary = temporaryPathFor(target);
   std::error_code ignored;

@@ -11,6 +11,10 @@ namespace wg::image {
 // the encodable size, and callers check what they will write against it first.
 inline constexpr int kMaxPngDimension = 16384;
 
+// `image` as the bytes of an 8-bit RGBA PNG, for callers that write it themselves.
+// Returns "" or why it cannot be encoded (empty, too large).
+std::string encodePng(const Image& image, std::string& bytes);
+
 // Writes `image` as an 8-bit RGBA PNG. The bytes go to a temporary file in the same
 // directory, which is then renamed over `path`: a reader (a test, an image viewer, a CI
 // artifact upload) never sees a half-written file, and a failed write leaves neither a

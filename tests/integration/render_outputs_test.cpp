@@ -57,5 +57,73 @@ TEST(RenderOutputs, AFifoOrALinkToOneIsRefusedAsAnOutputNotReplaced) {
   EXPECT_FALSE(fs::exists(dir.path() / "out"));
 }
 
+// The strip's name is taken by a directory: the contact sheet, already drawn, must not
+// replace the old OUT.png on its own.
+TEST(RenderOutputs, ATimelineThatCannotWriteItsStripLeavesTheContactSheetAsItWas) {
+  TempDir dir("wg-render-outputs");
+  writeFile(dir.path() / "t.json", kTwoStages);
+  writeFile(dir.path() / "out.png", "old");
+  fs::create_directory(dir.path() / "out.strip.png");
+  CommandResult r = render("--scene rocks --timeline " + quoted(dir.path() / "t.json") + " --frames " +
+                           quoted(dir.path() / "frames") + " -o " + quoted(dir.path() / "out.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("out.strip.png"), std::string::npos) << r.output;
+  EXPECT_EQ(readFile(dir.path() / "out.png"), "old");
+  EXPECT_FALSE(fs::exists(dir.path() / "frames")) << "a failed run leaves no folder it made";
+  EXPECT_EQ(listFiles(dir.path()), (std::vector<std::string>{"out.png", "t.json"}));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 3) << "a staging folder was left";
+}
+
+// The second stage's picture name is taken: the first stage's picture is not written either.
+TEST(RenderOutputs, AFramesPictureThatCannotBeWrittenLeavesNoOtherPicture) {
+  TempDir dir("wg-render-outputs");
+  writeFile(dir.path() / "t.json", kTwoStages);
+  fs::create_directories(dir.path() / "frames" / "rocks-02-b.png");
+  CommandResult r = render("--scene rocks --timeline " + quoted(dir.path() / "t.json") + " --frames " +
+                           quoted(dir.path() / "frames") + " -o " + quoted(dir.path() / "out.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path() / "frames"), fs::directory_iterator{}), 1)
+      << "rocks-01-a.png was written";
+  EXPECT_FALSE(fs::exists(dir.path() / "out.png"));
+  EXPECT_FALSE(fs::exists(dir.path() / "out.strip.png"));
+}
+
+// A --frames folder the system will not create is the machine's setup, not a bug:
+// exit 2 naming it, not exit 3 with an escaped exception.
+TEST(RenderOutputs, AFramesFolderThatCannotBeCreatedIsAUsageError) {
+  TempDir dir("wg-render-outputs");
+  writeFile(dir.path() / "t.json", kTwoStages);
+  CommandResult r = render("--scene rocks --timeline " + quoted(dir.path() / "t.json") +
+                           " --frames /proc/self/no-such-folder -o " + quoted(dir.path() / "out.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("/proc/self/no-such-folder"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir.path() / "out.png"));
+}
+
+// A timeline's -o in a folder that does not exist fails as a single frame's does,
+// and creates no folder.
+TEST(RenderOutputs, ATimelineDoesNotCreateTheFolderOfItsOutput) {
+  TempDir dir("wg-render-outputs");
+  writeFile(dir.path() / "t.json", kTwoStages);
+  CommandResult r = render("--scene rocks --timeline " + quoted(dir.path() / "t.json") + " -o " +
+                           quoted(dir.path() / "missing" / "out.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_FALSE(fs::exists(dir.path() / "missing"));
+}
+
+// The snowfield writes its moments, its sheet and its strip together too, and names a
+// file it cannot write without its control characters.
+TEST(RenderOutputs, TheSnowfieldWritesNothingWhenOnePictureFailsAndQuotesItsName) {
+  TempDir dir("wg-render-outputs");
+  const fs::path out = dir.path() / "\x1b[31msnow.png";
+  fs::create_directory(dir.path() / "\x1b[31msnow.strip.png");
+  CommandResult r = render("--scene snowfield --frames " + quoted(dir.path() / "frames") + " -o " + quoted(out));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("snow.strip.png"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(dir.path() / "frames"));
+}
+
 }  // namespace
 }  // namespace wg::testing
