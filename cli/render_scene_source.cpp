@@ -8,6 +8,7 @@
 #include "compiler/literal.hpp"
 #include "host/scene/graph_path.hpp"
 #include "host/scene/preview_stand.hpp"
+#include "import/model_import.hpp"
 
 namespace wg {
 
@@ -20,11 +21,13 @@ int bundledScene(const std::string& name, SceneSource& source) {
   return kExitOk;
 }
 
-// The stand is named after the graph file ("stand-rock"), which names its frames.
+// The stand is named after the graph file ("stand-rock"), which names its --frames
+// pictures: made file-safe as an imported model's name is, so no control character,
+// invalid UTF-8 or overlong name reaches a file name.
 int materialOnStand(const std::string& graphPath, SceneSource& source) {
   if (!scene::isGraphFilePath(graphPath))
     return usageError("--material takes a graph file ending in .json, not '" + quoteUserText(graphPath) + "'");
-  std::string name = "stand-" + std::filesystem::path(graphPath).stem().string();
+  std::string name = "stand-" + gltf::fileSafeName(std::filesystem::path(graphPath).stem().string(), "graph");
   source = {scene::previewStand(graphPath, name), {graphPath}};
   return kExitOk;
 }

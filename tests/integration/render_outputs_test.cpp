@@ -111,6 +111,26 @@ TEST(RenderOutputs, ATimelineDoesNotCreateTheFolderOfItsOutput) {
   EXPECT_FALSE(fs::exists(dir.path() / "missing"));
 }
 
+// The stand is named after the graph file, and that name is in every --frames
+// picture's name: an escape sequence, a newline or invalid UTF-8 in the graph's
+// name must not reach a file name.
+TEST(RenderOutputs, TheStandsFramesHaveFileSafeNamesWhateverTheGraphIsCalled) {
+  TempDir dir("wg-render-outputs");
+  writeFile(dir.path() / "t.json", kTwoStages);
+  const fs::path graph = dir.path() / "\x1b[31m\xff\nrock.json";
+  fs::copy_file(fs::path(WG_SOURCE_DIR) / "graphs" / "rock.json", graph);
+  CommandResult r = render("--material " + quoted(graph) + " --timeline " + quoted(dir.path() / "t.json") +
+                           " --frames " + quoted(dir.path() / "frames") + " -o " + quoted(dir.path() / "out.png"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const std::string& name : listFiles(dir.path() / "frames")) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-."),
+              std::string::npos);
+    EXPECT_EQ(name.rfind("stand-", 0), 0u);
+  }
+  EXPECT_EQ(listFiles(dir.path() / "frames").size(), 2u);
+}
+
 // The snowfield writes its moments, its sheet and its strip together too, and names a
 // file it cannot write without its control characters.
 TEST(RenderOutputs, TheSnowfieldWritesNothingWhenOnePictureFailsAndQuotesItsName) {
