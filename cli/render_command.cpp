@@ -100,7 +100,7 @@ int prepareRender(const RenderOptions& o, PreparedRender& prepared) {
 // Draws it and writes the pictures: what one render and each --watch render do.
 WatchedRender renderPrepared(PreparedRender prepared, vk::Context& ctx, const std::string& graphsDir) {
   SceneSource& source = prepared.source;
-  if (prepared.plan.progress) std::fprintf(stderr, "render: %s on %s\n", source.scene.name.c_str(), ctx.deviceName().c_str());
+  if (prepared.plan.progress) std::fprintf(stderr, "render: %s on %s\n", quoteUserText(source.scene.name).c_str(), ctx.deviceName().c_str());
   RenderedFiles files = renderToFiles(ctx, std::move(source.scene), prepared.plan, graphsDir);
   if (files.exitCode != kExitOk) return {files.exitCode, {}};
   std::vector<std::string> read = std::move(source.inputFiles);

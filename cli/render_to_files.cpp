@@ -50,7 +50,7 @@ int renderOneFrame(SceneRenderer& renderer, vk::Context& ctx, const RenderPlan& 
   if (!reportValidation(ctx)) return kExitInternal;
   if (std::string e = outputsReplaceInputs(renderer, plan); !e.empty()) return usageError(e);
   if (int e = writePicture(plan.output, toDisplayImage(frame))) return e;
-  if (plan.progress) std::fprintf(stderr, "render: wrote %s (%ux%u)\n", plan.output.c_str(), frame.width, frame.height);
+  if (plan.progress) std::fprintf(stderr, "render: wrote %s (%ux%u)\n", quoteUserText(plan.output, 300).c_str(), frame.width, frame.height);
   return kExitOk;
 }
 
@@ -103,7 +103,7 @@ int renderTimelineSheet(SceneRenderer& renderer, vk::Context& ctx, const RenderP
   pictures.push_back({plan.output, image::contactSheet(title, frames, kSheetColumns)});
   pictures.push_back({stripFile, image::frameStrip(strip)});
   if (std::string e = writePicturesTogether(pictures); !e.empty()) return usageError(e);
-  if (plan.progress) std::fprintf(stderr, "render: wrote %s and %s\n", plan.output.c_str(), stripFile.c_str());
+  if (plan.progress) std::fprintf(stderr, "render: wrote %s and %s\n", quoteUserText(plan.output, 300).c_str(), quoteUserText(stripFile, 300).c_str());
   return kExitOk;
 }
 

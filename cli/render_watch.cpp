@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/file_stamps.hpp"
 #include "cli/stop_signal.hpp"
+#include "compiler/literal.hpp"
 
 namespace wg {
 
@@ -22,8 +23,8 @@ std::string clockTime() {
 }
 
 void printRenderLine(const WatchedRender& result, double milliseconds, const std::string& output, bool earlierGood) {
-  const std::string now = clockTime();
-  const char *at = now.c_str(), *out = output.c_str();
+  const std::string now = clockTime(), quoted = quoteUserText(output, 300);
+  const char *at = now.c_str(), *out = quoted.c_str();
   if (result.exitCode == kExitOk) std::printf("%s  rendered %s in %.0f ms\n", at, out, milliseconds);
   else if (earlierGood) std::printf("%s  failed after %.0f ms; kept the last good %s\n", at, milliseconds, out);
   else std::printf("%s  failed after %.0f ms; nothing written to %s yet\n", at, milliseconds, out);

@@ -8,6 +8,7 @@
 #include "cli/picture_files.hpp"
 #include "cli/render_to_files.hpp"
 #include "cli/run_inputs.hpp"
+#include "compiler/literal.hpp"
 #include "host/display_image.hpp"
 #include "host/image/contact_sheet.hpp"
 #include "host/snowfield/snowfield_scene.hpp"
@@ -79,7 +80,7 @@ int renderSnowfield(const SnowfieldRenderOptions& o) {
   pictures.push_back({o.output, image::contactSheet(title, frames, kSheetColumns)});
   pictures.push_back({stripFile, image::frameStrip(strip)});
   if (std::string e = writePicturesTogether(pictures); !e.empty()) return usageError(e);
-  if (o.progress) std::fprintf(stderr, "render: wrote %s and %s\n", o.output.c_str(), stripFile.c_str());
+  if (o.progress) std::fprintf(stderr, "render: wrote %s and %s\n", quoteUserText(o.output, 300).c_str(), quoteUserText(stripFile, 300).c_str());
   return kExitOk;
 }
 

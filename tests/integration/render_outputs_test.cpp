@@ -131,6 +131,19 @@ TEST(RenderOutputs, TheStandsFramesHaveFileSafeNamesWhateverTheGraphIsCalled) {
   EXPECT_EQ(listFiles(dir.path() / "frames").size(), 2u);
 }
 
+// --watch prints a line per render naming the output, on stdout, always.
+TEST(RenderOutputs, WatchLinesQuoteTheOutputsName) {
+  TempDir dir("wg-render-outputs");
+  const fs::path out = dir.path() / "\x1b]0;title\x07out.png";
+  CommandResult r = render("--material " + quoted(fs::path(WG_SOURCE_DIR) / "graphs" / "rock.json") +
+                           " --watch --watch-renders 1 -o " + quoted(out));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("rendered"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x07'), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(out));
+}
+
 // The snowfield writes its moments, its sheet and its strip together too, and names a
 // file it cannot write without its control characters.
 TEST(RenderOutputs, TheSnowfieldWritesNothingWhenOnePictureFailsAndQuotesItsName) {
