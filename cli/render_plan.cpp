@@ -47,10 +47,12 @@ std::string readTimeline(const std::string& path, std::optional<WeatherTimeline>
     return "cannot read timeline '" + quoteUserText(path) + "': " + read.reason;
   DiagnosticList diagnostics;
   auto document = parseJsonDocument(path, std::move(text), diagnostics);
-  if (!document) {
-    std::string text = formatDiagnosticText(diagnostics.items().front());
-    while (!text.empty() && text.back() == '\n') text.pop_back();
-    return "timeline " + text;
+  if (!document) {  // one usage error that says where and what to change, not a diagnostic inside one
+    const Diagnostic& d = diagnostics.items().front();
+    return "timeline " + quoteUserText(d.location.file, 300) + ":" + std::to_string(d.location.line) + ":" +
+           std::to_string(d.location.column) + ": " + std::string(d.info().id) + ": " + quoteUserText(d.message, 400) +
+           " [" + (d.location.pointer.empty() ? "/" : quoteUserText(d.location.pointer, 300)) + "]; " +
+           quoteUserText(d.hint, 200);
   }
   std::string error;
   timeline = parseWeatherTimeline(document->root(), error);

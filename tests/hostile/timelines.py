@@ -22,6 +22,9 @@ class Timelines(HostileCase):
         r = self.render('{"keyframes": [\n  {"time": 0, %s, "label": "a",\n   "temperature": 3}]}' % KEY, 2,
                         "WG1006", "temperature", "t.json:3:")
         self.assertIn("/keyframes/0/temperature", r.text)
+        # One usage error that carries the file's problem, not a second diagnostic inside it.
+        self.assertEqual(r.text.count("error WG"), 1, r.text)
+        self.assertEqual(r.text.count("hint:"), 1, r.text)
         self.render('{"keyframes": [], "keyframes": []}', 2, "WG1006", "t.json:1:")
 
     def test_300_stages_are_refused_before_rendering(self):
