@@ -1,6 +1,7 @@
 #include "host/timeline_renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 
@@ -10,6 +11,16 @@ namespace {
 std::string fixed(double x, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+  return buf;
+}
+
+// Hours as a caption shows them: one decimal, or three digits and an exponent past a
+// million hours, so a timeline of 1e300 s keeps its caption inside the picture.
+std::string hours(double seconds) {
+  const double h = seconds / 3600.0;
+  if (std::fabs(h) < 1e6) return fixed(h, 1);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", h);
   return buf;
 }
 
@@ -65,7 +76,7 @@ std::vector<TimelineFrame> planTimeline(const WeatherTimeline& timeline, const R
     out.state.conditions.temperature = keys[last].temperature;
     out.state.conditions.precipitation = keys[last].precipitation;
     const auto& w = out.state;
-    out.lines = {out.label + "   t = " + fixed(w.time / 3600.0, 1) + " h",
+    out.lines = {out.label + "   t = " + hours(w.time) + " h",
                  "T = " + fixed(w.conditions.temperature, 1) + " C   P = " + fixed(w.conditions.precipitation, 2),
                  "snow " + fixed(w.levels.snow, 2) + "  wet " + fixed(w.levels.wetness, 2) + "  moss " +
                      fixed(w.levels.moss, 2) + "  frost " + fixed(w.levels.frost, 2)};

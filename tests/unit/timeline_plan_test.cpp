@@ -45,5 +45,24 @@ TEST(TimelinePlan, TheLastStageEndsAtItsLastKeyframeWhenTheStepDoesNotDivideIt) 
   EXPECT_EQ(stages[1].state.time, 43200.0);
 }
 
+// A stage's caption gives its time in hours: with one decimal, and past a million hours
+// in three digits, so that a timeline 1e300 s long does not write 300 of them.
+TEST(TimelinePlan, CaptionsGiveTheTimeInHoursInAFewDigits) {
+  std::vector<TimelineFrame> stages = planTimeline(dryThenSnow(), RenderRequest{}, 300.0);
+  ASSERT_EQ(stages.size(), 2u);
+  EXPECT_EQ(stages[1].lines.front(), "snow   t = 12.0 h");
+  std::string error;
+  auto longest = parseWeatherTimeline(nlohmann::json::parse(R"({"keyframes": [
+    {"time": 0, "temperature": 12, "precipitation": 0, "label": "a"},
+    {"time": 1e300, "temperature": 12, "precipitation": 0, "label": "b"}]})"),
+                                      error);
+  ASSERT_TRUE(longest) << error;
+  stages = planTimeline(*longest, RenderRequest{}, 300.0);
+  ASSERT_FALSE(stages.empty());
+  const std::string caption = stages.back().lines.front();
+  EXPECT_TRUE(caption.starts_with("b   t = ") && caption.ends_with("e+296 h")) << caption;
+  EXPECT_LT(caption.size(), 24u) << caption;
+}
+
 }  // namespace
 }  // namespace wg
