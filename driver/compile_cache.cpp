@@ -340,6 +340,10 @@ std::string compileCacheKey(const std::string& path, std::string_view text, cons
   digest.add(compilerBuildIdentity());
   addOptions(digest, options);
   digest.add(path);
+  // A library included by absolute path records its textures relative to the graph's
+  // folder, so the same relative path from another working directory is another compile.
+  std::error_code ec;
+  digest.add(std::filesystem::absolute(path, ec).string());
   digest.add(text);
   return digest.hex();
 }

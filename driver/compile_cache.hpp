@@ -2,7 +2,7 @@
 // (weathergen compile --cache DIR; docs/build-integration.md, "The compile cache").
 //
 // An entry is keyed by a digest of the compiler's build, the options, the graph's path
-// and its text. It records every other file the compile read (graph libraries, images)
+// (as given and made absolute) and its text. It records every other file the compile read (graph libraries, images)
 // with the digest of its content; a lookup whose files no longer match misses. Entries
 // are written to a temporary file and renamed into place, so a reader sees a whole
 // entry or none, and each carries a digest of itself, so a torn one is a miss too.
@@ -53,7 +53,8 @@ class CompileCache {
   mutable std::atomic<std::size_t> stored_{0};
 };
 
-// The cache key of one compile: hex digest of the compiler build, options, path and text.
+// The cache key of one compile: hex digest of the compiler build, options, path (as
+// given and absolute) and text.
 std::string compileCacheKey(const std::string& path, std::string_view text, const CompileOptions& options);
 
 }  // namespace wg

@@ -155,6 +155,29 @@ TEST_F(CompileCacheCli, OptionsAreInTheKey) {
   EXPECT_TRUE(outputs("rock") != outputs("none"));
 }
 
+// A library included by absolute path records its texture relative to the graph's
+// folder: one graph text at one relative path, compiled from two working directories,
+// writes two different reflections, and the second must not be the first's entry.
+TEST_F(CompileCacheCli, TheSameRelativePathFromAnotherFolderMisses) {
+  std::string graph = kGraph;
+  const std::string library = (dir_.path() / "lib" / "stone.json").string();
+  graph.replace(graph.find("lib/stone.json"), 14, library);
+  for (const char* folder : {"near", "far/away"}) {
+    fs::create_directories(dir_.path() / folder);
+    writeFile(dir_.path() / folder / "wall.json", graph);
+  }
+  auto compileIn = [&](const char* folder, const std::string& out, const std::string& flags) {
+    return runCommand("cd " + shellQuote((dir_.path() / folder).string()) + " && " + shellQuote(WG_CLI_PATH) +
+                      " compile wall.json -o " + shellQuote((dir_.path() / out).string()) + " -q " + flags + " 2>&1");
+  };
+  ASSERT_EQ(compileIn("near", "near-out", cacheFlag()).exitCode, 0);
+  ASSERT_EQ(compileIn("far/away", "far-out", cacheFlag()).exitCode, 0);
+  ASSERT_EQ(compileIn("far/away", "far-plain", "--no-cache").exitCode, 0);
+  EXPECT_NE(readFile(dir_.path() / "far-plain" / "wall.reflect.json").find("../../lib/mud.png"), std::string::npos);
+  EXPECT_TRUE(outputs("far-out") == outputs("far-plain"));
+  EXPECT_TRUE(outputs("near-out") != outputs("far-plain"));
+}
+
 TEST_F(CompileCacheCli, ATornEntryIsAMiss) {
   ASSERT_EQ(compile("plain", "--no-cache").exitCode, 0);
   ASSERT_EQ(compile("cold", cacheFlag()).exitCode, 0);
