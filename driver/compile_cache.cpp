@@ -139,19 +139,26 @@ const std::string& compilerBuildIdentity() {
   return identity;
 }
 
+// Whether it is set, then its text: no text stands for "unset", since the engine API
+// passes any string, "\0" included, as a preset or tier to be refused.
+void addOptional(ContentDigest& digest, const std::optional<std::string>& value) {
+  digest.addWord(value.has_value());
+  if (value) digest.add(*value);
+}
+
 // Every option that changes what a compile returns, each field length-prefixed.
 void addOptions(ContentDigest& digest, const CompileOptions& o) {
   const bool flags[] = {o.emitSpirv, o.emitDisassembly, o.optimize,    o.emitReflection, o.emitHlsl,
                         o.emitCppHeader, o.emitMsl,     o.emitGlslEs,  o.emitSurface,    o.emitFilament,
                         o.hashKeyedFileStem};
   for (bool flag : flags) digest.addWord(flag);
-  digest.add(o.weatherPreset.value_or(std::string(1, '\0')));
+  addOptional(digest, o.weatherPreset);
   digest.addWord(o.weatherEffects.size());
   for (const auto& [name, on] : o.weatherEffects) {
     digest.add(name);
     digest.addWord(on);
   }
-  digest.add(o.quality.requested.value_or(std::string(1, '\0')));
+  addOptional(digest, o.quality.requested);
   digest.add(o.quality.fallback);
   digest.addWord(o.switches.size());
   for (const auto& [name, value] : o.switches) {

@@ -305,6 +305,20 @@ TEST(CompileCacheKey, EveryByteAndTheLengthCount) {
   EXPECT_EQ(byLength.size(), 101u) << "texts of zero bytes that differ only in length share a key";
 }
 
+// The engine API passes any string as a preset or tier, to be refused when unknown: a
+// NUL character is not the absence of one, nor is an empty string.
+TEST(CompileCacheKey, AnUnsetPresetOrTierIsNoText) {
+  const CompileOptions unset;
+  const std::string key = compileCacheKey("g.json", "{}", unset);
+  for (const std::string& text : {std::string(1, '\0'), std::string()}) {
+    CompileOptions preset, tier;
+    preset.weatherPreset = text;
+    tier.quality.requested = text;
+    EXPECT_NE(compileCacheKey("g.json", "{}", preset), key) << text.size();
+    EXPECT_NE(compileCacheKey("g.json", "{}", tier), key) << text.size();
+  }
+}
+
 TEST(CompileCache, TrimEvictsTheLeastRecentlyUsedBeyondItsBound) {
   TempDir dir("compile-cache-trim");
   const auto graphs = testing::bundledGraphs();

@@ -176,6 +176,31 @@ TEST(PublicApi, ACacheDirectoryGivesTheSameResultsFromItsEntries) {
   fs::remove_all(dir);
 }
 
+// A preset or tier of one NUL character is unknown, and is refused even when the cache
+// holds the graph compiled without one: the key tells "unset" from any text.
+TEST(PublicApi, ACachedCompileDoesNotAnswerForAnUnknownPresetOrTier) {
+  const fs::path dir = fs::temp_directory_path() / ("weathergen-api-cache-nul-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  Graph g = rock();
+  weathergen::Options options;
+  options.spirv = false;
+  options.cacheDirectory = dir.string();
+  ASSERT_TRUE(weathergen::compile(g.file, g.text, options).ok);
+  const std::string nul(1, '\0');
+  weathergen::Options preset = options, tier = options;
+  preset.weatherPreset = nul;
+  tier.quality = nul;
+  for (const weathergen::Options& hostile : {preset, tier}) {
+    weathergen::Options uncached = hostile;
+    uncached.cacheDirectory.clear();
+    const weathergen::Result plain = weathergen::compile(g.file, g.text, uncached);
+    EXPECT_FALSE(plain.ok);
+    ASSERT_FALSE(plain.diagnostics.empty());
+    EXPECT_EQ(fingerprint(weathergen::compile(g.file, g.text, hostile)), fingerprint(plain)) << describe(plain);
+  }
+  fs::remove_all(dir);
+}
+
 TEST(PublicApi, SwitchesChooseTheVariant) {
   Graph g = rock();
   weathergen::Options options;
