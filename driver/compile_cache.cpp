@@ -334,6 +334,22 @@ std::optional<CompiledMaterial> readEntryFile(const std::filesystem::path& path,
   return material;
 }
 
+// Only names the cache writes are trimmed: a directory named with --cache may hold the
+// user's own files (a tmp.log, a notes.entry), which are not the cache's to remove.
+bool isEntryName(std::string_view name) {
+  constexpr std::size_t kKeyChars = 32;
+  return name.size() == kKeyChars + kEntrySuffix.size() && name.substr(kKeyChars) == kEntrySuffix &&
+         name.substr(0, kKeyChars).find_first_not_of("0123456789abcdef") == std::string_view::npos;
+}
+
+// tmp.PID.THREAD.N, as temporaryName() writes it.
+bool isTemporaryName(std::string_view name) {
+  if (name.substr(0, kTemporaryPrefix.size()) != kTemporaryPrefix) return false;
+  const std::string_view rest = name.substr(kTemporaryPrefix.size());
+  return !rest.empty() && rest.find_first_not_of("0123456789.") == std::string_view::npos &&
+         std::count(rest.begin(), rest.end(), '.') == 2;
+}
+
 struct EntryFile {
   std::filesystem::path path;
   std::uintmax_t size;
@@ -439,9 +455,8 @@ void CompileCache::trim() const {
     const auto used = item.last_write_time(itemError);
     const auto size = item.file_size(itemError);
     if (itemError) continue;  // removed by another process meanwhile
-    if (name.rfind(kTemporaryPrefix, 0) == 0 && now - used > kAbandoned) std::filesystem::remove(item.path(), itemError);
-    if (name.size() <= kEntrySuffix.size() || name.compare(name.size() - kEntrySuffix.size(), kEntrySuffix.size(), kEntrySuffix) != 0)
-      continue;
+    if (isTemporaryName(name) && now - used > kAbandoned) std::filesystem::remove(item.path(), itemError);
+    if (!isEntryName(name)) continue;
     entries.push_back({item.path(), size, used});
     total += size;
   }

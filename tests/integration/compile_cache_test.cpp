@@ -319,6 +319,27 @@ TEST(CompileCacheKey, AnUnsetPresetOrTierIsNoText) {
   }
 }
 
+// --cache may name a folder that holds other files: trimming removes the cache's
+// entries and the temporary files its writers abandoned, never a user's file whose name
+// merely starts with "tmp." or ends in ".entry".
+TEST(CompileCache, TrimRemovesOnlyTheCachesOwnFiles) {
+  TempDir dir("compile-cache-foreign");
+  const auto longAgo = fs::file_time_type::clock::now() - std::chrono::hours(3);
+  const std::vector<std::string> foreign = {"tmp.log", "notes.entry", "tmp.1.2", "0123456789abcdef0123456789ABCDEF.entry"};
+  for (const std::string& name : foreign) writeFile(dir.path() / name, "the user's own");
+  writeFile(dir.path() / "tmp.123.456.7", "a killed writer's");
+  for (const auto& name : listFiles(dir.path())) fs::last_write_time(dir.path() / name, longAgo);
+  const CompileCache tiny(dir.path(), 1);  // any entry is beyond the bound
+  ASSERT_TRUE(tiny.compileFile(testing::bundledGraphs().front().string(), CompileOptions{.emitSpirv = false}).material);
+  ASSERT_EQ(listFiles(dir.path()).size(), foreign.size() + 2);  // the new entry is stored
+  tiny.trim();
+  std::vector<std::string> left = listFiles(dir.path());
+  std::sort(left.begin(), left.end());
+  std::vector<std::string> expected = foreign;
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(left, expected);
+}
+
 TEST(CompileCache, TrimEvictsTheLeastRecentlyUsedBeyondItsBound) {
   TempDir dir("compile-cache-trim");
   const auto graphs = testing::bundledGraphs();
