@@ -180,11 +180,15 @@ std::int64_t nowNs() {
       .count();
 }
 
-// A file changed after the compile began may not be what the compile read.
+std::int64_t stampNs(const timespec& t) { return std::int64_t(t.tv_sec) * 1'000'000'000 + t.tv_nsec; }
+
+// A file changed after the compile began may not be what the compile read. Its change
+// time counts too: a file renamed into place (rsync, or `cp -p` then `mv`) keeps an old
+// modification time, and no one can set the change time back.
 bool modifiedSince(const std::string& path, std::int64_t ns) {
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0) return true;
-  return std::int64_t(status.st_mtim.tv_sec) * 1000000000 + status.st_mtim.tv_nsec >= ns;
+  return std::max(stampNs(status.st_mtim), stampNs(status.st_ctim)) >= ns;
 }
 
 // Length-prefixed fields, read back in the order written.

@@ -178,6 +178,35 @@ TEST_F(CompileCacheCli, TheSameRelativePathFromAnotherFolderMisses) {
   EXPECT_TRUE(outputs("near-out") != outputs("far-plain"));
 }
 
+// A library replaced while the graph compiles, by a file with an old modification time
+// (rsync, or `cp -p` then `mv`): the entry would pair the new library's digest with
+// what the old one compiled to, so it is not stored, and the next compile is the new one.
+TEST_F(CompileCacheCli, ALibraryReplacedDuringTheCompileIsNotStored) {
+  std::string library = kLibrary;
+  library.replace(library.find("0.5, 0.5, 0.5"), 13, "0.25, 0.5, 1.0");
+  const fs::path replacement = dir_.path() / "stone.json.new";
+  writeFile(replacement, library);
+  const auto modified = fs::last_write_time(dir_.path() / "lib" / "stone.json");
+  fs::last_write_time(replacement, modified - std::chrono::hours(1));
+  const CompileCache cache(this->cache());
+  ASSERT_EQ(cache.prepare(), "");
+  CompileOptions racing{.emitSpirv = false};
+  racing.passes.afterPass = [&](const Pass&, const IrGraph&) {
+    if (!fs::exists(replacement)) return;
+    // Files are stamped from a coarse clock (a tick): leave the tick the compile began in.
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    fs::rename(replacement, dir_.path() / "lib" / "stone.json");
+  };
+  ASSERT_TRUE(cache.compileFile(graph(), racing).material);
+  ASSERT_FALSE(fs::exists(replacement));
+  const CompileOptions options{.emitSpirv = false};
+  const CompileResult fresh = compileMaterialFile(graph(), options);
+  const CompileResult warm = cache.compileFile(graph(), options);
+  ASSERT_TRUE(fresh.material && warm.material);
+  EXPECT_EQ(warm.material->contentHash, fresh.material->contentHash);
+  EXPECT_TRUE(warm.material->stages.at(1).source == fresh.material->stages.at(1).source) << "the old library's shader";
+}
+
 TEST_F(CompileCacheCli, ATornEntryIsAMiss) {
   ASSERT_EQ(compile("plain", "--no-cache").exitCode, 0);
   ASSERT_EQ(compile("cold", cacheFlag()).exitCode, 0);
