@@ -384,6 +384,42 @@ TEST(PublicApi, ConcurrentCompilesAreByteIdentical) {
   if (!failures.empty()) ADD_FAILURE() << failures.size() << " differing compiles, first: " << failures.front();
 }
 
+// Threads sharing one cache directory, each compiling every graph twice from its own
+// starting point: misses, stores of one key racing each other and hits all give what an
+// uncached compile gives, and the directory ends with one whole entry a graph.
+TEST(PublicApi, ConcurrentCompilesShareACacheDirectory) {
+  constexpr int kThreads = 4;
+  constexpr int kRounds = 2;
+  ASSERT_TRUE(weathergen::initialize());
+  const fs::path dir = fs::temp_directory_path() / ("weathergen-api-cache-threads-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::vector<Graph> graphs = bundledGraphs();
+  weathergen::Options options;
+  options.spirv = false;  // the cache, not glslang, is under test
+  std::vector<std::string> expected;
+  for (const auto& g : graphs) expected.push_back(fingerprint(weathergen::compile(g.file, g.text, options)));
+  options.cacheDirectory = dir.string();
+  std::mutex failuresMutex;
+  std::vector<std::string> failures;
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (std::size_t i = 0; i < kRounds * graphs.size(); ++i) {
+        const std::size_t which = (t + i) % graphs.size();
+        if (fingerprint(weathergen::compile(graphs[which].file, graphs[which].text, options)) == expected[which]) continue;
+        std::lock_guard<std::mutex> lock(failuresMutex);
+        failures.push_back("thread " + std::to_string(t) + ": " + graphs[which].file);
+      }
+    });
+  for (auto& t : threads) t.join();
+  if (!failures.empty()) ADD_FAILURE() << failures.size() << " differing compiles, first: " << failures.front();
+  std::size_t entries = 0, others = 0;
+  for (const auto& e : fs::directory_iterator(dir)) (e.path().extension() == ".entry" ? entries : others) += 1;
+  EXPECT_EQ(entries, graphs.size());
+  EXPECT_EQ(others, 0u) << "a temporary file was left behind";
+  fs::remove_all(dir);
+}
+
 // Options::threads spreads one material's stages over threads: the result is the same
 // as with one, stage for stage and in the same order.
 TEST(PublicApi, ThreadsPerCompileGiveTheSameResult) {
