@@ -313,16 +313,21 @@ std::string temporaryName() {
          std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())) + "." + std::to_string(counter++);
 }
 
-bool writeWhole(const std::filesystem::path& path, std::string_view bytes) {
+enum class NewFile { NotCreated, Unwritten, Written };
+
+// Creates `path`, which must not exist, and writes `bytes` to it. A file this call did
+// not create is another writer's (one with our pid in another pid namespace), and is
+// not ours to remove.
+NewFile writeNewFile(const std::filesystem::path& path, std::string_view bytes) {
   int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) return false;
+  if (fd < 0) return NewFile::NotCreated;
   bool ok = true;
   for (std::size_t done = 0; ok && done < bytes.size();) {
     ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
     ok = n > 0;
     if (ok) done += static_cast<std::size_t>(n);
   }
-  return ::close(fd) == 0 && ok;
+  return ::close(fd) == 0 && ok ? NewFile::Written : NewFile::Unwritten;
 }
 
 // The material an entry holds, when it is whole and every file it read is unchanged.
@@ -418,9 +423,11 @@ void CompileCache::store(const std::string& key, const CompiledMaterial& materia
   digest.add(std::string_view(out.bytes()).substr(kEntryMagic.size()));
   out.bytes() += digest.hex();
   const std::filesystem::path temporary = directory_ / temporaryName();
+  const NewFile written = writeNewFile(temporary, out.bytes());
+  if (written == NewFile::NotCreated) return;  // a removed directory, or another writer's name
   std::error_code ec;
-  if (!writeWhole(temporary, out.bytes()) || (std::filesystem::rename(temporary, entryPath(key), ec), ec)) {
-    std::filesystem::remove(temporary, ec);  // a full disk or a removed directory: the cache is only a cache
+  if (written == NewFile::Unwritten || (std::filesystem::rename(temporary, entryPath(key), ec), ec)) {
+    std::filesystem::remove(temporary, ec);  // a full disk: the cache is only a cache
     return;
   }
   ++stored_;

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "driver/compile_cache.hpp"
 #include "process_support.hpp"
@@ -367,6 +368,22 @@ TEST(CompileCache, TrimRemovesOnlyTheCachesOwnFiles) {
   std::vector<std::string> expected = foreign;
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(left, expected);
+}
+
+// Writers in other pid namespaces (containers sharing a cache volume) can choose the
+// temporary name this one does: a writer that finds its name taken stores nothing and
+// leaves the other's file alone, or the other's rename would find it gone.
+TEST(CompileCache, AWriterLeavesATemporaryFileItDidNotCreate) {
+  TempDir dir("compile-cache-taken");
+  const std::string thread = std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()));
+  constexpr int kNames = 64;  // more than this process's writers store before this test
+  for (int n = 0; n < kNames; ++n)
+    writeFile(dir.path() / ("tmp." + std::to_string(::getpid()) + "." + thread + "." + std::to_string(n)), "another's");
+  const CompileCache cache(dir.path());
+  ASSERT_TRUE(cache.compileFile(testing::bundledGraphs().front().string(), CompileOptions{.emitSpirv = false}).material);
+  const std::vector<std::string> left = listFiles(dir.path());
+  ASSERT_EQ(left.size(), std::size_t(kNames)) << "no name was taken: the test did not reach the collision";
+  for (const auto& name : left) EXPECT_EQ(readFile(dir.path() / name), "another's") << name;
 }
 
 TEST(CompileCache, TrimEvictsTheLeastRecentlyUsedBeyondItsBound) {
