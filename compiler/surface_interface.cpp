@@ -4,6 +4,8 @@
 #include <array>
 #include <cctype>
 
+#include "compiler/identifier.hpp"
+#include "compiler/name_mark.hpp"
 #include "compiler/pbr_output.hpp"
 #include "nodes/frame_fields.hpp"
 #include "nodes/weather_maps.hpp"
@@ -29,26 +31,46 @@ UniformBlock makeWeatherBlock() {
   return block;
 }
 
-// A file stem ([A-Za-z0-9_-]) as the start of GLSL and HLSL identifiers: '-' becomes
-// '_', runs of '_' (reserved in GLSL) become one, and a stem that starts with a digit
-// or could meet a reserved or weathergen prefix (gl_, wg_...) gets "m".
+bool startsLikeIgnoringCase(std::string_view text, std::string_view start) {
+  return text.size() >= start.size() && std::equal(start.begin(), start.end(), text.begin(), [](char a, char b) {
+           return a == std::tolower(static_cast<unsigned char>(b));
+         });
+}
+
+// Prefixes that could meet a reserved or weathergen name (gl_, wg_...).
+bool startsLikeReserved(std::string_view text) {
+  return startsLikeIgnoringCase(text, "gl") || startsLikeIgnoringCase(text, "wg") ||
+         startsLikeIgnoringCase(text, "weather") || startsLikeIgnoringCase(text, "frame");
+}
+
+// A stem that is already a safe prefix as it is: a letter, then letters and digits in
+// words joined by single '_', not starting like a reserved name, not looking marked.
+bool isCleanStem(std::string_view stem) {
+  if (stem.empty() || !std::isalpha(static_cast<unsigned char>(stem[0])) || stem.back() == '_') return false;
+  for (std::size_t i = 0; i < stem.size(); ++i) {
+    const char c = stem[i];
+    if (c == '_' ? stem[i - 1] == '_' : !std::isalnum(static_cast<unsigned char>(c))) return false;
+  }
+  return !startsLikeReserved(stem) && !endsWithNameMark(stem, '_');
+}
+
+// A file stem as the start of GLSL and HLSL identifiers. Two surfaces in one shader need
+// distinct prefixes, so the map is one-to-one: a clean stem is kept ("rock_"); any other
+// ('-', '.', "__", a leading digit or '_', gl_/wg_...) is made an identifier and marked
+// with its hash, as file stems are ("a-b" and "a_b" would both read "a_b").
 std::string identifierPrefix(std::string_view stem) {
-  std::string prefix;
+  if (isCleanStem(stem)) return std::string(stem) + '_';
+  std::string base;
   for (char c : stem) {
     char ch = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-    if (ch == '_' && !prefix.empty() && prefix.back() == '_') continue;
-    prefix += ch;
+    if (ch == '_' && (base.empty() || base.back() == '_')) continue;
+    base += ch;
   }
-  auto startsLike = [&](std::string_view p) {
-    return prefix.size() >= p.size() && std::equal(p.begin(), p.end(), prefix.begin(), [](char a, char b) {
-             return a == std::tolower(static_cast<unsigned char>(b));
-           });
-  };
-  if (prefix.empty() || !std::isalpha(static_cast<unsigned char>(prefix[0])) || startsLike("gl") ||
-      startsLike("wg") || startsLike("weather") || startsLike("frame"))
-    prefix.insert(0, "m");
-  if (prefix.back() != '_') prefix += '_';
-  return prefix;
+  if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0])) || startsLikeReserved(base)) base.insert(0, "m");
+  const std::string mark = '_' + nameMark(stem) + '_';
+  base.resize(std::min(base.size(), IdentifierScope::kMaxLength - mark.size()));
+  while (base.back() == '_') base.pop_back();
+  return base + mark;
 }
 
 std::string_view glslType(InterfaceType type) { return interfaceTypeName(type); }

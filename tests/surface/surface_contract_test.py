@@ -118,6 +118,23 @@ def main(argv):
                 check(f"{language}: {road_set}=5 moves {road_texture['identifier']} to set 5",
                       moved.get("DescriptorSet") == 5 and moved.get("Binding") == road_texture["binding"], str(moved))
 
+        # Materials whose names read alike as identifiers ("a-b", "a_b") still share a shader.
+        alike = []
+        for name in ("wet-rock", "wet_rock"):
+            graph = json.loads((source / "graphs" / "rock.json").read_text())
+            graph["name"] = name
+            alike.append(tmp / "alike" / (name + ".json"))
+            alike[-1].parent.mkdir(parents=True, exist_ok=True)
+            alike[-1].write_text(json.dumps(graph))
+        r = run([args.cli, "compile", *map(str, alike), "-o", str(tmp / "alike" / "out"), "--target", "surface", "-q"])
+        check("wet-rock and wet_rock compile into one folder", r.returncode == 0, r.stderr)
+        alike_reflections = sorted((tmp / "alike" / "out").glob("*.reflect.json"))
+        for language in ("glsl", "glsles", "hlsl"):
+            glue = tmp / "alike" / language
+            vertex, fragment = surface_glue.write_glue(language, glue, alike_reflections)
+            ok, log, _ = compile_glue(language, vertex, fragment, glue)
+            check(f"wet-rock and wet_rock share one {language} shader", ok, log[-3000:])
+
         # Every weather map absent: the surfaces compile and declare none of them.
         absent = sorted({r["absentMacro"] for p in pair for r in json.loads(p.read_text())["surface"]["resources"]
                          if "absentMacro" in r})

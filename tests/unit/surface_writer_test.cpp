@@ -3,9 +3,13 @@
 // the reference images, so this is what ties a surface to them.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <set>
+
 #include "backends/shader_syntax.hpp"
 #include "backends/surface_writer.hpp"
 #include "backends/token_renames.hpp"
+#include "compiler/name_mark.hpp"
 #include "compiler/surface_interface.hpp"
 #include "driver/material_compiler.hpp"
 #include "nodes/frame_fields.hpp"
@@ -99,11 +103,30 @@ TEST(Surface, PresetNoneHasNoWeather) {
 TEST(Surface, PrefixIsAnIdentifierThatMeetsNoReservedName) {
   MaterialInterface mi;
   EXPECT_EQ(buildSurfaceInterface(mi, "rock").prefix, "rock_");
-  EXPECT_EQ(buildSurfaceInterface(mi, "wet-road--2").prefix, "wet_road_2_");
-  EXPECT_EQ(buildSurfaceInterface(mi, "9lives").prefix, "m9lives_");
-  EXPECT_EQ(buildSurfaceInterface(mi, "gl_stone").prefix, "mgl_stone_");
-  EXPECT_EQ(buildSurfaceInterface(mi, "WG").prefix, "mWG_");
-  EXPECT_EQ(buildSurfaceInterface(mi, "_x_").prefix, "m_x_");
+  EXPECT_EQ(buildSurfaceInterface(mi, "snow_layer2").prefix, "snow_layer2_");
+  EXPECT_EQ(buildSurfaceInterface(mi, "wet-road--2").prefix, "wet_road_2_" + nameMark("wet-road--2") + "_");
+  EXPECT_EQ(buildSurfaceInterface(mi, "9lives").prefix, "m9lives_" + nameMark("9lives") + "_");
+  EXPECT_EQ(buildSurfaceInterface(mi, "gl_stone").prefix, "mgl_stone_" + nameMark("gl_stone") + "_");
+  EXPECT_EQ(buildSurfaceInterface(mi, "WG").prefix, "mWG_" + nameMark("WG") + "_");
+  EXPECT_EQ(buildSurfaceInterface(mi, "_x_").prefix, "x_" + nameMark("_x_") + "_");
+}
+
+// Several surfaces share one shader, so distinct stems (file names in one folder) must
+// never share a prefix: each pair here read alike before stems were marked.
+TEST(Surface, DistinctStemsGetDistinctPrefixes) {
+  MaterialInterface mi;
+  const std::vector<std::string> stems = {
+      "a-b", "a_b", "a__b", "a-_b", "a", "a_", "_a", "gl", "mgl", "1x", "m1x", "weather", "mweather",
+      "a_" + nameMark("a-b"), "a_b_" + nameMark("a-b"), "___.h47b3ec86", "m_h47b3ec86", "rock.5031108184e10afe",
+      "rock_5031108184e10afe", std::string(64, 'x'), std::string(63, 'x') + "-"};
+  std::set<std::string> prefixes;
+  for (const auto& stem : stems) {
+    const std::string prefix = buildSurfaceInterface(mi, stem).prefix;
+    EXPECT_TRUE(prefixes.insert(prefix).second) << stem << " shares the prefix " << prefix;
+    EXPECT_TRUE(std::isalpha(static_cast<unsigned char>(prefix[0]))) << prefix;
+    EXPECT_EQ(prefix.find("__"), std::string::npos) << prefix;
+    EXPECT_EQ(prefix.back(), '_') << prefix;
+  }
 }
 
 // The weather block holds exactly the frame fields the weather owns or places.
