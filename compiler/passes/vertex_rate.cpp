@@ -10,8 +10,10 @@ namespace wg {
 namespace {
 
 // Vulkan guarantees 64 components, 16 locations, between the stages; the fixed varyings
-// take up to 6 of them. Beyond this many, values stay in the fragment stage.
+// take up to 6 of them. The surface's hosts carry the values too, and Filament has room
+// for four vec4s (its custom variables). Beyond either, values stay in the fragment stage.
 constexpr std::size_t kMaxInterpolants = 8;
+constexpr int kMaxInterpolantComponents = 16;
 
 // Whether the vertex stage can compute each node: its op allows it and so do its inputs.
 std::vector<bool> vertexComputable(const IrGraph& graph) {
@@ -47,15 +49,18 @@ void hoistVertexRate(IrGraph& graph) {
   graph.interpolants.clear();
   const std::vector<bool> computable = vertexComputable(graph);
   std::vector<bool> needed = fragmentRoots(graph);
+  int components = 0;
   // Backwards from the roots: an interpolant cuts the walk, so its cone stays out of
   // the fragment stage unless something else there needs it.
   for (std::size_t i = graph.nodes.size(); i-- > 0;) {
     if (!needed[i]) continue;
     const IrNode& node = graph.nodes[i];
     bool interpolable = node.valueType != ValueType::Bool && node.valueType != ValueType::Texture;
-    bool room = graph.interpolants.size() < kMaxInterpolants;
+    bool room = graph.interpolants.size() < kMaxInterpolants &&
+                components + componentCount(node.valueType) <= kMaxInterpolantComponents;
     if (node.op->rate == OpRate::Vertex && computable[i] && interpolable && room) {
       graph.interpolants.insert(graph.interpolants.begin(), static_cast<std::uint32_t>(i));
+      components += componentCount(node.valueType);
       continue;
     }
     for (const Operand& o : node.inputs)

@@ -49,8 +49,9 @@ TEST(VertexRatePass, ASlopeOfTheTerrainMapIsComputedPerVertex) {
       << formatIrText(g);
 }
 
-// Every slope a different intensity, so none merge: more than the stages can pass.
-TEST(VertexRatePass, AtMostEightValuesAreInterpolatedAndTheRestStayPerPixel) {
+// Every slope a different intensity, so none merge: more than the hosts can pass. Five
+// vec3s fill 15 of the 16 components Filament's four custom variables hold.
+TEST(VertexRatePass, AtMostSixteenComponentsAreInterpolatedAndTheRestStayPerPixel) {
   std::string nodes = kSlopeNodes;
   std::string sum = "0";
   for (int i = 0; i < 12; ++i) {
@@ -62,15 +63,30 @@ TEST(VertexRatePass, AtMostEightValuesAreInterpolatedAndTheRestStayPerPixel) {
     sum = "a" + std::to_string(i) + ".out";
   }
   std::string json = graphJson(nodes, R"("baseColor": ")" + sum + R"(")");
-  EXPECT_EQ(optimized(json).interpolants.size(), 8u);
+  EXPECT_EQ(optimized(json).interpolants.size(), 5u);
   CompileResult r = compileMaterialText("t.json", json, {});
   ASSERT_TRUE(r.material);
   const CompiledMaterial& m = *r.material;
   for (const auto& stage : m.stages) EXPECT_FALSE(stage.spirv.empty());  // validated
   std::string fragment = source(m, ShaderLanguage::Glsl, ShaderStage::Fragment);
-  EXPECT_TRUE(contains(fragment, "layout(location = 12) in vec3 v_interpolant7;"));
-  EXPECT_FALSE(contains(fragment, "v_interpolant8"));
+  EXPECT_TRUE(contains(fragment, "layout(location = 9) in vec3 v_interpolant4;"));
+  EXPECT_FALSE(contains(fragment, "v_interpolant5"));
   EXPECT_TRUE(contains(fragment, "sampler2D(wg_terrain_height_map, wg_terrain_height_sampler)"));
+}
+
+// Twelve wind flows (floats) at distinct points: the count, not the components, binds.
+TEST(VertexRatePass, AtMostEightValuesAreInterpolated) {
+  std::string nodes = R"({"id": "p", "op": "world_position"})";
+  std::string sum = "0";
+  for (int i = 0; i < 12; ++i) {
+    const std::string n = std::to_string(i);
+    nodes += R"(, {"id": "q)" + n + R"(", "op": "add", "inputs": {"a": "p.out", "b": [)" + n + R"(, 0, 0]}})";
+    nodes += R"(, {"id": "f)" + n + R"(", "op": "weather_wind_flow", "inputs": {"position": "q)" + n + R"(.out"}})";
+    nodes += R"(, {"id": "a)" + n + R"(", "op": "add", "inputs": {"a": )" + (i ? "\"a" + std::to_string(i - 1) + ".out\"" : std::string("0")) +
+             R"(, "b": "f)" + n + R"(.out"}})";
+    sum = "a" + n + ".out";
+  }
+  EXPECT_EQ(optimized(graphJson(nodes, R"("roughness": ")" + sum + R"(")")).interpolants.size(), 8u);
 }
 
 TEST(VertexRatePass, ASlopeFromAMaterialTextureStaysInTheFragmentStage) {
