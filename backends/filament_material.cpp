@@ -74,6 +74,23 @@ std::vector<Piece> piecesOf(const Packed& p, std::string_view variablePrefix) {
   return pieces;
 }
 
+// Each Filament parameter of the surface, in its resources' order: its Filament type,
+// its name (the identifier less the material's prefix, as a Filament material holds one
+// surface), the identifier the surface reads, and the resource it comes from.
+template <class Visit>
+void forEachParameter(const SurfaceInterface& s, Visit&& visit) {
+  for (const auto& r : s.resources) {
+    if (r.kind == SurfaceResourceKind::Sampler) continue;  // combined with its texture
+    if (r.kind == SurfaceResourceKind::Texture) {
+      visit(std::string_view("sampler2d"), parameterName(s, r.identifier), r.identifier, r);
+      continue;
+    }
+    const UniformBlock& block = r.shared ? surfaceWeatherBlock() : s.prefixed.material;
+    for (const auto& m : block.members)
+      visit(filamentType(interfaceTypeName(m.type)), parameterName(s, m.identifier), m.identifier, r);
+  }
+}
+
 class FilamentWriter {
  public:
   FilamentWriter(const IrGraph& graph, const SurfaceInterface& surface) : graph_(graph), s_(surface) {}
@@ -102,19 +119,10 @@ class FilamentWriter {
     if (usesOp("vertex_color")) out += ", color";
     out += " ],\n    parameters : [\n";
     bool first = true;
-    auto parameter = [&](std::string_view type, const std::string& name) {
+    forEachParameter(s_, [&](std::string_view type, const std::string& name, const std::string&, const SurfaceResource&) {
       appendText(out, first ? "" : ",\n", "        { type : ", type, ", name : ", name, " }");
       first = false;
-    };
-    for (const auto& r : s_.resources) {
-      if (r.kind == SurfaceResourceKind::Sampler) continue;  // combined with its texture
-      if (r.kind == SurfaceResourceKind::Texture) {
-        parameter("sampler2d", parameterName(s_, r.identifier));
-        continue;
-      }
-      const UniformBlock& block = r.shared ? surfaceWeatherBlock() : s_.prefixed.material;
-      for (const auto& m : block.members) parameter(filamentType(interfaceTypeName(m.type)), parameterName(s_, m.identifier));
-    }
+    });
     out += "\n    ]";
     if (std::size_t variables = variableCount(packed_)) {
       out += ",\n    variables : [ ";
@@ -135,16 +143,10 @@ class FilamentWriter {
   // Every identifier the surface reads, spelled as Filament declares its parameters.
   void appendResourceNames(std::string& out) const {
     appendText(out, "#define ", kSurfaceHostResourcesMacro, '\n');
-    for (const auto& r : s_.resources) {
-      if (r.kind == SurfaceResourceKind::Sampler) continue;
-      if (r.kind == SurfaceResourceKind::Texture) {
-        appendText(out, "#define ", r.identifier, " materialParams_", parameterName(s_, r.identifier), '\n');
-        continue;
-      }
-      const UniformBlock& block = r.shared ? surfaceWeatherBlock() : s_.prefixed.material;
-      for (const auto& m : block.members)
-        appendText(out, "#define ", m.identifier, " materialParams.", parameterName(s_, m.identifier), '\n');
-    }
+    forEachParameter(s_, [&](std::string_view, const std::string& name, const std::string& identifier, const SurfaceResource& r) {
+      appendText(out, "#define ", identifier, r.kind == SurfaceResourceKind::Texture ? " materialParams_" : " materialParams.",
+                 name, '\n');
+    });
   }
 
   void appendStage(std::string& out, std::string_view stage, const SurfaceStruct& result, std::string_view esSurface) const {
@@ -235,6 +237,15 @@ class FilamentWriter {
 };
 
 }  // namespace
+
+FilamentParameterCount countFilamentParameters(const SurfaceInterface& surface) {
+  FilamentParameterCount count;
+  forEachParameter(surface, [&](std::string_view, const std::string&, const std::string&, const SurfaceResource& r) {
+    if (r.kind == SurfaceResourceKind::Texture) ++(r.shared ? count.weatherMaps : count.textures);
+    else ++(r.shared ? count.weatherFields : count.materialParameters);
+  });
+  return count;
+}
 
 std::string writeFilamentMaterial(const IrGraph& graph, const SurfaceInterface& surface, std::string_view esSurface,
                                   std::string_view contentHash) {

@@ -88,6 +88,7 @@ enum class DiagCode : std::uint16_t {
   MtlxResource,
   MtlxInputIgnored,
   MtlxFeatureAdjusted,
+  FilamentLimit,
   UsageError,
   InternalShaderError,
   InternalSpirvInvalid,

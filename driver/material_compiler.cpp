@@ -54,6 +54,41 @@ std::string stageFileSuffix(ShaderLanguage language, ShaderStage stage) {
   return std::string(stage == ShaderStage::Vertex ? "vert." : "frag.") + std::string(languageName(language));
 }
 
+namespace {
+
+std::string countOf(std::size_t n, std::string_view what) {
+  return std::to_string(n) + " " + std::string(what) + (n == 1 ? "" : "s");
+}
+
+// A material Filament cannot hold is the graph's problem for that target, said before
+// matc fails on it (too many parameters) or Filament leaves samplers unbound.
+bool fitsFilament(const IrGraph& ir, const JsonDocument& document, DiagnosticList& diagnostics) {
+  const FilamentParameterCount n = countFilamentParameters(buildSurfaceInterface(buildMaterialInterface(ir), "m"));
+  if (n.samplers() > kFilamentMaterialSamplers) {
+    diagnostics.report(
+        DiagCode::FilamentLimit, document.locate("/textures"),
+        {std::to_string(n.samplers()), "samplers",
+         countOf(n.textures, "texture") + " and " + countOf(n.weatherMaps, "weather map"),
+         std::to_string(kFilamentMaterialSamplers) + " (its lighting takes 8 of a shader's 16)",
+         "for --target filament use at most " + std::to_string(kFilamentMaterialSamplers - n.weatherMaps) +
+             " textures: pack single-channel maps (occlusion, roughness, metallic...) into the channels of one image"});
+    return false;
+  }
+  if (n.total() > kFilamentMaxParameters) {
+    diagnostics.report(DiagCode::FilamentLimit, document.locate(n.materialParameters ? "/parameters" : "/textures"),
+                       {std::to_string(n.total()), "parameters",
+                        countOf(n.weatherFields, "weather field") + ", " + countOf(n.materialParameters, "parameter") + ", " +
+                            countOf(n.samplers(), "sampler"),
+                        std::to_string(kFilamentMaxParameters) + ", samplers included",
+                        "for --target filament combine float parameters into vec2, vec3 or vec4 ones (each is one "
+                        "Filament parameter), or use fewer textures"});
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string text, DiagnosticList& diagnostics,
                                         const CompileOptions& options) {
   auto document = parseJsonDocument(file, std::move(text), diagnostics);
@@ -81,6 +116,7 @@ std::optional<IrGraph> buildOptimizedIr(const std::string& file, std::string tex
                         std::to_string(constants), std::to_string(kMaxDistinctConstants)});
     return std::nullopt;
   }
+  if (options.emitFilament && !fitsFilament(*ir, *document, diagnostics)) return std::nullopt;
   return ir;
 }
 

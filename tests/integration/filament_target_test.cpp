@@ -76,5 +76,61 @@ TEST(FilamentTarget, PerVertexValuesFitFilamentsFourVariables) {
   }
 }
 
+// `textures` procedural textures and `parameters` float parameters, all read (summed).
+nlohmann::json texturesAndParameters(int textures, int parameters) {
+  nlohmann::json graph = {{"name", "many"}, {"nodes", nlohmann::json::array()}};
+  std::string sum;
+  graph["nodes"].push_back({{"id", "uv"}, {"op", "texcoord"}});
+  auto add = [&](const std::string& id, const std::string& value) {
+    if (sum.empty()) return void(sum = value);
+    graph["nodes"].push_back({{"id", id + "+"}, {"op", "add"}, {"inputs", {{"a", sum}, {"b", value}}}});
+    sum = id + "+.out";
+  };
+  for (int i = 0; i < textures; ++i) {
+    const std::string name = "t" + std::to_string(i);
+    graph["textures"][name] = {{"generator", "fbm"}, {"seed", i}, {"size", 16}};
+    graph["nodes"].push_back({{"id", name}, {"op", "sample"}, {"inputs", {{"texture", name}, {"uv", "uv.out"}}}});
+    add(name, name + ".r");
+  }
+  for (int i = 0; i < parameters; ++i) {
+    const std::string name = "p" + std::to_string(i);
+    graph["parameters"][name] = {{"type", "float"}, {"default", 0.5}};
+    graph["nodes"].push_back({{"id", name}, {"op", "parameter"}, {"param", name}});
+    add(name, name + ".out");
+  }
+  graph["output"] = {{"roughness", sum}};
+  return graph;
+}
+
+std::string pointerOfOnlyError(const CompileResult& r, const std::string& code) {
+  if (r.diagnostics.items().size() != 1) return "not one diagnostic";
+  const Diagnostic& d = r.diagnostics.items().front();
+  return std::string(d.info().id) == code ? d.location.pointer : formatDiagnosticText(d);
+}
+
+// Filament 1.9 leaves a material 8 of a shader's 16 samplers, and matc takes 48
+// parameters, the weather block's 16 fields among them. At the limits matc builds the
+// material without a word; one past them the graph gets WG6001, where matc would have
+// crashed (parameters) or warned and left samplers unbound.
+TEST(FilamentTarget, AMaterialPastFilamentsLimitsIsADiagnostic) {
+  EXPECT_EQ(pointerOfOnlyError(compileForFilament(texturesAndParameters(9, 0)), "WG6001"), "/textures");
+  EXPECT_EQ(pointerOfOnlyError(compileForFilament(texturesAndParameters(0, 33)), "WG6001"), "/parameters");
+  EXPECT_EQ(pointerOfOnlyError(compileForFilament(texturesAndParameters(8, 25)), "WG6001"), "/parameters");
+  for (auto [textures, parameters] : {std::pair{8, 24}, std::pair{0, 32}}) {
+    SCOPED_TRACE(::testing::Message() << textures << " textures, " << parameters << " parameters");
+    CompileResult r = compileForFilament(texturesAndParameters(textures, parameters));
+    for (const auto& d : r.diagnostics.items()) ADD_FAILURE() << formatDiagnosticText(d);
+    ASSERT_TRUE(r.material);
+    if (!haveMatc()) continue;
+    testing::CommandResult matc = runMatc(r.material->filamentMaterial);
+    EXPECT_EQ(matc.exitCode, 0) << matc.output;
+    EXPECT_EQ(matc.output.find("Exceeded"), std::string::npos) << matc.output;
+  }
+  // Other targets hold it.
+  CompileOptions surface;
+  surface.emitSurface = true;
+  EXPECT_TRUE(compileMaterialText("many.json", texturesAndParameters(9, 33).dump(), surface).material);
+}
+
 }  // namespace
 }  // namespace wg
