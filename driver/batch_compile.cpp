@@ -8,6 +8,22 @@
 
 namespace wg {
 
+namespace {
+
+// One graph's compile. An exception escaping it (a weathergen bug, or memory running
+// out) is that graph's WG9900, naming it, and the rest of the batch still compiles.
+CompileResult compileGuarded(const std::string& graph, const CompileOptions& options) {
+  try {
+    return options.cache ? options.cache->compileFile(graph, options) : compileMaterialFile(graph, options);
+  } catch (const std::exception& e) {
+    CompileResult failed;
+    failed.diagnostics.report(DiagCode::InternalException, {graph, "", 0, 0}, {e.what()});
+    return failed;
+  }
+}
+
+}  // namespace
+
 std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, const CompileOptions& options, int jobs,
                                         const std::function<void(std::size_t, std::size_t)>& onDone) {
   std::vector<CompileResult> results(batch.size());
@@ -20,8 +36,7 @@ std::vector<CompileResult> compileBatch(const std::vector<CompileJob>& batch, co
     variant.switches = batch[i].switches;
     if (batch[i].weatherPreset) variant.weatherPreset = batch[i].weatherPreset;
     if (batch[i].quality) variant.quality.requested = batch[i].quality;
-    results[i] = variant.cache ? variant.cache->compileFile(batch[i].graph, variant)
-                               : compileMaterialFile(batch[i].graph, variant);
+    results[i] = compileGuarded(batch[i].graph, variant);
     std::lock_guard<std::mutex> lock(reportLock);
     ++completed;
     if (onDone) onDone(i, completed);
