@@ -278,7 +278,8 @@ std::string outputOverwritesInput(const std::vector<DepfileRule>& rules, const s
   if (!depfile.empty()) outputs.push_back({"--depfile", depfile});
   if (std::string e = inputs.checkOutputs(outputs); !e.empty()) return e;
   if (depfile.empty()) return "";
-  if (std::string e = checkNoSpecialFiles({{"--depfile", depfile}}); !e.empty()) return e;  // what follows asks only whether the depfile is an output
+  if (std::string e = checkNoSpecialFiles({{"--depfile", depfile}}); !e.empty()) return e;
+  // What follows asks only whether the depfile is an output.
   std::error_code ec;
   std::set<std::filesystem::path> written;
   for (const auto& rule : rules)

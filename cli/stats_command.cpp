@@ -2,12 +2,13 @@
 // stage and language: SPIR-V instructions after spirv-opt, what the weather adds to
 // them (against the same graph with preset none), texture reads, branches, uniform
 // bytes and interpolants. The budgets in docs/BENCHMARKS.md are read from it.
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -175,14 +176,17 @@ std::string gpuCells(const StatsRow& r) {
 }
 
 // Each file once: a graph given twice, under any spelling of its path, adds no rows.
+// Files are told apart by device and inode, one stat each; a path that cannot be
+// stat'ed is told apart by its text (it is reported as unreadable).
 std::vector<std::string> distinctGraphs(const std::vector<std::string>& graphs) {
   std::vector<std::string> distinct;
+  std::set<std::pair<dev_t, ino_t>> files;
+  std::set<std::string> unreadable;
   for (const std::string& graph : graphs) {
-    const auto sameFile = [&](const std::string& earlier) {
-      std::error_code ec;
-      return earlier == graph || std::filesystem::equivalent(earlier, graph, ec);
-    };
-    if (std::none_of(distinct.begin(), distinct.end(), sameFile)) distinct.push_back(graph);
+    struct stat status {};
+    const bool added = ::stat(graph.c_str(), &status) == 0 ? files.insert({status.st_dev, status.st_ino}).second
+                                                          : unreadable.insert(graph).second;
+    if (added) distinct.push_back(graph);
   }
   return distinct;
 }
